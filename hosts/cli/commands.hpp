@@ -1,0 +1,34 @@
+// The CLI's subcommands. Each adds itself to the app and returns the action to run when it was
+// the one chosen. Actions return the process exit code; bad input is thrown as InputError
+// (main prints it as one line and exits 2).
+#pragma once
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "params.hpp"
+
+namespace pxflow::cli {
+
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+Command add_flow_command(CLI::App& app);
+Command add_backends_command(CLI::App& app);
+
+// Options that describe the problem, shared by every command that runs kernels.
+struct ProblemOptions {
+  std::string profile = "px4flow-64";
+  std::vector<std::string> sets;  // KEY=VALUE
+
+  void add_to(CLI::App& app);
+  // The profile with every --set applied in order; width/height default to `frame` when given
+  // and not set explicitly (an explicit value that differs from the frame is an error). Valid.
+  Params resolve(std::optional<std::pair<int, int>> frame) const;
+};
+
+}  // namespace pxflow::cli

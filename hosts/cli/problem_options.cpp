@@ -1,0 +1,44 @@
+#include <string_view>
+
+#include "commands.hpp"
+#include "errors.hpp"
+
+namespace pxflow::cli {
+
+void ProblemOptions::add_to(CLI::App& app) {
+  std::string profiles;
+  for (const auto& n : profile_names()) profiles += (profiles.empty() ? "" : ", ") + n;
+  std::string keys;
+  for (const auto& k : param_keys()) keys += (keys.empty() ? "" : ", ") + k;
+  app.add_option("--profile", profile, "Parameter profile: " + profiles)
+      ->capture_default_str();
+  app.add_option("--set", sets, "Override one parameter, KEY=VALUE (repeatable). Keys: " + keys)
+      ->type_name("KEY=VALUE");
+}
+
+Params ProblemOptions::resolve(std::optional<std::pair<int, int>> frame) const {
+  Params p = pxflow::profile(profile);
+  bool width_set = false, height_set = false;
+  for (const auto& kv : sets) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--set '" + kv + "': expected KEY=VALUE, e.g. --set search_radius=8");
+    const std::string_view key(kv.data(), eq);
+    set_param(p, key, std::string_view(kv).substr(eq + 1));
+    width_set |= key == "width";
+    height_set |= key == "height";
+  }
+  if (frame) {
+    const auto [w, h] = *frame;
+    if ((width_set && p.width != w) || (height_set && p.height != h))
+      throw InputError("frames are " + std::to_string(w) + "x" + std::to_string(h) +
+                       " but --set asks for " + std::to_string(p.width) + "x" +
+                       std::to_string(p.height));
+    p.width = w;
+    p.height = h;
+  }
+  validate(p);
+  return p;
+}
+
+}  // namespace pxflow::cli

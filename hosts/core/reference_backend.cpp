@@ -1,0 +1,37 @@
+// The reference variants as registry rows: single-threaded, always available, the yardstick
+// every other backend is checked against.
+#include "backend_rows.hpp"
+#include "grid.hpp"
+#include "kernel.hpp"
+
+namespace pxflow {
+namespace {
+
+class ReferenceBackend final : public Backend {
+ public:
+  explicit ReferenceBackend(RefVariant v) : variant_(v) {}
+
+  void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+           OpCounts& counts) override {
+    const std::size_t per_pair = poi_count(p);
+    for (std::size_t n = 0; n < pairs.size(); ++n)
+      reference_flow(variant_, pairs[n], p, out.subspan(n * per_pair, per_pair), counts);
+  }
+
+ private:
+  RefVariant variant_;
+};
+
+}  // namespace
+
+std::vector<BackendRow> reference_rows() {
+  std::vector<BackendRow> rows;
+  for (RefVariant v : {RefVariant::kOriginal, RefVariant::kLocal, RefVariant::kGlobal}) {
+    rows.push_back({std::string(ref_variant_name(v)), "nothing (portable scalar C++)",
+                    [] { return std::string(); },
+                    [v](const BackendOptions&) { return std::make_unique<ReferenceBackend>(v); }});
+  }
+  return rows;
+}
+
+}  // namespace pxflow

@@ -1,0 +1,42 @@
+// Frames in: any 8-bit image OpenCV reads (colour converted to gray the OpenCV way) or a raw
+// 8-bit file of a given size. Every bad input is an InputError naming the file.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "frame.hpp"
+
+namespace pxflow {
+
+struct FrameSize {
+  int width = 0;
+  int height = 0;
+};
+
+// A frame that owns its pixels, rows packed (stride = width).
+struct Frame {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> pixels;
+
+  FrameView view() const { return {width, height, width, pixels.data()}; }
+};
+
+// Parses "WxH" (e.g. "64x64"); throws InputError for anything else or a size beyond the limits.
+FrameSize parse_frame_size(std::string_view text);
+
+// True for paths that name raw 8-bit files (extension .raw, any case).
+bool is_raw_path(const std::string& path);
+
+// Loads one frame. A .raw file needs `raw_size` and must hold exactly W*H bytes; other files
+// are decoded by OpenCV and must not be given a size. Refuses 16-bit and float images, empty
+// files, directories, and images whose header declares more than kMaxFramePixels.
+Frame load_frame(const std::string& path, std::optional<FrameSize> raw_size);
+
+// Silences OpenCV's own log lines, so that a bad file gives our one error line and nothing else.
+void quiet_opencv();
+
+}  // namespace pxflow

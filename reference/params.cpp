@@ -1,0 +1,124 @@
+#include "params.hpp"
+
+#include <charconv>
+
+#include "errors.hpp"
+
+namespace pxflow {
+namespace {
+
+struct NamedProfile {
+  const char* name;
+  Params params;
+};
+
+// SPEC §1. px4flow-64 is the ISCAS 2022 configuration; px4flow-head is today's firmware.
+const std::vector<NamedProfile>& profiles() {
+  static const std::vector<NamedProfile> table = {
+      {"px4flow-64", Params{}},
+      {"px4flow-head", [] {
+         Params p;
+         p.search_radius = 8;
+         p.blocks = 5;
+         p.hist_filter = false;
+         return p;
+       }()},
+  };
+  return table;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& profile_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const auto& p : profiles()) v.push_back(p.name);
+    return v;
+  }();
+  return names;
+}
+
+Params profile(std::string_view name) {
+  for (const auto& p : profiles())
+    if (name == p.name) return p.params;
+  throw InputError("unknown profile '" + std::string(name) + "' (known: " +
+                   joined(profile_names()) + ")");
+}
+
+const std::vector<std::string>& param_keys() {
+  static const std::vector<std::string> keys = {
+      "width",     "height",        "search_radius", "tile",     "blocks", "feature_threshold",
+      "sad_threshold", "hist_filter", "min_count",   "gyro_comp"};
+  return keys;
+}
+
+int parse_int(std::string_view text, std::string_view what, std::int64_t lo, std::int64_t hi) {
+  std::int64_t v = 0;
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, v);
+  if (text.empty() || ec != std::errc() || ptr != end)
+    throw InputError(std::string(what) + ": '" + std::string(text) + "' is not an integer");
+  if (v < lo || v > hi)
+    throw InputError(std::string(what) + ": " + std::to_string(v) + " is outside " +
+                     std::to_string(lo) + ".." + std::to_string(hi));
+  return static_cast<int>(v);
+}
+
+void set_param(Params& p, std::string_view key, std::string_view value) {
+  const std::string what = "--set " + std::string(key);
+  // Parse with a wide range here; validate() owns the real limits so that profile values and
+  // overrides are checked by the same code.
+  auto num = [&] { return parse_int(value, what, INT32_MIN, INT32_MAX); };
+  auto flag = [&] { return parse_int(value, what, 0, 1) != 0; };
+  if (key == "width") p.width = num();
+  else if (key == "height") p.height = num();
+  else if (key == "search_radius") p.search_radius = num();
+  else if (key == "tile") p.tile = num();
+  else if (key == "blocks") p.blocks = num();
+  else if (key == "feature_threshold") p.feature_threshold = num();
+  else if (key == "sad_threshold") p.sad_threshold = num();
+  else if (key == "hist_filter") p.hist_filter = flag();
+  else if (key == "min_count") p.min_count = num();
+  else if (key == "gyro_comp") p.gyro_comp = flag();
+  else
+    throw InputError("unknown parameter '" + std::string(key) + "' (known: " +
+                     joined(param_keys()) + ")");
+}
+
+void validate(const Params& p) {
+  auto range = [](const char* name, int v, int lo, int hi) {
+    if (v < lo || v > hi)
+      throw InputError("parameter " + std::string(name) + " = " + std::to_string(v) +
+                       " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+  };
+  // T is fixed: the record layout, the 4-byte packing and every kernel assume 8x8 blocks.
+  if (p.tile != 8)
+    throw InputError("parameter tile = " + std::to_string(p.tile) +
+                     ": only 8 is supported (the kernel's 8x8 block)");
+  // S <= 31 keeps the half-pixel displacement 2*S+1 inside an i8.
+  range("search_radius", p.search_radius, 1, 31);
+  // B <= 255: at most B*B POIs, so u16 histogram bins and the quality formula cannot overflow.
+  range("blocks", p.blocks, 1, 255);
+  range("feature_threshold", p.feature_threshold, 0, 65535);
+  range("sad_threshold", p.sad_threshold, 0, 65535);
+  range("min_count", p.min_count, 0, 65535);
+  range("width", p.width, 1, kMaxFrameSide);
+  range("height", p.height, 1, kMaxFrameSide);
+  if (std::int64_t{p.width} * p.height > kMaxFramePixels)
+    throw InputError("frame " + std::to_string(p.width) + "x" + std::to_string(p.height) +
+                     " exceeds the limit of " + std::to_string(kMaxFramePixels) + " pixels");
+  // One POI needs lo < hi on each axis: lo = S+1, hi = side-(S+1)-T (SPEC §2).
+  const int min_side = 2 * (p.search_radius + 1) + p.tile + 1;
+  if (p.width < min_side || p.height < min_side)
+    throw InputError("frame " + std::to_string(p.width) + "x" + std::to_string(p.height) +
+                     " is too small for search_radius " + std::to_string(p.search_radius) +
+                     ": each side needs at least " + std::to_string(min_side) + " pixels");
+}
+
+}  // namespace pxflow

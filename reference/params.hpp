@@ -1,0 +1,52 @@
+// Kernel parameters and named profiles (SPEC §1). Validation lives here so that every entry
+// point (CLI, harness, tests) rejects the same bad combinations with the same message.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pxflow {
+
+struct Params {
+  int width = 64;               // W, pixels; the row stride of a packed frame
+  int height = 64;              // H
+  int search_radius = 4;        // S, whole pixels, 1..31
+  int tile = 8;                 // T, always 8 (the kernel's 8x8 block)
+  int blocks = 8;               // B, grid points per axis (upper bound)
+  int feature_threshold = 40;   // FT, a POI is dropped when feature < FT
+  int sad_threshold = 5000;     // VT, a match is accepted when best SAD < VT
+  bool hist_filter = true;      // HF
+  int min_count = 10;           // MINCOUNT
+  bool gyro_comp = false;       // GC (needs a GyroSample at estimate time)
+
+  bool operator==(const Params&) const = default;
+};
+
+// Frame size limits: records store coordinates as u16, and larger frames would be a typo.
+inline constexpr int kMaxFrameSide = 16384;
+inline constexpr std::int64_t kMaxFramePixels = std::int64_t{1} << 26;  // 64 Mpx
+
+// Names of the built-in profiles, default first.
+const std::vector<std::string>& profile_names();
+
+// The named profile; throws InputError naming the profile and listing the known ones.
+Params profile(std::string_view name);
+
+// Names accepted by set_param, in the order --help lists them.
+const std::vector<std::string>& param_keys();
+
+// Applies KEY=VALUE (a --set argument) to p. Throws InputError for an unknown key or a value
+// that is not a plain decimal integer (hist_filter/gyro_comp: 0 or 1). Ranges are checked by
+// validate(), after all overrides are in.
+void set_param(Params& p, std::string_view key, std::string_view value);
+
+// Throws InputError with one line naming the offending parameter when p is not a valid
+// combination (SPEC §1): T != 8, S outside 1..31, B outside 1..255, thresholds outside u16,
+// a frame too small for one POI, or a frame beyond the size limits above.
+void validate(const Params& p);
+
+// Parses a decimal integer in [lo, hi]; throws InputError mentioning `what` otherwise.
+int parse_int(std::string_view text, std::string_view what, std::int64_t lo, std::int64_t hi);
+
+}  // namespace pxflow

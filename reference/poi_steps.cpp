@@ -1,0 +1,48 @@
+#include "poi_steps.hpp"
+
+#include <cstdlib>
+
+namespace pxflow::ref {
+
+std::uint16_t feature(const FrameView& prev, int i, int j, OpCounts& cnt) {
+  auto q = [&](int c, int r) { return int{prev.at(i + 2 + c, j + 2 + r)}; };
+  int sum = 0;
+  for (int r = 0; r < 3; ++r) {  // vertical neighbours: rows r and r+1, one 4-byte op each
+    for (int c = 0; c < 4; ++c) sum += std::abs(q(c, r) - q(c, r + 1));
+    ++cnt.sad_ops;
+  }
+  for (int c = 0; c < 3; ++c) {  // horizontal neighbours: columns c and c+1, one op each
+    for (int r = 0; r < 4; ++r) sum += std::abs(q(c, r) - q(c + 1, r));
+    ++cnt.sad_ops;
+  }
+  return static_cast<std::uint16_t>(sum);  // <= 24 * 255 = 6120
+}
+
+Match integer_search(const FramePair& f, int i, int j, int S, OpCounts& cnt) {
+  Match best{0, 0, 0xFFFFFFFFu};  // the sentinel: any real SAD replaces it
+  for (int dy = -S; dy <= S; ++dy) {
+    for (int dx = -S; dx <= S; ++dx) {
+      const std::uint32_t sad = block_sad(
+          f.prev, i, j, [&](int c, int r) { return f.next.at(i + dx + c, j + dy + r); }, cnt);
+      if (sad < best.sad) best = {dx, dy, sad};  // strict: a tie keeps the earlier candidate
+    }
+  }
+  return best;
+}
+
+void select_half_pixel(PoiRecord& rec, const Match& m, const std::uint32_t sub[8]) {
+  std::uint32_t best = m.sad;
+  int dir = kDirNone;
+  for (int k = 0; k < 8; ++k) {
+    rec.sub[k] = static_cast<std::uint16_t>(sub[k]);
+    if (sub[k] < best) {  // strict: a half step must beat the integer match and lower k's
+      best = sub[k];
+      dir = k;
+    }
+  }
+  rec.dir = static_cast<std::uint8_t>(dir);
+  rec.hx = static_cast<std::int8_t>(2 * m.bx + kStepX[dir]);
+  rec.hy = static_cast<std::int8_t>(2 * m.by + kStepY[dir]);
+}
+
+}  // namespace pxflow::ref
