@@ -8,5 +8,9 @@
 namespace pxflow {
 
 std::vector<BackendRow> reference_rows();  // ref-original, ref-local, ref-global
+std::vector<BackendRow> cpu_rows();        // hosts/cpu: swar and the native SIMD variants
+std::vector<BackendRow> opencl_rows();     // hosts/opencl
+std::vector<BackendRow> vulkan_rows();     // hosts/vulkan
+std::vector<BackendRow> gap8_rows();       // hosts/gap8: the kernel on the cluster model
 
 }  // namespace pxflow

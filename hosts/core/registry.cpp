@@ -13,6 +13,19 @@ std::vector<BackendRow> build_rows() {
     for (auto& r : more) rows.push_back(std::move(r));
   };
   add(reference_rows());
+  // Each family's CMake block defines its PXFLOW_WITH_<NAME> when it is built.
+#ifdef PXFLOW_WITH_CPU_SIMD
+  add(cpu_rows());
+#endif
+#ifdef PXFLOW_WITH_OPENCL
+  add(opencl_rows());
+#endif
+#ifdef PXFLOW_WITH_VULKAN
+  add(vulkan_rows());
+#endif
+#ifdef PXFLOW_WITH_GAP8
+  add(gap8_rows());
+#endif
   return rows;
 }
 
