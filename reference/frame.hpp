@@ -1,7 +1,8 @@
-// A non-owning view of one 8-bit grayscale frame, and a pair of them (SPEC §2).
+// 8-bit grayscale frames (SPEC §2): a non-owning view, an owning frame, and a pair of views.
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace pxflow {
 
@@ -13,6 +14,15 @@ struct FrameView {
 
   std::uint8_t at(int x, int y) const { return data[y * stride + x]; }
   const std::uint8_t* row(int y) const { return data + y * stride; }
+};
+
+// A frame that owns its pixels, rows packed (stride = width).
+struct Frame {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> pixels;
+
+  FrameView view() const { return {width, height, width, pixels.data()}; }
 };
 
 // prev is image1 (where the blocks come from), next is image2 (where they are searched).

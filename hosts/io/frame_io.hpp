@@ -16,15 +16,6 @@ struct FrameSize {
   int height = 0;
 };
 
-// A frame that owns its pixels, rows packed (stride = width).
-struct Frame {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> pixels;
-
-  FrameView view() const { return {width, height, width, pixels.data()}; }
-};
-
 // Parses "WxH" (e.g. "64x64"); throws InputError for anything else or a size beyond the limits.
 FrameSize parse_frame_size(std::string_view text);
 
