@@ -14,6 +14,14 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "pxflow 0.1");
   app.require_subcommand(1);
   std::vector<cli::Command> commands = {cli::add_flow_command(app), cli::add_backends_command(app)};
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    for (const auto& c : commands) known |= c.app->get_name() == argv[1];
+    if (!known) {
+      std::fprintf(stderr, "pxflow: error: unknown command '%s' (see pxflow --help)\n", argv[1]);
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -9,6 +9,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include "errors.hpp"
 #include "image_header.hpp"
 #include "params.hpp"
@@ -53,10 +56,35 @@ Frame load_raw(const std::string& path, FrameSize size, std::uintmax_t bytes) {
   return f;
 }
 
+// libpng and libjpeg print their own complaints straight to stderr, below OpenCV's logger.
+// While a decoder runs, fd 2 points at /dev/null, so a bad file gives our one line only.
+class StderrSilenced {
+ public:
+  StderrSilenced() : saved_(dup(2)) {
+    const int null_fd = open("/dev/null", O_WRONLY);
+    if (null_fd >= 0) {
+      dup2(null_fd, 2);
+      close(null_fd);
+    }
+  }
+  ~StderrSilenced() {
+    if (saved_ >= 0) {
+      dup2(saved_, 2);
+      close(saved_);
+    }
+  }
+  StderrSilenced(const StderrSilenced&) = delete;
+  StderrSilenced& operator=(const StderrSilenced&) = delete;
+
+ private:
+  int saved_;
+};
+
 Frame load_image(const std::string& path) {
   if (auto declared = declared_image_size(path)) check_size_limits(path, declared->width, declared->height);
   cv::Mat img;
   try {
+    StderrSilenced quiet;
     img = cv::imread(path, cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception&) {
     img.release();

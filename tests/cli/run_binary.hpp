@@ -1,0 +1,28 @@
+// Runs the pxflow binary as a user would and captures its exit code, stdout and stderr.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace pxflow::test {
+
+struct RunResult {
+  int exit_code = -1;  // -1 when killed by a signal
+  std::string out, err;
+  int err_lines() const;
+};
+
+RunResult run_pxflow(const std::vector<std::string>& args);
+
+// A fresh temporary directory for one test's files (removed when the object dies).
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  std::string path(const std::string& name) const { return dir_ + "/" + name; }
+  void write(const std::string& name, const std::string& bytes) const;
+
+ private:
+  std::string dir_;
+};
+
+}  // namespace pxflow::test

@@ -1,0 +1,120 @@
+// `pxflow flow` on good input: the JSON contract of the foundation issue, text output, and the
+// same answer from PNG, raw and colour versions of one frame pair.
+#include <catch2/catch.hpp>
+
+#include <bit>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "run_binary.hpp"
+#include "synthetic.hpp"
+
+using namespace pxflow;
+using nlohmann::json;
+using test::run_pxflow;
+
+namespace {
+
+struct ShiftedPair {
+  test::TempDir dir;
+  OwnedPair op;
+  ShiftedPair() {
+    op = {"shift", 64, 64, std::vector<std::uint8_t>(64 * 64), {}};
+    Rng rng(4);
+    for (auto& v : op.prev) v = static_cast<std::uint8_t>(rng.uniform(0, 255));
+    shift_into(op.prev, op.next, 64, 64, 2, -1, 9);
+    write("prev", op.prev);
+    write("next", op.next);
+  }
+  void write(const std::string& name, std::vector<std::uint8_t>& px) {
+    const cv::Mat m(64, 64, CV_8UC1, px.data());
+    REQUIRE(cv::imwrite(dir.path(name + ".png"), m));
+    dir.write(name + ".raw", std::string(px.begin(), px.end()));
+    cv::Mat bgr;
+    cv::Mat channels[] = {m, m, m};
+    cv::merge(channels, 3, bgr);  // gray in all three channels converts back exactly
+    REQUIRE(cv::imwrite(dir.path(name + "-bgr.png"), bgr));
+  }
+};
+
+json flow_json(const std::vector<std::string>& args) {
+  const auto r = run_pxflow(args);
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.err.empty());
+  REQUIRE(std::count(r.out.begin(), r.out.end(), '\n') == 1);  // exactly one JSON object
+  return json::parse(r.out);
+}
+
+}  // namespace
+
+TEST_CASE("--json prints the documented object", "[cli][json]") {
+  ShiftedPair sp;
+  for (const char* backend : {"ref-original", "ref-local", "ref-global"}) {
+    CAPTURE(backend);
+    const json j = flow_json({"flow", "--json", "--backend", backend, sp.dir.path("prev.png"), sp.dir.path("next.png")});
+    for (const char* key : {"flow_x", "flow_y", "flow_x_bits", "flow_y_bits", "quality", "meancount",
+                            "histx", "histy", "counts", "pois"})
+      REQUIRE(j.contains(key));
+    CHECK(j["flow_x"].get<double>() == 2.0);
+    CHECK(j["flow_y"].get<double>() == -1.0);
+    CHECK(j["flow_x_bits"] == "40000000");
+    CHECK(j["flow_y_bits"] == "bf800000");
+    CHECK(j["quality"] == 255);
+    CHECK(j["meancount"] == 64);
+    CHECK(j["histx"].size() == 19);
+    CHECK(j["histx"][4 + 9] == 64);
+    CHECK(j["histy"][-2 + 9] == 64);
+    CHECK(j["counts"]["sad_ops"] == 91520);
+    REQUIRE(j["pois"].size() == 64);
+    const json& p = j["pois"][9];
+    for (const char* key : {"x", "y", "status", "feature", "dx", "dy", "sad", "dir", "sub", "hx", "hy"})
+      REQUIRE(p.contains(key));
+    CHECK(p["x"] == 11);
+    CHECK(p["y"] == 11);
+    CHECK(p["status"] == 2);
+    CHECK(p["dx"] == 2);
+    CHECK(p["dy"] == -1);
+    CHECK(p["sad"] == 0);
+    CHECK(p["dir"] == 8);
+    CHECK(p["sub"].size() == 8);
+    CHECK(p["hx"] == 4);
+    CHECK(p["hy"] == -2);
+  }
+  CHECK(flow_json({"flow", "--json", "--backend", "ref-local", sp.dir.path("prev.png"), sp.dir.path("next.png")})["counts"]["interpolations"] == 19200);
+}
+
+TEST_CASE("PNG, raw and colour inputs give identical JSON", "[cli][json]") {
+  ShiftedPair sp;
+  const json png = flow_json({"flow", "--json", sp.dir.path("prev.png"), sp.dir.path("next.png")});
+  const json raw = flow_json({"flow", "--json", "--size", "64x64", sp.dir.path("prev.raw"), sp.dir.path("next.raw")});
+  const json bgr = flow_json({"flow", "--json", sp.dir.path("prev-bgr.png"), sp.dir.path("next-bgr.png")});
+  CHECK(png == raw);
+  CHECK(png == bgr);
+}
+
+TEST_CASE("profile and --set reach the kernel", "[cli][json]") {
+  ShiftedPair sp;
+  const json head = flow_json({"flow", "--json", "--profile", "px4flow-head", sp.dir.path("prev.png"), sp.dir.path("next.png")});
+  CHECK(head["pois"].size() == 25);
+  CHECK(head["histx"].size() == 2 * (2 * 8 + 1) + 1);
+  const json strict = flow_json({"flow", "--json", "--set", "feature_threshold=6121", sp.dir.path("prev.png"), sp.dir.path("next.png")});
+  CHECK(strict["meancount"] == 0);  // no feature can reach 6121 (max 6120)
+  CHECK(strict["quality"] == 0);
+}
+
+TEST_CASE("text summary and the backend list", "[cli]") {
+  ShiftedPair sp;
+  const auto r = run_pxflow({"flow", sp.dir.path("prev.png"), sp.dir.path("next.png")});
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("x = +2.0000 px, y = -1.0000 px") != std::string::npos);
+  CHECK(r.out.find("91,520 SAD ops") != std::string::npos);
+  const auto list = run_pxflow({"backends"});
+  REQUIRE(list.exit_code == 0);
+  CHECK(list.out.find("ref-original   available") != std::string::npos);
+  const auto help = run_pxflow({"flow", "--help"});
+  CHECK(help.exit_code == 0);
+  CHECK(help.out.find("--set") != std::string::npos);
+}
