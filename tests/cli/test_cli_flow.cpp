@@ -50,7 +50,7 @@ json flow_json(const std::vector<std::string>& args) {
 
 }  // namespace
 
-TEST_CASE("--json prints the documented object", "[cli][json]") {
+TEST_CASE("flow --json prints the documented object", "[cli][json]") {
   ShiftedPair sp;
   for (const char* backend : {"ref-original", "ref-local", "ref-global"}) {
     CAPTURE(backend);
