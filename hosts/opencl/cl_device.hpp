@@ -1,0 +1,33 @@
+// OpenCL platform and device discovery, and the choice of one device by BackendOptions::device.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cl_util.hpp"
+
+namespace pxflow::cl {
+
+struct DeviceEntry {
+  int index = 0;  // position in list_devices(), what --device N selects
+  cl_platform_id platform = nullptr;
+  cl_device_id device = nullptr;
+  std::string name;           // CL_DEVICE_NAME, e.g. "pthread-skylake-avx512-Intel(R) ..."
+  std::string platform_name;  // CL_PLATFORM_NAME, e.g. "Portable Computing Language"
+  bool gpu = false;
+};
+
+// Every device of every platform, platforms in driver order. Empty when no platform is
+// installed; throws BackendError when the driver fails otherwise.
+std::vector<DeviceEntry> list_devices();
+
+// "0 = <name> (<platform>), 1 = ..." for error messages.
+std::string describe(const std::vector<DeviceEntry>& devices);
+
+// The device `selector` names: empty picks the first GPU, else the first device; a decimal
+// number is an index into `devices`; anything else is a case-insensitive substring of the
+// device name (the first match wins). Throws InputError for an index out of range or a name
+// that matches nothing, BackendError when there is no device at all.
+const DeviceEntry& choose_device(const std::vector<DeviceEntry>& devices,
+                                 const std::string& selector);
+
+}  // namespace pxflow::cl

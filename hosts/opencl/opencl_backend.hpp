@@ -1,0 +1,78 @@
+// The `opencl` backend: the kernel of kernels/opencl/opencl.cl run through the OpenCL C API on
+// one device (PoCL's CPU device here, any OpenCL 1.2 driver elsewhere). A batch is packed into
+// one frame buffer and run with one launch, split into chunks only where the device's limits
+// (max allocation, global memory) demand it. Work decomposition and measurements: docs/opencl.md.
+#pragma once
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "backend.hpp"
+#include "cl_program.hpp"
+
+namespace pxflow {
+
+// Which kernel of opencl.cl runs. The registry row uses the default; the tests check both and
+// the benchmark compares them.
+enum class OpenclLayout {
+  kGroupPerPoi,  // flow_group_per_poi: a work-group per POI, window in local memory
+  kItemPerPoi,   // flow_item_per_poi: a work-item per POI, global memory only
+};
+
+struct OpenclTuning {
+  OpenclLayout layout = OpenclLayout::kGroupPerPoi;
+  std::size_t group_size = 0;       // work-items per work-group; 0 = chosen for the device
+  std::size_t max_chunk_bytes = 0;  // cap on one launch's buffers; 0 = the device's limits
+};
+
+// Where the time of the last run() went, from OpenCL event profiling (device clock).
+struct OpenclTiming {
+  double kernel_seconds = 0;    // all launches of the run, START to END
+  double transfer_seconds = 0;  // frames in (unmap) and records out (read)
+  int launches = 0;
+};
+
+class OpenclBackend final : public Backend {
+ public:
+  // Throws InputError for a device selector that names no device, BackendError when the
+  // driver fails or the kernel does not build (with the build log).
+  explicit OpenclBackend(const BackendOptions& options, const OpenclTuning& tuning = {});
+  ~OpenclBackend() override;
+
+  void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+           OpCounts& counts) override;
+  std::string unsupported(const Params& p) const override;
+
+  const OpenclTiming& last_timing() const { return timing_; }
+  const std::string& device_name() const { return program_->device.name; }
+  std::size_t group_size() const { return group_size_; }
+
+ private:
+  struct Limits {
+    std::size_t chunk_bytes = 0;  // the most one launch's frame or record buffer may hold
+    std::size_t local_bytes = 0;  // local memory left for the kernel's dynamic arguments
+  };
+
+  std::size_t pairs_per_chunk(const Params& p) const;
+  std::size_t local_window_bytes(const Params& p) const;
+  void reserve_buffers(std::size_t frame_bytes, std::size_t record_bytes);
+  void set_arguments(const Params& p, std::size_t total_pois);
+  // The three commands of a chunk, each returning its profiled event.
+  cl::Owned<cl_event> upload(std::span<const FramePair> pairs, const Params& p);
+  cl::Owned<cl_event> launch(std::size_t total_pois);
+  cl::Owned<cl_event> download(std::span<PoiRecord> out);
+  void account(cl_event upload, cl_event kernel, cl_event download);
+  void run_chunks(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out);
+
+  OpenclTuning tuning_;
+  std::shared_ptr<const cl::DeviceProgram> program_;
+  cl::Owned<cl_command_queue> queue_;
+  cl::Owned<cl_kernel> kernel_;
+  cl::Owned<cl_mem> frames_, records_;
+  std::size_t frames_capacity_ = 0, records_capacity_ = 0;
+  std::size_t group_size_ = 0;
+  Limits limits_;
+  OpenclTiming timing_;
+};
+
+}  // namespace pxflow

@@ -1,0 +1,39 @@
+// The `opencl` registry row.
+#include <sstream>
+
+#include "backend_rows.hpp"
+#include "opencl_backend.hpp"
+
+namespace pxflow {
+namespace {
+
+// One line for `pxflow backends`: the error's first line, plus the first line of a build log
+// that mentions an error.
+std::string one_line(const std::string& message) {
+  std::istringstream lines(message);
+  std::string first, line;
+  std::getline(lines, first);
+  while (std::getline(lines, line))
+    if (line.find("error") != std::string::npos) return first + " " + line;
+  return first;
+}
+
+std::string probe() {
+  try {
+    const auto devices = cl::list_devices();
+    if (devices.empty()) return "no OpenCL platform or device found (install pocl-opencl-icd)";
+    cl::device_program(cl::choose_device(devices, ""));  // compiles the kernel once
+    return {};
+  } catch (const std::exception& e) {
+    return one_line(e.what());
+  }
+}
+
+}  // namespace
+
+std::vector<BackendRow> opencl_rows() {
+  return {{"opencl", "an OpenCL 1.2 device (here PoCL: pocl-opencl-icd)", probe,
+           [](const BackendOptions& options) { return std::make_unique<OpenclBackend>(options); }}};
+}
+
+}  // namespace pxflow

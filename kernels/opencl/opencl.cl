@@ -1,0 +1,257 @@
+// The PX4FLOW per-POI kernel (SPEC sec. 3) in OpenCL C 1.2, the `opencl` backend's device code.
+//
+// Memory layout shared with the host (hosts/opencl/opencl_backend.cpp):
+//   frames:  for each pair of the launch, prev then next, each width*height bytes, rows packed.
+//   records: for each pair, one PoiRecord per grid POI in grid order, written as 8 little-endian
+//            uint words with exactly the byte layout of reference/record.hpp.
+//
+// Two work decompositions share the per-POI helpers below (docs/opencl.md compares them):
+//   flow_group_per_poi: one work-group per POI; the 8x8 prev block and the search window of next
+//                       are staged in local memory, work-items split the candidates.
+//   flow_item_per_poi:  one work-item per POI, everything from global memory.
+//
+// Floor averaging everywhere: hadd(), never rhadd() (rhadd rounds up, SPEC sec. 7).
+
+// Half-pixel step (sx, sy) of direction k (SPEC sec. 3 table); k = 8 is the integer match.
+__constant int kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
+__constant int kStepY[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+
+#define DIR_NONE 8u
+#define STATUS_DROPPED 0u
+#define STATUS_REJECTED 1u
+#define STATUS_ACCEPTED 2u
+
+// Candidate keys pack (SAD, raster index) so that one unsigned minimum gives the lowest SAD
+// and, among equal SADs, the first candidate in raster order (strictly-smaller-replaces).
+// SAD <= 16320 < 2^14 and the raster index < 63*63 < 2^12 leave the top 6 bits clear.
+#define KEY_INDEX_BITS 12
+#define KEY_INDEX_MASK ((1u << KEY_INDEX_BITS) - 1u)
+
+// Where a POI is and where its pixels live; the same for both decompositions.
+typedef struct {
+  int x, y;    // top-left corner of the 8x8 block in prev
+  int radius;  // S
+} Poi;
+
+inline uint lane_sum(ushort8 v) {
+  uint4 s = convert_uint4(v.lo) + convert_uint4(v.hi);
+  s.xy += s.zw;
+  return s.x + s.y;
+}
+
+inline ushort8 row_sad(uchar8 a, uchar8 b) { return convert_ushort8(abs_diff(a, b)); }
+
+// SPEC sec. 3 step 1: 24 absolute differences over the central 4x4 of the block.
+inline uint feature_of(const uchar8 block[8]) {
+  uint sum = 0;
+  for (int r = 0; r < 3; ++r) {  // vertical neighbours
+    uchar4 d = abs_diff(block[2 + r].s2345, block[3 + r].s2345);
+    sum += (uint)d.s0 + d.s1 + d.s2 + d.s3;
+  }
+  for (int r = 0; r < 4; ++r) {  // horizontal neighbours
+    uchar3 d = abs_diff(block[2 + r].s234, block[2 + r].s345);
+    sum += (uint)d.s0 + d.s1 + d.s2;
+  }
+  return sum;
+}
+
+// The eight direction values of block row r, given P rows r-1, r, r+1 at columns -1, 0, +1
+// (p[v][o] = P(o - 1 + c, r - 1 + v) for c = 0..7). Diagonals average two HORIZONTAL
+// averages, each floored (SPEC sec. 3).
+inline void direction_row(const uchar8 p[3][3], uchar8 value[8]) {
+  uchar8 h_right[3], h_left[3];  // h(c, r-1+v) and h(c-1, r-1+v)
+  for (int v = 0; v < 3; ++v) {
+    h_right[v] = hadd(p[v][1], p[v][2]);
+    h_left[v] = hadd(p[v][0], p[v][1]);
+  }
+  value[0] = h_right[1];
+  value[1] = hadd(h_right[1], h_right[2]);
+  value[2] = hadd(p[1][1], p[2][1]);
+  value[3] = hadd(h_left[1], h_left[2]);
+  value[4] = h_left[1];
+  value[5] = hadd(h_left[0], h_left[1]);
+  value[6] = hadd(p[0][1], p[1][1]);
+  value[7] = hadd(h_right[0], h_right[1]);
+}
+
+// The address-space-specific helpers: OpenCL C 1.2 has no generic address space, so the same
+// two functions are stamped out for __local (work-group decomposition) and __global.
+#define DEFINE_WINDOW_HELPERS(SPACE)                                                           \
+  /* 8x8 SAD of the block against the 8x8 of `w` (row stride `stride`). */                     \
+  inline uint block_sad_##SPACE(const uchar8 block[8], SPACE const uchar* w, int stride) {     \
+    ushort8 acc = row_sad(block[0], vload8(0, w));                                             \
+    for (int r = 1; r < 8; ++r) acc += row_sad(block[r], vload8(0, w + r * stride));           \
+    return lane_sum(acc);                                                                      \
+  }                                                                                            \
+  /* The eight half-pixel SADs around the match whose top-left pixel P(0, 0) is at `m`. */     \
+  inline void half_pixel_sads_##SPACE(const uchar8 block[8], SPACE const uchar* m, int stride, \
+                                      uint sub[8]) {                                           \
+    ushort8 acc[8];                                                                            \
+    for (int k = 0; k < 8; ++k) acc[k] = (ushort8)(0);                                         \
+    for (int r = 0; r < 8; ++r) {                                                              \
+      uchar8 p[3][3], value[8];                                                                \
+      for (int v = 0; v < 3; ++v)                                                              \
+        for (int o = 0; o < 3; ++o) p[v][o] = vload8(0, m + (r - 1 + v) * stride + o - 1);     \
+      direction_row(p, value);                                                                 \
+      for (int k = 0; k < 8; ++k) acc[k] += row_sad(block[r], value[k]);                       \
+    }                                                                                          \
+    for (int k = 0; k < 8; ++k) sub[k] = lane_sum(acc[k]);                                     \
+  }
+
+DEFINE_WINDOW_HELPERS(__local)
+DEFINE_WINDOW_HELPERS(__global)
+
+// SPEC sec. 3 step 3's vote: from (sad, dir 8), k = 0..7 replaces only on strictly smaller.
+inline uint vote(uint sad, const uint sub[8]) {
+  uint best = sad, dir = DIR_NONE;
+  for (uint k = 0; k < 8; ++k) {
+    if (sub[k] < best) {
+      best = sub[k];
+      dir = k;
+    }
+  }
+  return dir;
+}
+
+// Writes one record as 8 words (layout: reference/record.hpp). Fields a status does not
+// define arrive here as 0, and the padding bytes are never set.
+inline void store_record(__global uint* out, Poi poi, uint status, uint feature, int dx, int dy,
+                         uint sad, uint dir, const uint sub[8]) {
+  const int hx = status == STATUS_ACCEPTED ? 2 * dx + kStepX[dir] : 0;
+  const int hy = status == STATUS_ACCEPTED ? 2 * dy + kStepY[dir] : 0;
+  uint8 w;
+  w.s0 = (uint)poi.x | ((uint)poi.y << 16);
+  w.s1 = status | (feature << 16);
+  w.s2 = ((uint)dx & 0xFFu) | (((uint)dy & 0xFFu) << 8) | (sad << 16);
+  w.s3 = dir | (sub[0] << 16);
+  w.s4 = sub[1] | (sub[2] << 16);
+  w.s5 = sub[3] | (sub[4] << 16);
+  w.s6 = sub[5] | (sub[6] << 16);
+  w.s7 = sub[7] | (((uint)hx & 0xFFu) << 16) | (((uint)hy & 0xFFu) << 24);
+  vstore8(w, 0, out);
+}
+
+inline void store_dropped(__global uint* out, Poi poi, uint feature) {
+  const uint zero[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  store_record(out, poi, STATUS_DROPPED, feature, 0, 0, 0, DIR_NONE, zero);
+}
+
+// The grid POI `index` of a pair (SPEC sec. 2: y outer, x inner).
+inline Poi grid_poi(uint index, int radius, int4 grid_x, int4 grid_y) {
+  Poi poi;
+  poi.x = grid_x.s0 + (int)(index % (uint)grid_x.s2) * grid_x.s1;
+  poi.y = grid_y.s0 + (int)(index / (uint)grid_x.s2) * grid_y.s1;
+  poi.radius = radius;
+  return poi;
+}
+
+// --- flow_group_per_poi ------------------------------------------------------------------
+
+// Copies the search window of next, rows y-S-1 .. y+S+8 and the same columns, into `win`.
+inline void stage_window(__global const uchar* next, int width, Poi poi, __local uchar* win) {
+  const int side = 2 * poi.radius + 10;
+  const int x0 = poi.x - poi.radius - 1, y0 = poi.y - poi.radius - 1;
+  for (int t = get_local_id(0); t < side * side; t += get_local_size(0)) {
+    const int row = t / side, col = t - row * side;
+    win[t] = next[(y0 + row) * width + x0 + col];
+  }
+}
+
+// Each work-item keeps the minimum key over the candidates it owns (lid, lid + size, ...).
+inline uint local_best_key(const uchar8 block[8], __local const uchar* win, int radius) {
+  const int span = 2 * radius + 1, side = span + 9;
+  uint best = 0xFFFFFFFFu;
+  for (int c = get_local_id(0); c < span * span; c += get_local_size(0)) {
+    const int dy = c / span, dx = c - dy * span;  // offsets from -S, -S
+    const uint sad = block_sad___local(block, win + (dy + 1) * side + dx + 1, side);
+    best = min(best, (sad << KEY_INDEX_BITS) | (uint)c);
+  }
+  return best;
+}
+
+// One work-group per POI. Local memory: `win` holds (2S+10)^2 bytes, `keys` one uint per
+// work-item. Launched with exactly pairs * POIs-per-pair work-groups.
+__kernel void flow_group_per_poi(__global const uchar* frames, __global uint* records, int width,
+                                 int height, int radius, uint feature_threshold, uint sad_threshold,
+                                 int4 grid_x, int4 grid_y, __local uchar* win, __local uint* keys) {
+  const uint group = get_group_id(0), lid = get_local_id(0);
+  const uint pois = (uint)(grid_x.s2 * grid_y.s2);
+  const size_t plane = (size_t)width * (size_t)height;
+  __global const uchar* prev = frames + (size_t)(group / pois) * 2 * plane;
+  const Poi poi = grid_poi(group % pois, radius, grid_x, grid_y);
+  __global uint* out = records + (size_t)group * 8;
+
+  stage_window(prev + plane, width, poi, win);
+  uchar8 block[8];
+  for (int r = 0; r < 8; ++r) block[r] = vload8(0, prev + (poi.y + r) * width + poi.x);
+  barrier(CLK_LOCAL_MEM_FENCE);
+
+  // The feature test is uniform across the group, so the early exit keeps barriers legal.
+  const uint feature = feature_of(block);
+  if (feature < feature_threshold) {
+    if (lid == 0) store_dropped(out, poi, feature);
+    return;
+  }
+  keys[lid] = local_best_key(block, win, radius);
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (lid != 0) return;
+
+  uint best = keys[0];
+  for (uint t = 1; t < get_local_size(0); ++t) best = min(best, keys[t]);
+  const int span = 2 * radius + 1, side = span + 9;
+  const uint index = best & KEY_INDEX_MASK, sad = best >> KEY_INDEX_BITS;
+  const int bx = (int)(index % (uint)span), by = (int)(index / (uint)span);  // from -S, -S
+  uint sub[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  uint status = STATUS_REJECTED, dir = DIR_NONE;
+  if (sad < sad_threshold) {
+    half_pixel_sads___local(block, win + (by + 1) * side + bx + 1, side, sub);
+    status = STATUS_ACCEPTED;
+    dir = vote(sad, sub);
+  }
+  store_record(out, poi, status, feature, bx - radius, by - radius, sad, dir, sub);
+}
+
+// --- flow_item_per_poi -------------------------------------------------------------------
+
+// One work-item per POI, global memory only. Launched with at least pairs * POIs-per-pair
+// work-items; `total` is that exact count.
+__kernel void flow_item_per_poi(__global const uchar* frames, __global uint* records, int width,
+                                int height, int radius, uint feature_threshold, uint sad_threshold,
+                                int4 grid_x, int4 grid_y, uint total) {
+  const uint item = get_global_id(0);
+  if (item >= total) return;
+  const uint pois = (uint)(grid_x.s2 * grid_y.s2);
+  const size_t plane = (size_t)width * (size_t)height;
+  __global const uchar* prev = frames + (size_t)(item / pois) * 2 * plane;
+  __global const uchar* next = prev + plane;
+  const Poi poi = grid_poi(item % pois, radius, grid_x, grid_y);
+  __global uint* out = records + (size_t)item * 8;
+
+  uchar8 block[8];
+  for (int r = 0; r < 8; ++r) block[r] = vload8(0, prev + (poi.y + r) * width + poi.x);
+  const uint feature = feature_of(block);
+  if (feature < feature_threshold) {
+    store_dropped(out, poi, feature);
+    return;
+  }
+  uint best = 0xFFFFFFFFu;
+  int bx = 0, by = 0;
+  for (int dy = -radius; dy <= radius; ++dy) {
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const uint sad = block_sad___global(block, next + (poi.y + dy) * width + poi.x + dx, width);
+      if (sad < best) {  // strict: a tie keeps the earlier candidate in raster order
+        best = sad;
+        bx = dx;
+        by = dy;
+      }
+    }
+  }
+  uint sub[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  uint status = STATUS_REJECTED, dir = DIR_NONE;
+  if (best < sad_threshold) {
+    half_pixel_sads___global(block, next + (poi.y + by) * width + poi.x + bx, width, sub);
+    status = STATUS_ACCEPTED;
+    dir = vote(best, sub);
+  }
+  store_record(out, poi, status, feature, bx, by, best, dir, sub);
+}

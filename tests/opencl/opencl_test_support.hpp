@@ -1,0 +1,40 @@
+// Shared by the opencl tests: the device requirement, the corpus per profile, and the
+// bit-exact comparison of a batch against ref-original.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "frame.hpp"
+#include "opencl_backend.hpp"
+#include "params.hpp"
+#include "synthetic.hpp"
+
+namespace pxflow::test {
+
+// FAILs the current test with the probe's reason unless the opencl row can run here: a
+// backend that cannot run is never counted as passed.
+void require_opencl_device();
+
+// A named set of frame pairs of one size (views into owned or loaded pixels).
+struct Corpus {
+  std::string profile;
+  Params params;
+  std::vector<OwnedPair> owned;
+  std::vector<std::string> names;  // one per pair of `pairs`
+  std::vector<FramePair> pairs;
+};
+
+// px4flow-64, px4flow-head (64x64), 320x240 S=7 B=16 and 640x480 S=7 B=32: seeded random pairs,
+// every hostile pair, and windows of the real OpenCV sample frames (stride = the full image).
+std::vector<std::string> corpus_profiles();
+const Corpus& corpus(const std::string& profile);
+
+// ref-original's records for every pair of the corpus, computed once.
+const std::vector<PoiRecord>& reference_records(const std::string& profile);
+
+// Runs the whole corpus as one batch through `backend` into a sentinel-filled buffer and
+// returns one line per differing record (pair name, POI, first differing field), empty when
+// every record is identical to ref-original's byte for byte.
+std::vector<std::string> mismatches(OpenclBackend& backend, const std::string& profile);
+
+}  // namespace pxflow::test
