@@ -1,0 +1,100 @@
+// The CPU registry rows: one per compiled ISA (swar, sse2, sse41, avx2, avx512bw / neon) and
+// `cpu`, the run-time dispatcher that takes the strongest ISA that can run here. Every row runs
+// the frame pairs of a batch on a thread pool (BackendOptions::threads, 0 = all cores).
+#include <memory>
+#include <string>
+
+#include "backend_rows.hpp"
+#include "cpu_kernel.hpp"
+#include "errors.hpp"
+#include "grid.hpp"
+#include "isa_mask.hpp"
+#include "thread_pool.hpp"
+
+namespace pxflow {
+namespace {
+
+class CpuBackend final : public Backend {
+ public:
+  CpuBackend(const cpu::IsaKernel& kernel, int threads) : kernel_(kernel), pool_(threads) {}
+
+  void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+           OpCounts& counts) override {
+    const std::size_t per_pair = poi_count(p);
+    std::vector<OpCounts> pair_counts(pairs.size());  // summed in pair order: deterministic
+    try {
+      pool_.for_each(pairs.size(), [&](std::size_t n) {
+        cpu::run_flow(kernel_, pairs[n], p, out.subspan(n * per_pair, per_pair), pair_counts[n]);
+      });
+    } catch (const BackendError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw BackendError(std::string(kernel_.name) + ": " + e.what());
+    }
+    for (const OpCounts& c : pair_counts) counts += c;
+  }
+
+ private:
+  const cpu::IsaKernel& kernel_;
+  cpu::ThreadPool pool_;
+};
+
+// The kernel of a compiled ISA. Called only for an ISA that can run here: the accessor itself
+// lives in the ISA's file, compiled with its flags.
+const cpu::IsaKernel& kernel_of(std::string_view isa) {
+#if defined(__x86_64__)
+  if (isa == "sse2") return cpu::sse2_kernel();
+  if (isa == "sse41") return cpu::sse41_kernel();
+  if (isa == "avx2") return cpu::avx2_kernel();
+  if (isa == "avx512bw") return cpu::avx512bw_kernel();
+#endif
+#if defined(__aarch64__)
+  if (isa == "neon") return cpu::neon_kernel();
+#endif
+  return cpu::swar_kernel();
+}
+
+std::string needs_of(std::string_view isa) {
+  if (isa == "swar") return "nothing (portable C++, 4 pixels per uint32)";
+  if (isa == "sse2") return "x86-64 (SSE2)";
+  if (isa == "sse41") return "x86-64 with SSE4.1";
+  if (isa == "avx2") return "x86-64 with AVX2";
+  if (isa == "avx512bw") return "x86-64 with AVX-512BW";
+  return "AArch64 (NEON)";
+}
+
+std::unique_ptr<Backend> create_isa(std::string_view isa, const BackendOptions& o) {
+  if (const std::string why = cpu::isa_unavailable(isa); !why.empty())
+    throw BackendError(std::string(isa) + " cannot run here: " + why);
+  return std::make_unique<CpuBackend>(kernel_of(isa), o.threads);
+}
+
+BackendRow dispatcher_row() {
+  const std::string chosen = cpu::best_isa();
+  return {"cpu",
+          "the best compiled ISA this CPU supports (here: " + (chosen.empty() ? "none" : chosen) +
+              "; PXFLOW_DISABLE masks ISAs)",
+          [] {
+            return cpu::best_isa().empty() ? std::string("every CPU kernel is unavailable (" +
+                                                         cpu::isa_unavailable("swar") + ")")
+                                           : std::string();
+          },
+          [](const BackendOptions& o) {
+            const std::string isa = cpu::best_isa();
+            if (isa.empty()) throw BackendError("cpu: every CPU kernel is masked");
+            return create_isa(isa, o);
+          }};
+}
+
+}  // namespace
+
+std::vector<BackendRow> cpu_rows() {
+  std::vector<BackendRow> rows;
+  for (const std::string& isa : cpu::compiled_isas())
+    rows.push_back({isa, needs_of(isa), [isa] { return cpu::isa_unavailable(isa); },
+                    [isa](const BackendOptions& o) { return create_isa(isa, o); }});
+  rows.push_back(dispatcher_row());
+  return rows;
+}
+
+}  // namespace pxflow

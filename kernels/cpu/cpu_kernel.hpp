@@ -1,0 +1,82 @@
+// The CPU kernels: one per instruction set, each in its own file compiled with its own flags only
+// (swar.cpp portable, sse2.cpp, sse41.cpp, avx2.cpp, avx512bw.cpp, neon.cpp). An ISA file
+// provides only the two hot steps of SPEC §3 (the integer search and the eight half-pixel SADs)
+// behind plain function pointers; the per-POI walk, the feature test and the record writing are
+// portable code in poi_loop.cpp, shared by every ISA.
+//
+// Why function pointers and raw pointers only: an ISA file compiled with -mavx512bw that
+// instantiated a shared inline or template function (std::vector, std::span, ...) could hand the
+// linker an AVX-512 copy of it for the whole program. ISA files therefore keep everything they
+// define internal (anonymous namespaces) and export only the IsaKernel table below.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "frame.hpp"
+#include "params.hpp"
+#include "record.hpp"
+
+namespace pxflow::cpu {
+
+struct BlockMatch {
+  int dx = 0;  // -S..S
+  int dy = 0;
+  std::uint32_t sad = 0;
+};
+
+// The search window of one POI at (x, y) with radius S: the pixels of `next` from column x-S-1
+// and row y-S-1, 2S+10 rows of 2S+10 columns (the integer search uses the inner 2S+8, the
+// half-pixel step one more on each side). `data` points at its top-left pixel; a kernel may read
+// up to `row_bytes(S)` bytes from the start of each of its rows and no row outside it. When
+// those bytes would run past the right edge of the frame, the caller copies the window into a
+// zero-padded buffer first.
+struct Window {
+  const std::uint8_t* data = nullptr;
+  std::ptrdiff_t stride = 0;
+  int radius = 0;  // S
+};
+
+// The POI's 8x8 block in `prev`: top-left pixel and row stride.
+struct Block {
+  const std::uint8_t* data = nullptr;
+  std::ptrdiff_t stride = 0;
+};
+
+struct IsaKernel {
+  const char* name;  // the registry name: "swar", "sse2", "sse41", "avx2", "avx512bw", "neon"
+  // Bytes from the start of a window row this kernel may read, for radius S (>= 2S+10).
+  int (*row_bytes)(int radius);
+  // SPEC §3 step 2: the first candidate in raster order (dy outer, dx inner) with the smallest
+  // SAD. `counts` is non-null only for kernels that count their 4-byte operations.
+  BlockMatch (*search)(Block prev, Window next, OpCounts* counts);
+  // SPEC §3 step 3: sub[k] for k = 0..7. `around` points at P(-1, -1) of the matched block
+  // (window row dy+S, column dx+S); reads stay within P(-1..8, -1..8).
+  void (*half_pixel)(Block prev, const std::uint8_t* around, std::ptrdiff_t stride,
+                     std::uint32_t sub[8], OpCounts* counts);
+  bool counts_ops;  // true: the kernel charges its USAD8/USADA8/UHADD8 work (the SWAR model)
+};
+
+// The kernels compiled into this build (a kernel for another architecture is absent).
+const IsaKernel& swar_kernel();
+#if defined(__x86_64__)
+const IsaKernel& sse2_kernel();
+const IsaKernel& sse41_kernel();
+const IsaKernel& avx2_kernel();
+const IsaKernel& avx512bw_kernel();
+#endif
+#if defined(__aarch64__)
+const IsaKernel& neon_kernel();
+#endif
+
+// One frame pair through kernel `k`: writes all poi_count(p) records of `out` (every byte,
+// SPEC §4). `p` must be valid and match the frames. Counts are added when k counts them.
+void run_flow(const IsaKernel& k, const FramePair& pair, const Params& p, std::span<PoiRecord> out,
+              OpCounts& counts);
+
+// The first smallest entry of a SAD table in raster order: rows 0..rows-1 of `cols` entries,
+// `stride` entries apart. Shared by the kernels that fill a table and scan it with scalar code.
+BlockMatch first_minimum(const std::uint16_t* table, int rows, int cols, std::ptrdiff_t stride,
+                         int radius);
+
+}  // namespace pxflow::cpu

@@ -1,0 +1,137 @@
+// The portable part of every CPU kernel: the walk over the POI grid, the feature test, the search
+// window (copied only where a kernel's wide loads would leave the frame) and the record.
+#include <cstring>
+#include <string>
+
+#include "cpu_kernel.hpp"
+#include "errors.hpp"
+#include "grid.hpp"
+#include "poi_steps.hpp"
+#include "primitives.hpp"
+
+namespace pxflow::cpu {
+namespace {
+
+constexpr int kMaxWindowSide = 2 * 31 + 10;  // S <= 31 (SPEC §1)
+constexpr int kMaxRowBytes = 128;            // the widest row_bytes() of any kernel, rounded up
+
+// A zero-padded copy of a search window for POIs near the right edge of the frame.
+struct WindowCopy {
+  alignas(64) std::uint8_t bytes[kMaxWindowSide * kMaxRowBytes];
+};
+
+// Copies n >= 8 bytes in fixed-size chunks (the last one overlapping): a variable-length memcpy
+// call per row would cost more than the search of a small window.
+void copy_row(std::uint8_t* dst, const std::uint8_t* src, int n) {
+  const int chunk = n >= 16 ? 16 : 8;
+  int at = 0;
+  for (; at + chunk <= n; at += chunk) {
+    if (chunk == 16)
+      std::memcpy(dst + at, src + at, 16);
+    else
+      std::memcpy(dst + at, src + at, 8);
+  }
+  if (at < n) {
+    if (chunk == 16)
+      std::memcpy(dst + n - 16, src + n - 16, 16);
+    else
+      std::memcpy(dst + n - 8, src + n - 8, 8);
+  }
+}
+
+Window copy_window(const FrameView& next, int x0, int y0, int side, int row_bytes,
+                   WindowCopy& copy) {
+  const int stride = (row_bytes + 15) / 16 * 16;
+  std::memset(copy.bytes, 0, static_cast<std::size_t>(side) * stride);
+  for (int r = 0; r < side; ++r) copy_row(copy.bytes + r * stride, next.row(y0 + r) + x0, side);
+  return {copy.bytes, stride, 0};
+}
+
+// SPEC §3 step 1 in the firmware's shape: three USAD8 of vertically adjacent 4-byte rows and
+// three of horizontally adjacent 4-byte columns of the central 4x4.
+std::uint16_t feature(const FrameView& prev, int i, int j, OpCounts* counts) {
+  const std::uint8_t* q = prev.row(j + 2) + i + 2;
+  const std::ptrdiff_t s = prev.stride;
+  std::uint32_t rows[4], cols[4];
+  for (int r = 0; r < 4; ++r) rows[r] = load4(q + r * s);
+  for (int c = 0; c < 4; ++c) {
+    const std::uint8_t bytes[4] = {q[c], q[s + c], q[2 * s + c], q[3 * s + c]};
+    cols[c] = load4(bytes);
+  }
+  std::uint32_t sum = 0;
+  for (int r = 0; r < 3; ++r) sum = usada8(rows[r], rows[r + 1], sum);
+  for (int c = 0; c < 3; ++c) sum = usada8(cols[c], cols[c + 1], sum);
+  if (counts) counts->sad_ops += 6;
+  return static_cast<std::uint16_t>(sum);
+}
+
+struct PoiContext {
+  const IsaKernel& kernel;
+  const FramePair& pair;
+  const Params& p;
+  int row_bytes;
+  OpCounts* counts;
+  WindowCopy& copy;
+};
+
+void run_poi(const PoiContext& ctx, int x, int y, PoiRecord& rec) {
+  const int S = ctx.p.search_radius;
+  rec = PoiRecord{};  // every field a status does not define, and the padding, is 0
+  rec.x = static_cast<std::uint16_t>(x);
+  rec.y = static_cast<std::uint16_t>(y);
+  rec.dir = kDirNone;
+  rec.feature = feature(ctx.pair.prev, x, y, ctx.counts);
+  if (rec.feature < ctx.p.feature_threshold) {
+    rec.status = kDropped;
+    return;
+  }
+  const FrameView& next = ctx.pair.next;
+  Window w{next.row(y - S - 1) + (x - S - 1), next.stride, S};
+  if (x - S - 1 + ctx.row_bytes > next.width) {
+    w = copy_window(next, x - S - 1, y - S - 1, 2 * S + 10, ctx.row_bytes, ctx.copy);
+    w.radius = S;
+  }
+  const Block block{ctx.pair.prev.row(y) + x, ctx.pair.prev.stride};
+  const BlockMatch m = ctx.kernel.search(block, w, ctx.counts);
+  rec.dx = static_cast<std::int8_t>(m.dx);
+  rec.dy = static_cast<std::int8_t>(m.dy);
+  rec.sad = static_cast<std::uint16_t>(m.sad);
+  if (!(m.sad < static_cast<std::uint32_t>(ctx.p.sad_threshold))) {
+    rec.status = kRejected;
+    return;
+  }
+  rec.status = kAccepted;
+  std::uint32_t sub[8];
+  const std::uint8_t* around = w.data + (m.dy + S) * w.stride + (m.dx + S);
+  ctx.kernel.half_pixel(block, around, w.stride, sub, ctx.counts);
+  ref::select_half_pixel(rec, ref::Match{m.dx, m.dy, m.sad}, sub);
+}
+
+}  // namespace
+
+void run_flow(const IsaKernel& k, const FramePair& pair, const Params& p, std::span<PoiRecord> out,
+              OpCounts& counts) {
+  OpCounts* charged = k.counts_ops ? &counts : nullptr;
+  if (charged) counts.counted = true;
+  if (k.row_bytes(p.search_radius) > kMaxRowBytes)
+    throw BackendError(std::string(k.name) + ": row reads exceed the window copy (internal)");
+  WindowCopy copy;
+  const PoiContext ctx{k, pair, p, k.row_bytes(p.search_radius), charged, copy};
+  const std::vector<int> xs = grid_axis(p.width, p);
+  const std::vector<int> ys = grid_axis(p.height, p);
+  std::size_t n = 0;
+  for (int y : ys)
+    for (int x : xs) run_poi(ctx, x, y, out[n++]);
+}
+
+BlockMatch first_minimum(const std::uint16_t* table, int rows, int cols, std::ptrdiff_t stride,
+                         int radius) {
+  BlockMatch best{0, 0, 0xFFFFFFFFu};  // the sentinel of SPEC §3: any real SAD replaces it
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      if (table[r * stride + c] < best.sad)  // strict: a tie keeps the earlier candidate
+        best = {c - radius, r - radius, table[r * stride + c]};
+  return best;
+}
+
+}  // namespace pxflow::cpu

@@ -1,0 +1,53 @@
+// The inputs the CPU kernels are checked on, and the check itself (exact record bytes against
+// ref-original). Pure C++ so that the NEON cross test, built for AArch64 without OpenCV, shares
+// it; real frames are added by the callers that can load them.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "frame.hpp"
+#include "params.hpp"
+#include "record.hpp"
+
+namespace pxflow::cpu_test {
+
+// One frame pair with its own pixels and a row stride that may exceed the width.
+struct Case {
+  std::string name;
+  int width = 0, height = 0;
+  std::ptrdiff_t stride = 0;
+  std::vector<std::uint8_t> prev, next;  // stride * (height - 1) + width bytes: nothing after
+  FramePair view() const {
+    return {{width, height, stride, prev.data()}, {width, height, stride, next.data()}};
+  }
+};
+
+// Cases sharing one set of parameters: checked as one batch.
+struct Group {
+  std::string name;
+  Params params;
+  std::vector<Case> cases;
+};
+
+// A case from packed pixels, re-laid with `stride` (>= width); the last row ends the buffer
+// so that a read past the frame is a read past the allocation.
+Case make_case(std::string name, int width, int height, std::ptrdiff_t stride,
+               const std::uint8_t* prev, const std::uint8_t* next, std::ptrdiff_t src_stride);
+
+// Seeded random pairs (`seeds` per group at 64x64, fewer at larger sizes) and every hostile
+// pair, at px4flow-64, px4flow-head, 320x240 (S=7, B=16) and wide radii (S=13, S=31) that
+// exercise the multi-chunk paths. Some cases get an odd stride.
+std::vector<Group> synthetic_corpus(int seeds);
+
+// Runs a whole group as one batch through `run` (output pre-filled with 0xA5) and compares
+// every record with ref-original byte for byte. Prints one line per failing case, naming
+// `who`, the group, the case and the first differing POI. Returns the number of failing cases.
+using BatchRun =
+    std::function<void(std::span<const FramePair>, const Params&, std::span<PoiRecord>)>;
+int check_group(const std::string& who, const Group& g, const BatchRun& run);
+
+}  // namespace pxflow::cpu_test
