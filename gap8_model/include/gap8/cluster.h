@@ -1,0 +1,93 @@
+// The GAP8 cluster: N cores in lockstep over shared L1/L2, the event unit (fork, barrier), the
+// DMA and the per-core counters. Time is discrete: the core with the earliest next-issue cycle
+// runs next; cores issuing in the same cycle are arbitrated per TCDM bank.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "gap8/core.h"
+#include "gap8/dma.h"
+#include "gap8/fault.h"
+#include "gap8/memory.h"
+
+namespace gap8 {
+
+struct ClusterConfig {
+  int cores = 8;                            // 1..8
+  bool contention = true;                   // model TCDM bank conflicts
+  uint64_t max_cycles = 4'000'000'000ull;   // a runaway program faults past this
+  std::function<void(char)> putc;           // program output; stdout when empty
+};
+
+struct RunResult {
+  std::optional<Fault> fault;  // set when the run ended on a fault
+  int exit_code = 0;           // the program's exit status when it exited
+  uint64_t cycles = 0;         // cluster cycles until exit (or the fault)
+};
+
+class Cluster {
+ public:
+  explicit Cluster(ClusterConfig config);
+
+  Memory& memory() { return memory_; }
+  Core& core(int i) { return *cores_[i]; }
+  int num_cores() const { return static_cast<int>(cores_.size()); }
+
+  // Every core starts at `entry` at cycle 0 (start-up code splits them by core id).
+  void Start(uint32_t entry);
+  RunResult Run();
+
+  // Peripheral port, used by the cores' loads and stores (32-bit aligned words only).
+  bool IsPeripheral(uint32_t addr, uint32_t bytes) const;
+  uint32_t PeripheralRead(Core& core, uint32_t addr);
+  void PeripheralWrite(Core& core, uint32_t addr, uint32_t value);
+
+ private:
+  enum class Wait : uint8_t { kNone, kDispatch, kBarrier, kDma };
+  struct Dispatch {
+    uint32_t entry, arg;
+  };
+  struct CoreSide {  // event-unit and DMA state private to one core
+    Wait wait = Wait::kNone;
+    uint32_t wait_pc = 0, wait_insn = 0, wait_dma_id = 0;
+    std::deque<Dispatch> mailbox;
+    uint32_t arg = 0;
+    DmaCommand dma;
+  };
+
+  void Advance();
+  void RunSolo(Core& core, uint64_t limit);
+  void IssueCycle(uint64_t cycle);
+  void CompleteDma();
+  [[noreturn]] void ReportDeadlock();
+  void SleepOn(Core& core, Wait reason);
+  void WakeCore(Core& core, uint64_t at, uint32_t value);
+  uint32_t EventUnitRead(Core& core, uint32_t addr);
+  void EventUnitWrite(Core& core, uint32_t addr, uint32_t value);
+  uint32_t DmaRead(Core& core, uint32_t addr);
+  void DmaWrite(Core& core, uint32_t addr, uint32_t value);
+  void PerfWrite(Core& core, uint32_t addr, uint32_t value);
+  [[noreturn]] void BadRegister(Core& core, uint32_t addr);
+
+  ClusterConfig config_;
+  Memory memory_;
+  std::vector<std::unique_ptr<Core>> cores_;
+  std::vector<CoreSide> side_;
+  Dma dma_;
+  uint32_t team_size_ = 1;
+  uint32_t fork_arg_ = 0;
+  uint32_t barrier_arrived_ = 0;  // bit per core
+  std::array<int, GAP8_L1_BANKS> bank_priority_{};  // round-robin: core served first next time
+  bool schedule_changed_ = false;  // a wake-up or DMA push: the solo loop must yield
+  bool exited_ = false;
+  int exit_code_ = 0;
+  uint64_t exit_cycle_ = 0;
+};
+
+}  // namespace gap8

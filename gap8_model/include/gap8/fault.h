@@ -1,0 +1,27 @@
+// A simulated program's fault: ends the run with one message naming core, pc and instruction.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace gap8 {
+
+enum class FaultKind { kIllegalInstruction, kMemory, kCycleBudget, kDeadlock };
+
+struct Fault {
+  FaultKind kind;
+  int core;
+  uint32_t pc;
+  uint32_t insn;
+  std::string what;  // the reason alone, e.g. "illegal instruction"
+
+  // "core 3 at pc 0x1c000104 (insn 0x0000ffff): illegal instruction"
+  std::string Message() const;
+};
+
+const char* FaultKindName(FaultKind kind);
+
+// "0x1c000104": addresses and instruction bits in messages.
+std::string Hex(uint32_t value);
+
+}  // namespace gap8

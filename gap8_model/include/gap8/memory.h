@@ -1,0 +1,59 @@
+// The cluster's memories (L1 TCDM, L2) with a decode cache beside each, so an instruction is
+// decoded once however often it runs. Peripherals are not here: the Cluster serves them.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "../../runtime/gap8_regs.h"
+#include "gap8/decoded.h"
+
+namespace gap8 {
+
+class Memory {
+ public:
+  Memory();
+
+  // Host pointer to [addr, addr + size) when it lies wholly in L1 or L2, else nullptr.
+  uint8_t* L1Span(uint32_t addr, uint32_t size) {
+    const uint32_t off = addr - GAP8_L1_BASE;
+    return (off < GAP8_L1_SIZE && size <= GAP8_L1_SIZE - off) ? l1_.data() + off : nullptr;
+  }
+  uint8_t* L2Span(uint32_t addr, uint32_t size) {
+    const uint32_t off = addr - GAP8_L2_BASE;
+    return (off < GAP8_L2_SIZE && size <= GAP8_L2_SIZE - off) ? l2_.data() + off : nullptr;
+  }
+  uint8_t* Span(uint32_t addr, uint32_t size) {
+    uint8_t* p = L1Span(addr, size);
+    return p ? p : L2Span(addr, size);
+  }
+
+  // Decode-cache slot for the instruction at pc, or nullptr when pc is not in L1 or L2.
+  Decoded* CodeSlot(uint32_t pc) {
+    uint32_t off = pc - GAP8_L2_BASE;
+    if (off < GAP8_L2_SIZE) return &l2_code_[off >> 1];
+    off = pc - GAP8_L1_BASE;
+    if (off < GAP8_L1_SIZE) return &l1_code_[off >> 1];
+    return nullptr;
+  }
+
+  // 32 bits from pc (the memories carry 4 bytes of zero padding past their end).
+  uint32_t FetchBits(uint32_t pc);
+
+  // Forgets decoded instructions overlapping [addr, addr + size): the bytes were rewritten.
+  void InvalidateCode(uint32_t addr, uint32_t size);
+
+  // Copies host bytes in (ELF loading, tests); false when the range is not wholly mapped.
+  bool Write(uint32_t addr, const void* src, uint32_t size);
+  bool Read(uint32_t addr, void* dst, uint32_t size);
+
+  // Back to all-zero memory and an empty decode cache.
+  void Clear();
+
+ private:
+  std::vector<uint8_t> l1_, l2_;
+  std::vector<Decoded> l1_code_, l2_code_;
+};
+
+}  // namespace gap8

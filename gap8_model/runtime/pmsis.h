@@ -1,0 +1,131 @@
+/* A PMSIS-compatible subset for programs run on the GAP8 cluster model: code written against
+ * GAP8's SDK for these calls compiles unchanged. Implemented on the model's own peripheral
+ * registers (gap8_regs.h); main() runs on cluster core 0, the other cores wait for forks. */
+#ifndef GAP8_PMSIS_H
+#define GAP8_PMSIS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "gap8_regs.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define PI_L1 __attribute__((section(".data_l1")))
+#define PI_CL_L1 PI_L1
+#define PI_L1_BSS __attribute__((section(".bss_l1")))
+
+static inline uint32_t __gap8_read(uint32_t addr) { return *(volatile uint32_t *)addr; }
+static inline void __gap8_write(uint32_t addr, uint32_t v) { *(volatile uint32_t *)addr = v; }
+
+/* ---- cores and teams ---- */
+static inline int pi_core_id(void) {
+  int id;
+  __asm__ volatile("csrr %0, mhartid" : "=r"(id));
+  return id & 0x1f;
+}
+static inline int pi_cluster_id(void) { return 0; }
+static inline int pi_cl_cluster_nb_cores(void) { return (int)__gap8_read(GAP8_CTRL_NUM_CORES); }
+static inline int pi_cl_team_nb_cores(void) { return (int)__gap8_read(GAP8_EU_TEAM_SIZE); }
+static inline void pi_cl_team_barrier(void) { (void)__gap8_read(GAP8_EU_BARRIER); }
+
+/* Runs entry(arg) on cores 0..nb_cores-1 (0: all) and returns when all have finished. */
+static inline void pi_cl_team_fork(int nb_cores, void (*entry)(void *), void *arg) {
+  __gap8_write(GAP8_EU_TEAM_SIZE, (uint32_t)nb_cores);
+  __gap8_write(GAP8_EU_FORK_ARG, (uint32_t)arg);
+  __gap8_write(GAP8_EU_FORK_ENTRY, (uint32_t)entry);
+  entry(arg);
+  pi_cl_team_barrier();
+}
+
+/* ---- cluster DMA ---- */
+typedef enum { PI_CL_DMA_DIR_LOC2EXT = 0, PI_CL_DMA_DIR_EXT2LOC = 1 } pi_cl_dma_dir_e;
+
+typedef struct pi_cl_dma_copy_s {
+  uint32_t ext;
+  uint32_t loc;
+  uint32_t id;
+  uint32_t size;
+  pi_cl_dma_dir_e dir;
+  uint8_t merge;
+  uint32_t stride; /* 2-D only */
+  uint32_t length; /* 2-D only */
+  struct pi_cl_dma_copy_s *next;
+} pi_cl_dma_copy_t;
+typedef pi_cl_dma_copy_t pi_cl_dma_copy_2d_t;
+typedef struct { uint32_t id; } pi_cl_dma_cmd_t;
+
+static inline uint32_t __gap8_dma_push(uint32_t ext, uint32_t loc, uint32_t size, uint32_t dir,
+                                       uint32_t stride, uint32_t length) {
+  __gap8_write(GAP8_DMA_EXT, ext);
+  __gap8_write(GAP8_DMA_LOC, loc);
+  __gap8_write(GAP8_DMA_SIZE, size);
+  __gap8_write(GAP8_DMA_DIR, dir);
+  __gap8_write(GAP8_DMA_STRIDE, stride);
+  __gap8_write(GAP8_DMA_LENGTH, length);
+  return __gap8_read(GAP8_DMA_PUSH);
+}
+static inline void pi_cl_dma_memcpy(pi_cl_dma_copy_t *copy) {
+  copy->id = __gap8_dma_push(copy->ext, copy->loc, copy->size, copy->dir, 0, 0);
+}
+static inline void pi_cl_dma_memcpy_2d(pi_cl_dma_copy_2d_t *copy) {
+  copy->id = __gap8_dma_push(copy->ext, copy->loc, copy->size, copy->dir, copy->stride,
+                             copy->length);
+}
+static inline void pi_cl_dma_wait(void *copy) {
+  __gap8_write(GAP8_DMA_WAIT, ((pi_cl_dma_copy_t *)copy)->id);
+}
+static inline void pi_cl_dma_cmd(uint32_t ext, uint32_t loc, uint32_t size, pi_cl_dma_dir_e dir,
+                                 pi_cl_dma_cmd_t *cmd) {
+  cmd->id = __gap8_dma_push(ext, loc, size, dir, 0, 0);
+}
+static inline void pi_cl_dma_cmd_2d(uint32_t ext, uint32_t loc, uint32_t size, uint32_t stride,
+                                    uint32_t length, pi_cl_dma_dir_e dir, pi_cl_dma_cmd_t *cmd) {
+  cmd->id = __gap8_dma_push(ext, loc, size, dir, stride, length);
+}
+static inline void pi_cl_dma_cmd_wait(pi_cl_dma_cmd_t *cmd) { __gap8_write(GAP8_DMA_WAIT, cmd->id); }
+
+/* ---- L1 allocation (a bump allocator between the PI_L1 data and the stacks) ---- */
+struct pi_device;
+void *pi_cl_l1_malloc(struct pi_device *device, uint32_t size);
+void pi_cl_l1_free(struct pi_device *device, void *chunk, uint32_t size);
+
+/* ---- performance counters (pi_perf_event_e numbering of PMSIS for GAP8) ---- */
+typedef enum {
+  PI_PERF_CYCLES = GAP8_EVT_CYCLES,
+  PI_PERF_ACTIVE_CYCLES = GAP8_EVT_ACTIVE_CYCLES,
+  PI_PERF_INSTR = GAP8_EVT_INSTR,
+  PI_PERF_LD_STALL = GAP8_EVT_LD_STALL,
+  PI_PERF_JR_STALL = GAP8_EVT_JR_STALL,
+  PI_PERF_IMISS = GAP8_EVT_IMISS,
+  PI_PERF_LD = GAP8_EVT_LD,
+  PI_PERF_ST = GAP8_EVT_ST,
+  PI_PERF_JUMP = GAP8_EVT_JUMP,
+  PI_PERF_BRANCH = GAP8_EVT_BRANCH,
+  PI_PERF_BTAKEN = GAP8_EVT_BTAKEN,
+  PI_PERF_RVC = GAP8_EVT_RVC,
+  PI_PERF_LD_EXT = GAP8_EVT_LD_EXT,
+  PI_PERF_ST_EXT = GAP8_EVT_ST_EXT,
+  PI_PERF_LD_EXT_CYC = GAP8_EVT_LD_EXT_CYC,
+  PI_PERF_ST_EXT_CYC = GAP8_EVT_ST_EXT_CYC,
+  PI_PERF_TCDM_CONT = GAP8_EVT_TCDM_CONT,
+} pi_perf_event_e;
+
+static inline void pi_perf_conf(unsigned events) { __gap8_write(GAP8_PERF_CONF, events); }
+static inline void pi_perf_reset(void) { __gap8_write(GAP8_PERF_RESET, 0); }
+static inline void pi_perf_start(void) { __gap8_write(GAP8_PERF_START, 0); }
+static inline void pi_perf_stop(void) { __gap8_write(GAP8_PERF_STOP, 0); }
+static inline unsigned int pi_perf_read(int id) { return __gap8_read(GAP8_PERF_VALUE(id)); }
+
+/* ---- output (not PMSIS: the model's console) ---- */
+void gap8_putc(char c);
+void gap8_puts(const char *s);
+int printf(const char *fmt, ...);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,127 @@
+// Loads and stores (RV32I and the PULP post-increment / register-offset forms) with their costs:
+// TCDM, L2 through the cluster bridge, or the cluster's peripherals.
+#include <cstring>
+
+#include "gap8/cluster.h"
+#include "gap8/core.h"
+#include "gap8/timing.h"
+
+namespace gap8 {
+namespace {
+
+uint32_t AccessBytes(uint8_t width) { return 1u << (width & 3u); }
+
+uint32_t Extend(uint32_t raw, uint8_t width) {
+  switch (width) {
+    case 0: return static_cast<uint32_t>(static_cast<int8_t>(raw));
+    case 1: return static_cast<uint32_t>(static_cast<int16_t>(raw));
+    default: return raw;  // lw, lbu, lhu: the raw bytes, zero-extended
+  }
+}
+
+bool IsStore(Op op) {
+  return op == Op::kStore || op == Op::kStorePostImm || op == Op::kStoreRegReg ||
+         op == Op::kStorePostReg;
+}
+
+// Address used by the access; post-increment forms use rs1 unmodified.
+uint32_t EffectiveAddress(const Decoded& d, const std::array<uint32_t, 32>& regs) {
+  switch (d.op) {
+    case Op::kLoad:
+    case Op::kStore: return regs[d.rs1] + static_cast<uint32_t>(d.imm);
+    case Op::kLoadRegReg: return regs[d.rs1] + regs[d.rs2];
+    case Op::kStoreRegReg: return regs[d.rs1] + regs[d.rd];
+    default: return regs[d.rs1];
+  }
+}
+
+}  // namespace
+
+uint32_t Core::Load(const Decoded& d, uint32_t addr, uint32_t* cost) {
+  const uint32_t bytes = AccessBytes(d.width);
+  const bool misaligned = (addr & (bytes - 1)) != 0;
+  events_[GAP8_EVT_LD] += misaligned ? 2 : 1;
+  uint32_t raw = 0;
+  if (uint8_t* p = mem_.L1Span(addr, bytes)) {
+    std::memcpy(&raw, p, bytes);
+    *cost = timing::kLoadStore + (misaligned ? timing::kMisaligned : 0);
+  } else if (uint8_t* q = mem_.L2Span(addr, bytes)) {
+    std::memcpy(&raw, q, bytes);
+    *cost = timing::kL2Access + (misaligned ? timing::kMisaligned : 0);
+    events_[GAP8_EVT_LD_EXT] += misaligned ? 2 : 1;
+    events_[GAP8_EVT_LD_EXT_CYC] += *cost;
+  } else if (cluster_ && cluster_->IsPeripheral(addr, bytes)) {
+    *cost = timing::kPeriphAccess;
+    raw = cluster_->PeripheralRead(*this, addr);
+  } else {
+    Raise(FaultKind::kMemory, "load of " + std::to_string(bytes) + " bytes from unmapped address " +
+                                  Hex(addr));
+  }
+  return Extend(raw, d.width);
+}
+
+void Core::Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost) {
+  const uint32_t bytes = AccessBytes(d.width);
+  const bool misaligned = (addr & (bytes - 1)) != 0;
+  events_[GAP8_EVT_ST] += misaligned ? 2 : 1;
+  if (uint8_t* p = mem_.L1Span(addr, bytes)) {
+    std::memcpy(p, &value, bytes);
+    mem_.InvalidateCode(addr, bytes);  // L1 may hold code too
+    *cost = timing::kLoadStore + (misaligned ? timing::kMisaligned : 0);
+  } else if (uint8_t* q = mem_.L2Span(addr, bytes)) {
+    std::memcpy(q, &value, bytes);
+    mem_.InvalidateCode(addr, bytes);
+    *cost = timing::kL2Access + (misaligned ? timing::kMisaligned : 0);
+    events_[GAP8_EVT_ST_EXT] += misaligned ? 2 : 1;
+    events_[GAP8_EVT_ST_EXT_CYC] += *cost;
+  } else if (cluster_ && cluster_->IsPeripheral(addr, bytes)) {
+    *cost = timing::kPeriphAccess;
+    cluster_->PeripheralWrite(*this, addr, value);
+  } else {
+    Raise(FaultKind::kMemory, "store of " + std::to_string(bytes) + " bytes to unmapped address " +
+                                  Hex(addr));
+  }
+}
+
+uint32_t Core::ExecuteMemory(const Decoded& d) {
+  const uint32_t addr = EffectiveAddress(d, regs_);
+  uint32_t cost = 0;
+  const uint32_t next = pc_ + d.size;
+  if (IsStore(d.op)) {
+    Store(d, addr, regs_[d.rs2], &cost);
+    hazard_ = Hazard::kNone;
+    if (d.op == Op::kStorePostImm) regs_[d.rs1] = addr + static_cast<uint32_t>(d.imm);
+    if (d.op == Op::kStorePostReg) regs_[d.rs1] = addr + regs_[d.rd];
+  } else {
+    const uint32_t value = Load(d, addr, &cost);
+    if (d.op == Op::kLoadPostImm) regs_[d.rs1] = addr + static_cast<uint32_t>(d.imm);
+    if (d.op == Op::kLoadPostReg) regs_[d.rs1] = addr + regs_[d.rs2];
+    regs_[d.rd] = value;  // written last: with rd == rs1 the loaded value wins
+    hazard_ = Hazard::kLoad;
+    if (asleep) hazard_ = Hazard::kNone;  // a blocking peripheral read delivers at wake-up
+    if (asleep) wake_rd = d.rd;
+  }
+  regs_[0] = 0;
+  pc_ = NextSequentialPc(next);
+  return cost;
+}
+
+int Core::TcdmBank(const Decoded& d) const {
+  switch (d.op) {
+    case Op::kLoad:
+    case Op::kStore:
+    case Op::kLoadPostImm:
+    case Op::kLoadRegReg:
+    case Op::kLoadPostReg:
+    case Op::kStorePostImm:
+    case Op::kStoreRegReg:
+    case Op::kStorePostReg: {
+      const uint32_t addr = EffectiveAddress(d, regs_);
+      if (addr - GAP8_L1_BASE >= GAP8_L1_SIZE) return -1;
+      return static_cast<int>((addr >> 2) & (GAP8_L1_BANKS - 1));
+    }
+    default: return -1;
+  }
+}
+
+}  // namespace gap8

@@ -1,0 +1,57 @@
+// Fetch, hazards, faults, wake-up and event totals of a core.
+#include "gap8/core.h"
+#include "gap8/timing.h"
+
+namespace gap8 {
+
+const Decoded& Core::Fetch() {
+  Decoded* slot = mem_.CodeSlot(pc_);
+  if (!slot) {
+    Fault f{FaultKind::kMemory, id_, pc_, 0, "instruction fetch from unmapped address " + Hex(pc_)};
+    throw f;
+  }
+  if (slot->op == Op::kUndecoded) *slot = Decode(mem_.FetchBits(pc_));
+  return *slot;
+}
+
+bool Core::TakeHazardStall(const Decoded& d) {
+  if (hazard_rd_ == 0 || hazard_ == Hazard::kNone) return false;
+  const bool reads = (d.src_mask >> hazard_rd_) & 1u;
+  bool stall = false;
+  if (hazard_ == Hazard::kLoad && reads) {
+    ++events_[GAP8_EVT_LD_STALL];
+    stall = true;
+  } else if (hazard_ == Hazard::kMul && reads) {
+    stall = true;
+  } else if (hazard_ == Hazard::kAlu && d.op == Op::kJalr && d.rs1 == hazard_rd_) {
+    ++events_[GAP8_EVT_JR_STALL];
+    stall = true;
+  }
+  if (stall) hazard_ = Hazard::kNone;
+  return stall;
+}
+
+void Core::Raise(FaultKind kind, const std::string& what) const {
+  throw Fault{kind, id_, pc_, current_ ? current_->raw : 0u, what};
+}
+
+void Core::Wake(uint64_t at, uint32_t value) {
+  const uint64_t resume = at + timing::kWakeUp;
+  if (resume > time) {
+    slept += resume - time;
+    time = resume;
+  }
+  if (wake_rd != 0) regs_[wake_rd] = value;
+  asleep = false;
+  wake_rd = 0;
+}
+
+EventTotals Core::Totals() const {
+  EventTotals t{};
+  for (int e = 0; e < GAP8_EVT_COUNT; ++e) t[e] = events_[e];
+  t[GAP8_EVT_CYCLES] = time;
+  t[GAP8_EVT_ACTIVE_CYCLES] = time - slept;
+  return t;
+}
+
+}  // namespace gap8

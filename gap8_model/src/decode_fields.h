@@ -1,0 +1,22 @@
+// Bit-field helpers shared by the 32-bit and compressed decoders.
+#pragma once
+
+#include <cstdint>
+
+namespace gap8 {
+
+// Bits hi..lo of x, right-aligned.
+constexpr uint32_t Bits(uint32_t x, int hi, int lo) {
+  return (x >> lo) & ((hi - lo == 31) ? 0xFFFFFFFFu : ((1u << (hi - lo + 1)) - 1u));
+}
+
+// Sign-extends the low `width` bits of x.
+constexpr int32_t SignExtend(uint32_t x, int width) {
+  const uint32_t m = 1u << (width - 1);
+  x &= (width == 32) ? 0xFFFFFFFFu : ((1u << width) - 1u);
+  return static_cast<int32_t>((x ^ m) - m);
+}
+
+inline uint32_t RegBit(uint32_t reg) { return reg == 0 ? 0u : (1u << reg); }
+
+}  // namespace gap8

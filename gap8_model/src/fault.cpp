@@ -1,0 +1,28 @@
+#include "gap8/fault.h"
+
+#include <cstdio>
+
+namespace gap8 {
+
+std::string Hex(uint32_t value) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%08x", value);
+  return buf;
+}
+
+std::string Fault::Message() const {
+  return "core " + std::to_string(core) + " at pc " + Hex(pc) + " (insn " + Hex(insn) +
+         "): " + what;
+}
+
+const char* FaultKindName(FaultKind kind) {
+  switch (kind) {
+    case FaultKind::kIllegalInstruction: return "illegal instruction";
+    case FaultKind::kMemory: return "memory fault";
+    case FaultKind::kCycleBudget: return "cycle budget exceeded";
+    case FaultKind::kDeadlock: return "deadlock";
+  }
+  return "fault";
+}
+
+}  // namespace gap8

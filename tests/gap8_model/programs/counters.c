@@ -1,0 +1,92 @@
+/* Exact counter values for short instruction blocks: each block runs between the store that
+ * starts the counters and the one that stops them, so INSTR = block + 1 (the stop store) and
+ * CYCLES = 2 (the start store, a peripheral access) + the block's documented cost. */
+#include "pmsis.h"
+
+#define START_STOP_PROLOGUE "li t0, %[start]\n li t1, %[stop]\n sw zero, 0(t0)\n"
+#define STOP "sw zero, 0(t1)\n"
+#define REGS [start] "i"(GAP8_PERF_START), [stop] "i"(GAP8_PERF_STOP)
+
+static uint32_t l1_word PI_L1 = 5;
+static uint32_t l2_word = 7;
+static int failures;
+
+static void expect(const char *block, int event, const char *name, unsigned want) {
+  const unsigned got = pi_perf_read(event);
+  if (got != want) {
+    printf("%s: %s = %u, expected %u\n", block, name, got, want);
+    failures++;
+  }
+}
+
+static void begin(void) {
+  pi_perf_conf(0xFFFFFFFFu);
+  pi_perf_reset();
+}
+
+int main(void) {
+  begin();
+  __asm__ volatile(START_STOP_PROLOGUE
+                   ".option push\n .option norvc\n"
+                   ".rept 10\n addi a0, a0, 1\n .endr\n"
+                   ".option pop\n" STOP ::REGS : "t0", "t1", "a0", "memory");
+  expect("alu", PI_PERF_INSTR, "INSTR", 11);
+  expect("alu", PI_PERF_CYCLES, "CYCLES", 12);
+  expect("alu", PI_PERF_ACTIVE_CYCLES, "ACTIVE", 12);
+  expect("alu", PI_PERF_ST, "ST", 1);
+  expect("alu", PI_PERF_RVC, "RVC", 0);
+
+  begin();
+  __asm__ volatile("mv a2, %[p]\n" START_STOP_PROLOGUE
+                   "lw a1, 0(a2)\n addi a1, a1, 1\n" STOP ::REGS, [p] "r"(&l1_word)
+                   : "t0", "t1", "a1", "a2", "memory");
+  expect("load-use", PI_PERF_CYCLES, "CYCLES", 2 + 1 + 1 + 1);
+  expect("load-use", PI_PERF_LD_STALL, "LD_STALL", 1);
+  expect("load-use", PI_PERF_LD, "LD", 1);
+  expect("load-use", PI_PERF_LD_EXT, "LD_EXT", 0);
+
+  begin();
+  __asm__ volatile("mv a2, %[p]\n" START_STOP_PROLOGUE "lw a1, 0(a2)\n" STOP ::REGS,
+                   [p] "r"(&l2_word)
+                   : "t0", "t1", "a1", "a2", "memory");
+  expect("l2-load", PI_PERF_CYCLES, "CYCLES", 2 + 10);
+  expect("l2-load", PI_PERF_LD_EXT, "LD_EXT", 1);
+  expect("l2-load", PI_PERF_LD_EXT_CYC, "LD_EXT_CYC", 10);
+
+  begin();
+  __asm__ volatile(START_STOP_PROLOGUE
+                   "beq zero, zero, 1f\n 1: bne zero, zero, 2f\n 2: j 3f\n 3:\n" STOP ::REGS
+                   : "t0", "t1", "memory");
+  expect("branches", PI_PERF_CYCLES, "CYCLES", 2 + 3 + 1 + 2);
+  expect("branches", PI_PERF_BRANCH, "BRANCH", 2);
+  expect("branches", PI_PERF_BTAKEN, "BTAKEN", 1);
+  expect("branches", PI_PERF_JUMP, "JUMP", 1);
+
+  begin();
+  __asm__ volatile("li a1, 3\n li a3, 1\n" START_STOP_PROLOGUE
+                   "mul a0, a1, a1\n addi a0, a0, 1\n mulh a0, a1, a1\n div a0, a1, a3\n" STOP ::REGS
+                   : "t0", "t1", "a0", "a1", "a3", "memory");
+  /* mul 1 + use stall 1 + addi 1 + mulh 5 + div by 1: clz(1) + 3 = 34 */
+  expect("mul-div", PI_PERF_CYCLES, "CYCLES", 2 + 1 + 1 + 1 + 5 + 34);
+
+  begin();
+  __asm__ volatile(START_STOP_PROLOGUE "c.addi a0, 1\n c.addi a0, 1\n c.addi a0, 1\n" STOP ::REGS
+                   : "t0", "t1", "a0", "memory");
+  expect("compressed", PI_PERF_RVC, "RVC", 3);
+  expect("compressed", PI_PERF_INSTR, "INSTR", 4);
+
+  /* A disabled event reads 0; a stopped counter keeps its value. */
+  pi_perf_conf(1u << PI_PERF_INSTR);
+  pi_perf_reset();
+  __asm__ volatile(START_STOP_PROLOGUE "mv a2, %[p]\n lw a1, 0(a2)\n" STOP ::REGS, [p] "r"(&l1_word)
+                   : "t0", "t1", "a1", "a2", "memory");
+  expect("mask", PI_PERF_LD, "LD", 0);
+  expect("mask", PI_PERF_INSTR, "INSTR", 3);
+  for (volatile int i = 0; i < 10; ++i) {
+  }
+  expect("stopped", PI_PERF_INSTR, "INSTR", 3);
+
+  if (failures) return 1;
+  printf("counters ok\n");
+  return 0;
+}

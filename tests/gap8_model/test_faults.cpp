@@ -1,0 +1,66 @@
+// Every fault kind ends the run with one message naming core, pc and instruction.
+#include <catch2/catch.hpp>
+
+#include "program_runner.h"
+
+namespace {
+
+gap8::Fault ExpectFault(const std::string& name, RunOptions options, gap8::FaultKind kind) {
+  ProgramRun run = RunProgram(name, options);
+  INFO(run.Describe());
+  REQUIRE(run.result.fault);
+  CHECK(run.result.fault->kind == kind);
+  CHECK_THAT(run.result.fault->Message(),
+             Catch::Matchers::Matches("core [0-7] at pc 0x1c[0-9a-f]{6} \\(insn 0x[0-9a-f]{8}\\): .+"));
+  return *run.result.fault;
+}
+
+}  // namespace
+
+TEST_CASE("illegal instruction") {
+  const gap8::Fault f = ExpectFault("fault_illegal", OnCores(1), gap8::FaultKind::kIllegalInstruction);
+  CHECK(f.insn == 0);
+  CHECK(f.what == "illegal instruction");
+}
+
+TEST_CASE("load from unmapped memory") {
+  const gap8::Fault f = ExpectFault("fault_unmapped", OnCores(2), gap8::FaultKind::kMemory);
+  CHECK(f.what == "load of 4 bytes from unmapped address 0x30000000");
+}
+
+TEST_CASE("runaway program stops at the cycle budget") {
+  RunOptions options = OnCores(1);
+  options.max_cycles = 50'000;
+  const gap8::Fault f = ExpectFault("fault_runaway", options, gap8::FaultKind::kCycleBudget);
+  CHECK(f.what == "cycle budget of 50000 cycles exceeded");
+}
+
+TEST_CASE("barrier that never completes is a deadlock, on 2..8 cores") {
+  for (int cores = 2; cores <= 8; ++cores) {
+    const gap8::Fault f = ExpectFault("fault_deadlock", OnCores(cores), gap8::FaultKind::kDeadlock);
+    CHECK(f.core == 0);
+    CHECK(f.what == "barrier never completes: 1 of " + std::to_string(cores) +
+                        " team cores arrived");
+  }
+}
+
+TEST_CASE("a barrier of a one-core team passes") {
+  ProgramRun run = RunProgram("fault_deadlock", OnCores(1));
+  CHECK(run.ok());
+}
+
+TEST_CASE("waiting for a DMA transfer that was never queued is a deadlock") {
+  const gap8::Fault f = ExpectFault("fault_dma_wait", OnCores(4), gap8::FaultKind::kDeadlock);
+  CHECK(f.what == "waits for DMA transfer 42 that was never queued");
+}
+
+TEST_CASE("a DMA transfer outside L1 is a memory fault at the push") {
+  const gap8::Fault f = ExpectFault("fault_dma_range", OnCores(1), gap8::FaultKind::kMemory);
+  CHECK(f.what.find("outside L1") != std::string::npos);
+}
+
+TEST_CASE("a missing or malformed ELF is an ElfError, not a crash") {
+  gap8::Memory memory;
+  CHECK_THROWS_AS(gap8::LoadElf("/nonexistent.elf", memory), gap8::ElfError);
+  CHECK_THROWS_AS(gap8::LoadElf(GAP8_PROGRAM_DIR, memory), gap8::ElfError);
+}
