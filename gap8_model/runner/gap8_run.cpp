@@ -64,18 +64,23 @@ Options Parse(int argc, char** argv) {
 
 int FaultStatus(gap8::FaultKind kind) {
   switch (kind) {
-    case gap8::FaultKind::kIllegalInstruction: return 3;
-    case gap8::FaultKind::kMemory: return 4;
-    case gap8::FaultKind::kCycleBudget: return 5;
-    case gap8::FaultKind::kDeadlock: return 6;
+    case gap8::FaultKind::kIllegalInstruction:
+      return 3;
+    case gap8::FaultKind::kMemory:
+      return 4;
+    case gap8::FaultKind::kCycleBudget:
+      return 5;
+    case gap8::FaultKind::kDeadlock:
+      return 6;
   }
   return 4;
 }
 
 void PrintCounters(gap8::Cluster& cluster) {
-  static const char* kNames[] = {"active", "instr", "ld_stall", "jr_stall", "imiss", "ld",
-                                 "st", "jump", "branch", "btaken", "rvc", "ld_ext", "st_ext",
-                                 "ld_ext_cyc", "st_ext_cyc", "tcdm_cont"};
+  static const char* kNames[] = {"active", "instr",      "ld_stall",   "jr_stall",
+                                 "imiss",  "ld",         "st",         "jump",
+                                 "branch", "btaken",     "rvc",        "ld_ext",
+                                 "st_ext", "ld_ext_cyc", "st_ext_cyc", "tcdm_cont"};
   std::printf("core %10s", "cycles");
   for (const char* n : kNames) std::printf(" %10s", n);
   std::printf("\n");
@@ -109,7 +114,8 @@ int main(int argc, char** argv) {
   cluster.Start(image.entry);
   const auto t0 = std::chrono::steady_clock::now();
   const gap8::RunResult r = cluster.Run();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::fflush(stdout);
   if (r.fault) {
     std::fprintf(stderr, "gap8-run: %s: %s\n", gap8::FaultKindName(r.fault->kind),

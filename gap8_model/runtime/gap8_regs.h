@@ -21,9 +21,10 @@
 #define GAP8_CTRL_CORE_ID (GAP8_PERIPH_BASE + 0x00Cu)   /* R: id of the reading core */
 
 /* Event unit: team fork and barrier. */
-#define GAP8_EU_TEAM_SIZE (GAP8_PERIPH_BASE + 0x100u) /* W: cores in the next team; R: team */
-#define GAP8_EU_FORK_ARG (GAP8_PERIPH_BASE + 0x104u)  /* W: argument for the next dispatch */
-#define GAP8_EU_FORK_ENTRY (GAP8_PERIPH_BASE + 0x108u) /* W: entry; dispatches to cores 1..team-1 */
+#define GAP8_EU_TEAM_SIZE (GAP8_PERIPH_BASE + 0x100u)  /* W: cores in the next team; R: team */
+#define GAP8_EU_FORK_ARG (GAP8_PERIPH_BASE + 0x104u)   /* W: argument for the next dispatch */
+#define GAP8_EU_FORK_ENTRY (GAP8_PERIPH_BASE + 0x108u) /* W: entry; dispatches to cores 1..team-1 \
+                                                        */
 #define GAP8_EU_WAIT_ENTRY (GAP8_PERIPH_BASE + 0x10Cu) /* R: sleeps until dispatched; the entry */
 #define GAP8_EU_WAIT_ARG (GAP8_PERIPH_BASE + 0x110u)   /* R: the argument of that dispatch */
 #define GAP8_EU_BARRIER (GAP8_PERIPH_BASE + 0x114u)    /* R: sleeps until the whole team arrived */

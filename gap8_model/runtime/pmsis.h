@@ -55,7 +55,9 @@ typedef struct pi_cl_dma_copy_s {
   struct pi_cl_dma_copy_s *next;
 } pi_cl_dma_copy_t;
 typedef pi_cl_dma_copy_t pi_cl_dma_copy_2d_t;
-typedef struct { uint32_t id; } pi_cl_dma_cmd_t;
+typedef struct {
+  uint32_t id;
+} pi_cl_dma_cmd_t;
 
 static inline uint32_t __gap8_dma_push(uint32_t ext, uint32_t loc, uint32_t size, uint32_t dir,
                                        uint32_t stride, uint32_t length) {
@@ -71,8 +73,8 @@ static inline void pi_cl_dma_memcpy(pi_cl_dma_copy_t *copy) {
   copy->id = __gap8_dma_push(copy->ext, copy->loc, copy->size, copy->dir, 0, 0);
 }
 static inline void pi_cl_dma_memcpy_2d(pi_cl_dma_copy_2d_t *copy) {
-  copy->id = __gap8_dma_push(copy->ext, copy->loc, copy->size, copy->dir, copy->stride,
-                             copy->length);
+  copy->id =
+      __gap8_dma_push(copy->ext, copy->loc, copy->size, copy->dir, copy->stride, copy->length);
 }
 static inline void pi_cl_dma_wait(void *copy) {
   __gap8_write(GAP8_DMA_WAIT, ((pi_cl_dma_copy_t *)copy)->id);
@@ -85,7 +87,9 @@ static inline void pi_cl_dma_cmd_2d(uint32_t ext, uint32_t loc, uint32_t size, u
                                     uint32_t length, pi_cl_dma_dir_e dir, pi_cl_dma_cmd_t *cmd) {
   cmd->id = __gap8_dma_push(ext, loc, size, dir, stride, length);
 }
-static inline void pi_cl_dma_cmd_wait(pi_cl_dma_cmd_t *cmd) { __gap8_write(GAP8_DMA_WAIT, cmd->id); }
+static inline void pi_cl_dma_cmd_wait(pi_cl_dma_cmd_t *cmd) {
+  __gap8_write(GAP8_DMA_WAIT, cmd->id);
+}
 
 /* ---- L1 allocation (a bump allocator between the PI_L1 data and the stacks) ---- */
 struct pi_device;

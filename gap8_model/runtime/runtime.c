@@ -95,12 +95,24 @@ int printf(const char *fmt, ...) {
         put_unsigned(v < 0 ? 0u - (uint32_t)v : (uint32_t)v, 10);
         break;
       }
-      case 'u': put_unsigned(va_arg(ap, uint32_t), 10); break;
-      case 'x': put_unsigned(va_arg(ap, uint32_t), 16); break;
-      case 's': gap8_puts(va_arg(ap, const char *)); break;
-      case 'c': gap8_putc((char)va_arg(ap, int)); break;
-      case '%': gap8_putc('%'); break;
-      default: va_end(ap); return -1;
+      case 'u':
+        put_unsigned(va_arg(ap, uint32_t), 10);
+        break;
+      case 'x':
+        put_unsigned(va_arg(ap, uint32_t), 16);
+        break;
+      case 's':
+        gap8_puts(va_arg(ap, const char *));
+        break;
+      case 'c':
+        gap8_putc((char)va_arg(ap, int));
+        break;
+      case '%':
+        gap8_putc('%');
+        break;
+      default:
+        va_end(ap);
+        return -1;
     }
   }
   va_end(ap);

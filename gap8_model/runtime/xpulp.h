@@ -7,11 +7,11 @@
 
 #include <stdint.h>
 
-#define GAP8_XPULP_RR(name, f3, f7)                                                   \
-  static inline uint32_t name(uint32_t a, uint32_t b) {                             \
-    uint32_t r;                                                                     \
+#define GAP8_XPULP_RR(name, f3, f7)                                                            \
+  static inline uint32_t name(uint32_t a, uint32_t b) {                                        \
+    uint32_t r;                                                                                \
     __asm__ volatile(".insn r 0x57, " #f3 ", " #f7 ", %0, %1, %2" : "=r"(r) : "r"(a), "r"(b)); \
-    return r;                                                                       \
+    return r;                                                                                  \
   }
 
 GAP8_XPULP_RR(gap8_pv_add_b, 1, 0x00)
@@ -30,10 +30,10 @@ GAP8_XPULP_RR(gap8_pv_dotusp_b, 1, 0x44)
 GAP8_XPULP_RR(gap8_pv_dotusp_sc_b, 5, 0x44)
 
 /* pv.sdot*: acc + dot product; the accumulator is rd (read and written). */
-#define GAP8_XPULP_ACC(name, f3, f7)                                                  \
-  static inline uint32_t name(uint32_t acc, uint32_t a, uint32_t b) {               \
+#define GAP8_XPULP_ACC(name, f3, f7)                                                             \
+  static inline uint32_t name(uint32_t acc, uint32_t a, uint32_t b) {                            \
     __asm__ volatile(".insn r 0x57, " #f3 ", " #f7 ", %0, %1, %2" : "+r"(acc) : "r"(a), "r"(b)); \
-    return acc;                                                                     \
+    return acc;                                                                                  \
   }
 
 GAP8_XPULP_ACC(gap8_pv_sdotup_b, 1, 0x50)
@@ -47,11 +47,11 @@ static inline uint32_t gap8_pv_abs_b(uint32_t a) {
   return r;
 }
 
-#define GAP8_PULP_ALU(name, f3)                                                       \
-  static inline uint32_t name(uint32_t a, uint32_t b) {                             \
-    uint32_t r;                                                                     \
+#define GAP8_PULP_ALU(name, f3)                                                             \
+  static inline uint32_t name(uint32_t a, uint32_t b) {                                     \
+    uint32_t r;                                                                             \
     __asm__ volatile(".insn r 0x33, " #f3 ", 0x02, %0, %1, %2" : "=r"(r) : "r"(a), "r"(b)); \
-    return r;                                                                       \
+    return r;                                                                               \
   }
 
 GAP8_PULP_ALU(gap8_p_min, 4)
@@ -66,14 +66,14 @@ static inline uint32_t gap8_p_abs(uint32_t a) {
 }
 
 /* Post-increment loads: returns **p and advances *p by one element (p.lbu / p.lw rd, imm(rs1!)). */
-#define GAP8_LOAD_POST(name, type, f3)                                          \
-  static inline uint32_t name(const type** p) {                               \
-    uint32_t r;                                                                \
-    __asm__ volatile(".insn i 0x0B, " #f3 ", %0, %1, %2"                        \
-                     : "=r"(r), "+r"(*p)                                        \
-                     : "i"(sizeof(type))                                        \
-                     : "memory");                                               \
-    return r;                                                                  \
+#define GAP8_LOAD_POST(name, type, f3)                   \
+  static inline uint32_t name(const type** p) {          \
+    uint32_t r;                                          \
+    __asm__ volatile(".insn i 0x0B, " #f3 ", %0, %1, %2" \
+                     : "=r"(r), "+r"(*p)                 \
+                     : "i"(sizeof(type))                 \
+                     : "memory");                        \
+    return r;                                            \
   }
 
 GAP8_LOAD_POST(gap8_p_lbu_post, uint8_t, 4)

@@ -19,7 +19,8 @@ constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
 Cluster::Cluster(ClusterConfig config) : config_(std::move(config)) {
   config_.cores = std::clamp(config_.cores, 1, static_cast<int>(GAP8_MAX_CORES));
   if (!config_.putc) config_.putc = [](char c) { std::fputc(c, stdout); };
-  for (int i = 0; i < config_.cores; ++i) cores_.push_back(std::make_unique<Core>(i, memory_, this));
+  for (int i = 0; i < config_.cores; ++i)
+    cores_.push_back(std::make_unique<Core>(i, memory_, this));
   side_.resize(config_.cores);
 }
 
@@ -178,7 +179,9 @@ void Cluster::ReportDeadlock() {
     case Wait::kDma:
       what = "waits for DMA transfer " + std::to_string(s.wait_dma_id) + " that was never queued";
       break;
-    default: what = "every core is asleep waiting for a dispatch"; break;
+    default:
+      what = "every core is asleep waiting for a dispatch";
+      break;
   }
   throw Fault{FaultKind::kDeadlock, chosen, s.wait_pc, s.wait_insn, what};
 }

@@ -21,14 +21,20 @@ uint32_t Cluster::PeripheralRead(Core& core, uint32_t addr) {
     return static_cast<uint32_t>(core.perf().Read(event, core.Totals()));
   }
   switch (addr) {
-    case GAP8_CTRL_NUM_CORES: return static_cast<uint32_t>(num_cores());
-    case GAP8_CTRL_CORE_ID: return static_cast<uint32_t>(core.id());
-    case GAP8_EU_TEAM_SIZE: return team_size_;
+    case GAP8_CTRL_NUM_CORES:
+      return static_cast<uint32_t>(num_cores());
+    case GAP8_CTRL_CORE_ID:
+      return static_cast<uint32_t>(core.id());
+    case GAP8_EU_TEAM_SIZE:
+      return team_size_;
     case GAP8_EU_WAIT_ENTRY:
     case GAP8_EU_WAIT_ARG:
-    case GAP8_EU_BARRIER: return EventUnitRead(core, addr);
-    case GAP8_DMA_PUSH: return DmaRead(core, addr);
-    default: BadRegister(core, addr);
+    case GAP8_EU_BARRIER:
+      return EventUnitRead(core, addr);
+    case GAP8_DMA_PUSH:
+      return DmaRead(core, addr);
+    default:
+      BadRegister(core, addr);
   }
 }
 
@@ -39,22 +45,28 @@ void Cluster::PeripheralWrite(Core& core, uint32_t addr, uint32_t value) {
       exit_code_ = static_cast<int32_t>(value);
       exit_cycle_ = core.time + timing::kPeriphAccess;
       return;
-    case GAP8_CTRL_PUTC: config_.putc(static_cast<char>(value & 0xFFu)); return;
+    case GAP8_CTRL_PUTC:
+      config_.putc(static_cast<char>(value & 0xFFu));
+      return;
     case GAP8_EU_TEAM_SIZE:
     case GAP8_EU_FORK_ARG:
-    case GAP8_EU_FORK_ENTRY: return EventUnitWrite(core, addr, value);
+    case GAP8_EU_FORK_ENTRY:
+      return EventUnitWrite(core, addr, value);
     case GAP8_DMA_EXT:
     case GAP8_DMA_LOC:
     case GAP8_DMA_SIZE:
     case GAP8_DMA_DIR:
     case GAP8_DMA_STRIDE:
     case GAP8_DMA_LENGTH:
-    case GAP8_DMA_WAIT: return DmaWrite(core, addr, value);
+    case GAP8_DMA_WAIT:
+      return DmaWrite(core, addr, value);
     case GAP8_PERF_CONF:
     case GAP8_PERF_RESET:
     case GAP8_PERF_START:
-    case GAP8_PERF_STOP: return PerfWrite(core, addr, value);
-    default: BadRegister(core, addr);
+    case GAP8_PERF_STOP:
+      return PerfWrite(core, addr, value);
+    default:
+      BadRegister(core, addr);
   }
 }
 
@@ -82,8 +94,8 @@ uint32_t Cluster::EventUnitRead(Core& core, uint32_t addr) {
   // Barrier: the last core of the team to arrive releases the others and goes on.
   const uint32_t bit = 1u << core.id();
   if (static_cast<uint32_t>(core.id()) >= team_size_) {
-    core.Raise(FaultKind::kDeadlock, "barrier on a core outside the team of " +
-                                         std::to_string(team_size_));
+    core.Raise(FaultKind::kDeadlock,
+               "barrier on a core outside the team of " + std::to_string(team_size_));
   }
   barrier_arrived_ |= bit;
   if (static_cast<uint32_t>(std::popcount(barrier_arrived_)) < team_size_) {
@@ -135,12 +147,24 @@ uint32_t Cluster::DmaRead(Core& core, uint32_t) {
 void Cluster::DmaWrite(Core& core, uint32_t addr, uint32_t value) {
   CoreSide& s = side_[core.id()];
   switch (addr) {
-    case GAP8_DMA_EXT: s.dma.ext = value; return;
-    case GAP8_DMA_LOC: s.dma.loc = value; return;
-    case GAP8_DMA_SIZE: s.dma.size = value; return;
-    case GAP8_DMA_DIR: s.dma.dir = value; return;
-    case GAP8_DMA_STRIDE: s.dma.stride = value; return;
-    case GAP8_DMA_LENGTH: s.dma.length = value; return;
+    case GAP8_DMA_EXT:
+      s.dma.ext = value;
+      return;
+    case GAP8_DMA_LOC:
+      s.dma.loc = value;
+      return;
+    case GAP8_DMA_SIZE:
+      s.dma.size = value;
+      return;
+    case GAP8_DMA_DIR:
+      s.dma.dir = value;
+      return;
+    case GAP8_DMA_STRIDE:
+      s.dma.stride = value;
+      return;
+    case GAP8_DMA_LENGTH:
+      s.dma.length = value;
+      return;
     default:  // GAP8_DMA_WAIT
       if (dma_.Done(value)) return;
       s.wait_dma_id = value;

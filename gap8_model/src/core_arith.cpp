@@ -10,10 +10,14 @@ uint32_t Divide(Op op, uint32_t a, uint32_t b) {
   const int32_t sa = static_cast<int32_t>(a), sb = static_cast<int32_t>(b);
   const bool overflow = sa == INT32_MIN && sb == -1;  // RISC-V: quotient = dividend, rem = 0
   switch (op) {
-    case Op::kDiv: return b == 0 ? ~0u : overflow ? a : static_cast<uint32_t>(sa / sb);
-    case Op::kDivu: return b == 0 ? ~0u : a / b;
-    case Op::kRem: return b == 0 ? a : overflow ? 0u : static_cast<uint32_t>(sa % sb);
-    default: return b == 0 ? a : a % b;
+    case Op::kDiv:
+      return b == 0 ? ~0u : overflow ? a : static_cast<uint32_t>(sa / sb);
+    case Op::kDivu:
+      return b == 0 ? ~0u : a / b;
+    case Op::kRem:
+      return b == 0 ? a : overflow ? 0u : static_cast<uint32_t>(sa % sb);
+    default:
+      return b == 0 ? a : a % b;
   }
 }
 
@@ -57,22 +61,53 @@ uint32_t Core::ExecuteXpulp(const Decoded& d) {
   const uint32_t b = d.scalar ? xpulp::SplatByte(regs_[d.rs2]) : regs_[d.rs2];
   uint32_t result;
   switch (d.op) {
-    case Op::kPAbs: result = xpulp::Abs(a); break;
-    case Op::kPMin: result = xpulp::Min(a, b); break;
-    case Op::kPMinu: result = xpulp::Minu(a, b); break;
-    case Op::kPMax: result = xpulp::Max(a, b); break;
-    case Op::kPMaxu: result = xpulp::Maxu(a, b); break;
-    case Op::kPvAddB: result = xpulp::AddB(a, b); break;
-    case Op::kPvSubB: result = xpulp::SubB(a, b); break;
-    case Op::kPvAvguB: result = xpulp::AvguB(a, b); break;
-    case Op::kPvMinuB: result = xpulp::MinuB(a, b); break;
-    case Op::kPvMaxuB: result = xpulp::MaxuB(a, b); break;
-    case Op::kPvAbsB: result = xpulp::AbsB(a); break;
-    case Op::kPvDotupB: result = xpulp::DotupB(a, b); break;
-    case Op::kPvDotuspB: result = xpulp::DotuspB(a, b); break;
-    case Op::kPvSdotupB: result = xpulp::SdotupB(regs_[d.rd], a, b); break;
-    case Op::kPvSdotuspB: result = xpulp::SdotuspB(regs_[d.rd], a, b); break;
-    default: Raise(FaultKind::kIllegalInstruction, "illegal instruction");
+    case Op::kPAbs:
+      result = xpulp::Abs(a);
+      break;
+    case Op::kPMin:
+      result = xpulp::Min(a, b);
+      break;
+    case Op::kPMinu:
+      result = xpulp::Minu(a, b);
+      break;
+    case Op::kPMax:
+      result = xpulp::Max(a, b);
+      break;
+    case Op::kPMaxu:
+      result = xpulp::Maxu(a, b);
+      break;
+    case Op::kPvAddB:
+      result = xpulp::AddB(a, b);
+      break;
+    case Op::kPvSubB:
+      result = xpulp::SubB(a, b);
+      break;
+    case Op::kPvAvguB:
+      result = xpulp::AvguB(a, b);
+      break;
+    case Op::kPvMinuB:
+      result = xpulp::MinuB(a, b);
+      break;
+    case Op::kPvMaxuB:
+      result = xpulp::MaxuB(a, b);
+      break;
+    case Op::kPvAbsB:
+      result = xpulp::AbsB(a);
+      break;
+    case Op::kPvDotupB:
+      result = xpulp::DotupB(a, b);
+      break;
+    case Op::kPvDotuspB:
+      result = xpulp::DotuspB(a, b);
+      break;
+    case Op::kPvSdotupB:
+      result = xpulp::SdotupB(regs_[d.rd], a, b);
+      break;
+    case Op::kPvSdotuspB:
+      result = xpulp::SdotuspB(regs_[d.rd], a, b);
+      break;
+    default:
+      Raise(FaultKind::kIllegalInstruction, "illegal instruction");
   }
   regs_[d.rd] = result;
   regs_[0] = 0;

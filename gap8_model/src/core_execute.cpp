@@ -38,29 +38,75 @@ uint32_t Core::Execute(const Decoded& d) {
   const uint32_t imm = static_cast<uint32_t>(d.imm);
   uint32_t result;
   switch (d.op) {
-    case Op::kLui: result = imm; break;
-    case Op::kAuipc: result = pc_ + imm; break;
-    case Op::kAddi: result = a + imm; break;
-    case Op::kSlti: result = static_cast<int32_t>(a) < d.imm; break;
-    case Op::kSltiu: result = a < imm; break;
-    case Op::kXori: result = a ^ imm; break;
-    case Op::kOri: result = a | imm; break;
-    case Op::kAndi: result = a & imm; break;
-    case Op::kSlli: result = a << (imm & 31); break;
-    case Op::kSrli: result = a >> (imm & 31); break;
-    case Op::kSrai: result = static_cast<uint32_t>(static_cast<int32_t>(a) >> (imm & 31)); break;
-    case Op::kAdd: result = a + b; break;
-    case Op::kSub: result = a - b; break;
-    case Op::kSll: result = a << (b & 31); break;
-    case Op::kSlt: result = static_cast<int32_t>(a) < static_cast<int32_t>(b); break;
-    case Op::kSltu: result = a < b; break;
-    case Op::kXor: result = a ^ b; break;
-    case Op::kSrl: result = a >> (b & 31); break;
-    case Op::kSra: result = static_cast<uint32_t>(static_cast<int32_t>(a) >> (b & 31)); break;
-    case Op::kOr: result = a | b; break;
-    case Op::kAnd: result = a & b; break;
-    case Op::kCsrRead: result = static_cast<uint32_t>(id_); break;  // mhartid: cluster 0
-    case Op::kFence: result = 0; break;
+    case Op::kLui:
+      result = imm;
+      break;
+    case Op::kAuipc:
+      result = pc_ + imm;
+      break;
+    case Op::kAddi:
+      result = a + imm;
+      break;
+    case Op::kSlti:
+      result = static_cast<int32_t>(a) < d.imm;
+      break;
+    case Op::kSltiu:
+      result = a < imm;
+      break;
+    case Op::kXori:
+      result = a ^ imm;
+      break;
+    case Op::kOri:
+      result = a | imm;
+      break;
+    case Op::kAndi:
+      result = a & imm;
+      break;
+    case Op::kSlli:
+      result = a << (imm & 31);
+      break;
+    case Op::kSrli:
+      result = a >> (imm & 31);
+      break;
+    case Op::kSrai:
+      result = static_cast<uint32_t>(static_cast<int32_t>(a) >> (imm & 31));
+      break;
+    case Op::kAdd:
+      result = a + b;
+      break;
+    case Op::kSub:
+      result = a - b;
+      break;
+    case Op::kSll:
+      result = a << (b & 31);
+      break;
+    case Op::kSlt:
+      result = static_cast<int32_t>(a) < static_cast<int32_t>(b);
+      break;
+    case Op::kSltu:
+      result = a < b;
+      break;
+    case Op::kXor:
+      result = a ^ b;
+      break;
+    case Op::kSrl:
+      result = a >> (b & 31);
+      break;
+    case Op::kSra:
+      result = static_cast<uint32_t>(static_cast<int32_t>(a) >> (b & 31));
+      break;
+    case Op::kOr:
+      result = a | b;
+      break;
+    case Op::kAnd:
+      result = a & b;
+      break;
+    case Op::kCsrRead:
+      result = static_cast<uint32_t>(id_);
+      break;  // mhartid: cluster 0
+    case Op::kFence:
+      result = 0;
+      break;
     case Op::kJal:
     case Op::kJalr: {
       ++events_[GAP8_EVT_JUMP];
@@ -70,12 +116,18 @@ uint32_t Core::Execute(const Decoded& d) {
       pc_ = target;
       return timing::kJump;
     }
-    case Op::kBeq: return ExecuteBranch(d, a == b);
-    case Op::kBne: return ExecuteBranch(d, a != b);
-    case Op::kBlt: return ExecuteBranch(d, static_cast<int32_t>(a) < static_cast<int32_t>(b));
-    case Op::kBge: return ExecuteBranch(d, static_cast<int32_t>(a) >= static_cast<int32_t>(b));
-    case Op::kBltu: return ExecuteBranch(d, a < b);
-    case Op::kBgeu: return ExecuteBranch(d, a >= b);
+    case Op::kBeq:
+      return ExecuteBranch(d, a == b);
+    case Op::kBne:
+      return ExecuteBranch(d, a != b);
+    case Op::kBlt:
+      return ExecuteBranch(d, static_cast<int32_t>(a) < static_cast<int32_t>(b));
+    case Op::kBge:
+      return ExecuteBranch(d, static_cast<int32_t>(a) >= static_cast<int32_t>(b));
+    case Op::kBltu:
+      return ExecuteBranch(d, a < b);
+    case Op::kBgeu:
+      return ExecuteBranch(d, a >= b);
     case Op::kLoad:
     case Op::kStore:
     case Op::kLoadPostImm:
@@ -83,7 +135,8 @@ uint32_t Core::Execute(const Decoded& d) {
     case Op::kLoadPostReg:
     case Op::kStorePostImm:
     case Op::kStoreRegReg:
-    case Op::kStorePostReg: return ExecuteMemory(d);
+    case Op::kStorePostReg:
+      return ExecuteMemory(d);
     case Op::kMul:
     case Op::kMulh:
     case Op::kMulhsu:
@@ -91,16 +144,20 @@ uint32_t Core::Execute(const Decoded& d) {
     case Op::kDiv:
     case Op::kDivu:
     case Op::kRem:
-    case Op::kRemu: return ExecuteMulDiv(d);
+    case Op::kRemu:
+      return ExecuteMulDiv(d);
     case Op::kLpStarti:
     case Op::kLpEndi:
     case Op::kLpCount:
     case Op::kLpCounti:
     case Op::kLpSetup:
-    case Op::kLpSetupi: return ExecuteHwLoopSetup(d);
+    case Op::kLpSetupi:
+      return ExecuteHwLoopSetup(d);
     case Op::kIllegal:
-    case Op::kUndecoded: Raise(FaultKind::kIllegalInstruction, "illegal instruction");
-    default: return ExecuteXpulp(d);
+    case Op::kUndecoded:
+      Raise(FaultKind::kIllegalInstruction, "illegal instruction");
+    default:
+      return ExecuteXpulp(d);
   }
   regs_[d.rd] = result;
   regs_[0] = 0;
@@ -112,10 +169,18 @@ uint32_t Core::ExecuteHwLoopSetup(const Decoded& d) {
   const int l = d.loop;
   const uint32_t offset = static_cast<uint32_t>(d.imm) << 1;
   switch (d.op) {
-    case Op::kLpStarti: loop_start_[l] = pc_ + offset; break;
-    case Op::kLpEndi: loop_end_[l] = pc_ + offset; break;
-    case Op::kLpCount: loop_count_[l] = regs_[d.rs1]; break;
-    case Op::kLpCounti: loop_count_[l] = static_cast<uint32_t>(d.imm); break;
+    case Op::kLpStarti:
+      loop_start_[l] = pc_ + offset;
+      break;
+    case Op::kLpEndi:
+      loop_end_[l] = pc_ + offset;
+      break;
+    case Op::kLpCount:
+      loop_count_[l] = regs_[d.rs1];
+      break;
+    case Op::kLpCounti:
+      loop_count_[l] = static_cast<uint32_t>(d.imm);
+      break;
     case Op::kLpSetup:
       loop_count_[l] = regs_[d.rs1];
       loop_start_[l] = pc_ + 4;

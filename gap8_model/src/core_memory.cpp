@@ -11,11 +11,40 @@ namespace {
 
 uint32_t AccessBytes(uint8_t width) { return 1u << (width & 3u); }
 
+// Fixed-size copies, so the compiler emits plain moves instead of a memcpy call.
+uint32_t ReadBytes(const uint8_t* p, uint32_t bytes) {
+  if (bytes == 4) {
+    uint32_t v;
+    std::memcpy(&v, p, 4);
+    return v;
+  }
+  if (bytes == 2) {
+    uint16_t v;
+    std::memcpy(&v, p, 2);
+    return v;
+  }
+  return *p;
+}
+
+void WriteBytes(uint8_t* p, uint32_t value, uint32_t bytes) {
+  if (bytes == 4) {
+    std::memcpy(p, &value, 4);
+  } else if (bytes == 2) {
+    const uint16_t v = static_cast<uint16_t>(value);
+    std::memcpy(p, &v, 2);
+  } else {
+    *p = static_cast<uint8_t>(value);
+  }
+}
+
 uint32_t Extend(uint32_t raw, uint8_t width) {
   switch (width) {
-    case 0: return static_cast<uint32_t>(static_cast<int8_t>(raw));
-    case 1: return static_cast<uint32_t>(static_cast<int16_t>(raw));
-    default: return raw;  // lw, lbu, lhu: the raw bytes, zero-extended
+    case 0:
+      return static_cast<uint32_t>(static_cast<int8_t>(raw));
+    case 1:
+      return static_cast<uint32_t>(static_cast<int16_t>(raw));
+    default:
+      return raw;  // lw, lbu, lhu: the raw bytes, zero-extended
   }
 }
 
@@ -28,10 +57,14 @@ bool IsStore(Op op) {
 uint32_t EffectiveAddress(const Decoded& d, const std::array<uint32_t, 32>& regs) {
   switch (d.op) {
     case Op::kLoad:
-    case Op::kStore: return regs[d.rs1] + static_cast<uint32_t>(d.imm);
-    case Op::kLoadRegReg: return regs[d.rs1] + regs[d.rs2];
-    case Op::kStoreRegReg: return regs[d.rs1] + regs[d.rd];
-    default: return regs[d.rs1];
+    case Op::kStore:
+      return regs[d.rs1] + static_cast<uint32_t>(d.imm);
+    case Op::kLoadRegReg:
+      return regs[d.rs1] + regs[d.rs2];
+    case Op::kStoreRegReg:
+      return regs[d.rs1] + regs[d.rd];
+    default:
+      return regs[d.rs1];
   }
 }
 
@@ -43,10 +76,10 @@ uint32_t Core::Load(const Decoded& d, uint32_t addr, uint32_t* cost) {
   events_[GAP8_EVT_LD] += misaligned ? 2 : 1;
   uint32_t raw = 0;
   if (uint8_t* p = mem_.L1Span(addr, bytes)) {
-    std::memcpy(&raw, p, bytes);
+    raw = ReadBytes(p, bytes);
     *cost = timing::kLoadStore + (misaligned ? timing::kMisaligned : 0);
   } else if (uint8_t* q = mem_.L2Span(addr, bytes)) {
-    std::memcpy(&raw, q, bytes);
+    raw = ReadBytes(q, bytes);
     *cost = timing::kL2Access + (misaligned ? timing::kMisaligned : 0);
     events_[GAP8_EVT_LD_EXT] += misaligned ? 2 : 1;
     events_[GAP8_EVT_LD_EXT_CYC] += *cost;
@@ -54,8 +87,8 @@ uint32_t Core::Load(const Decoded& d, uint32_t addr, uint32_t* cost) {
     *cost = timing::kPeriphAccess;
     raw = cluster_->PeripheralRead(*this, addr);
   } else {
-    Raise(FaultKind::kMemory, "load of " + std::to_string(bytes) + " bytes from unmapped address " +
-                                  Hex(addr));
+    Raise(FaultKind::kMemory,
+          "load of " + std::to_string(bytes) + " bytes from unmapped address " + Hex(addr));
   }
   return Extend(raw, d.width);
 }
@@ -65,11 +98,11 @@ void Core::Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost
   const bool misaligned = (addr & (bytes - 1)) != 0;
   events_[GAP8_EVT_ST] += misaligned ? 2 : 1;
   if (uint8_t* p = mem_.L1Span(addr, bytes)) {
-    std::memcpy(p, &value, bytes);
+    WriteBytes(p, value, bytes);
     mem_.InvalidateCode(addr, bytes);  // L1 may hold code too
     *cost = timing::kLoadStore + (misaligned ? timing::kMisaligned : 0);
   } else if (uint8_t* q = mem_.L2Span(addr, bytes)) {
-    std::memcpy(q, &value, bytes);
+    WriteBytes(q, value, bytes);
     mem_.InvalidateCode(addr, bytes);
     *cost = timing::kL2Access + (misaligned ? timing::kMisaligned : 0);
     events_[GAP8_EVT_ST_EXT] += misaligned ? 2 : 1;
@@ -78,8 +111,8 @@ void Core::Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost
     *cost = timing::kPeriphAccess;
     cluster_->PeripheralWrite(*this, addr, value);
   } else {
-    Raise(FaultKind::kMemory, "store of " + std::to_string(bytes) + " bytes to unmapped address " +
-                                  Hex(addr));
+    Raise(FaultKind::kMemory,
+          "store of " + std::to_string(bytes) + " bytes to unmapped address " + Hex(addr));
   }
 }
 
@@ -120,7 +153,8 @@ int Core::TcdmBank(const Decoded& d) const {
       if (addr - GAP8_L1_BASE >= GAP8_L1_SIZE) return -1;
       return static_cast<int>((addr >> 2) & (GAP8_L1_BANKS - 1));
     }
-    default: return -1;
+    default:
+      return -1;
   }
 }
 

@@ -4,18 +4,12 @@
 
 namespace gap8 {
 
-const Decoded& Core::Fetch() {
-  Decoded* slot = mem_.CodeSlot(pc_);
-  if (!slot) {
-    Fault f{FaultKind::kMemory, id_, pc_, 0, "instruction fetch from unmapped address " + Hex(pc_)};
-    throw f;
-  }
-  if (slot->op == Op::kUndecoded) *slot = Decode(mem_.FetchBits(pc_));
-  return *slot;
+void Core::RaiseFetchFault() const {
+  throw Fault{FaultKind::kMemory, id_, pc_, 0,
+              "instruction fetch from unmapped address " + Hex(pc_)};
 }
 
-bool Core::TakeHazardStall(const Decoded& d) {
-  if (hazard_rd_ == 0 || hazard_ == Hazard::kNone) return false;
+bool Core::TakeHazardStallSlow(const Decoded& d) {
   const bool reads = (d.src_mask >> hazard_rd_) & 1u;
   bool stall = false;
   if (hazard_ == Hazard::kLoad && reads) {

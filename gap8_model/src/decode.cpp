@@ -57,12 +57,18 @@ bool ValidLoadWidth(uint32_t f3) { return f3 <= 2 || f3 == 4 || f3 == 5; }
 // p.l* register-offset forms encode the width in funct7 instead of funct3.
 int LoadWidthFromFunct7(uint32_t f7) {
   switch (f7) {
-    case 0x00: return 0;
-    case 0x08: return 1;
-    case 0x10: return 2;
-    case 0x20: return 4;
-    case 0x28: return 5;
-    default: return -1;
+    case 0x00:
+      return 0;
+    case 0x08:
+      return 1;
+    case 0x10:
+      return 2;
+    case 0x20:
+      return 4;
+    case 0x28:
+      return 5;
+    default:
+      return -1;
   }
 }
 
@@ -73,8 +79,10 @@ Decoded DecodeOpImm(uint32_t w) {
   Op op = kOps[f3];
   if (f3 == 1 && f7 != 0) return Illegal(w);
   if (f3 == 5) {
-    if (f7 == 0x20) op = Op::kSrai;
-    else if (f7 != 0) return Illegal(w);
+    if (f7 == 0x20)
+      op = Op::kSrai;
+    else if (f7 != 0)
+      return Illegal(w);
   }
   int32_t imm = (f3 == 1 || f3 == 5) ? static_cast<int32_t>(Bits(w, 24, 20)) : ImmI(w);
   return WithImm(Base(w, op), imm, false);
@@ -94,8 +102,8 @@ Decoded DecodeOp(uint32_t w) {
     return Base(w, kOps[f3]);
   }
   if (f7 == 0x02) {  // PULPv2 p.abs / p.min / p.max family
-    static constexpr Op kOps[8] = {Op::kPAbs,  Op::kIllegal, Op::kIllegal, Op::kIllegal,
-                                   Op::kPMin,  Op::kPMinu,   Op::kPMax,    Op::kPMaxu};
+    static constexpr Op kOps[8] = {Op::kPAbs, Op::kIllegal, Op::kIllegal, Op::kIllegal,
+                                   Op::kPMin, Op::kPMinu,   Op::kPMax,    Op::kPMaxu};
     if (kOps[f3] == Op::kIllegal || (f3 == 0 && Bits(w, 24, 20) != 0)) return Illegal(w);
     Decoded d = Base(w, kOps[f3]);
     if (f3 == 0) d.src_mask = RegBit(d.rs1);
@@ -155,8 +163,8 @@ Decoded DecodeStore(uint32_t w, bool post) {
 }
 
 Decoded DecodeBranch(uint32_t w) {
-  static constexpr Op kOps[8] = {Op::kBeq,     Op::kBne, Op::kIllegal, Op::kIllegal,
-                                 Op::kBlt,     Op::kBge, Op::kBltu,    Op::kBgeu};
+  static constexpr Op kOps[8] = {Op::kBeq, Op::kBne, Op::kIllegal, Op::kIllegal,
+                                 Op::kBlt, Op::kBge, Op::kBltu,    Op::kBgeu};
   Op op = kOps[Bits(w, 14, 12)];
   if (op == Op::kIllegal) return Illegal(w);
   Decoded d = WithImm(Base(w, op), ImmB(w), true);
@@ -183,29 +191,43 @@ Decoded Decode(uint32_t bits) {
   if (IsCompressed(bits & 0xFFFFu)) return DecodeCompressed(bits & 0xFFFFu);
   const uint32_t w = bits;
   switch (Bits(w, 6, 0)) {
-    case 0x37: return NoSources(Base(w, Op::kLui), static_cast<int32_t>(w & 0xFFFFF000u));
-    case 0x17: return NoSources(Base(w, Op::kAuipc), static_cast<int32_t>(w & 0xFFFFF000u));
-    case 0x6F: return NoSources(Base(w, Op::kJal), ImmJ(w));
+    case 0x37:
+      return NoSources(Base(w, Op::kLui), static_cast<int32_t>(w & 0xFFFFF000u));
+    case 0x17:
+      return NoSources(Base(w, Op::kAuipc), static_cast<int32_t>(w & 0xFFFFF000u));
+    case 0x6F:
+      return NoSources(Base(w, Op::kJal), ImmJ(w));
     case 0x67:
       if (Bits(w, 14, 12) != 0) return Illegal(w);
       return WithImm(Base(w, Op::kJalr), ImmI(w), false);
-    case 0x63: return DecodeBranch(w);
-    case 0x03: return DecodeLoad(w);
-    case 0x0B: return DecodeLoadPost(w);
-    case 0x23: return DecodeStore(w, false);
-    case 0x2B: return DecodeStore(w, true);
-    case 0x13: return DecodeOpImm(w);
-    case 0x33: return DecodeOp(w);
+    case 0x63:
+      return DecodeBranch(w);
+    case 0x03:
+      return DecodeLoad(w);
+    case 0x0B:
+      return DecodeLoadPost(w);
+    case 0x23:
+      return DecodeStore(w, false);
+    case 0x2B:
+      return DecodeStore(w, true);
+    case 0x13:
+      return DecodeOpImm(w);
+    case 0x33:
+      return DecodeOp(w);
     case 0x0F: {
       Decoded d = Base(w, Op::kFence);
       d.rd = 0;
       d.src_mask = 0;
       return d;
     }
-    case 0x73: return DecodeSystem(w);
-    case 0x57: return DecodeXpulpSimd(w);
-    case 0x7B: return DecodeHwLoop(w);
-    default: return Illegal(w);
+    case 0x73:
+      return DecodeSystem(w);
+    case 0x57:
+      return DecodeXpulpSimd(w);
+    case 0x7B:
+      return DecodeHwLoop(w);
+    default:
+      return Illegal(w);
   }
 }
 

@@ -27,17 +27,28 @@ Decoded Illegal(uint32_t w) {
 // funct6 (bits 31:26) of the byte-wise operations the model implements.
 Op SimdOp(uint32_t funct6) {
   switch (funct6) {
-    case 0x00: return Op::kPvAddB;
-    case 0x02: return Op::kPvSubB;
-    case 0x06: return Op::kPvAvguB;
-    case 0x0A: return Op::kPvMinuB;
-    case 0x0E: return Op::kPvMaxuB;
-    case 0x1C: return Op::kPvAbsB;
-    case 0x20: return Op::kPvDotupB;
-    case 0x22: return Op::kPvDotuspB;
-    case 0x28: return Op::kPvSdotupB;
-    case 0x2A: return Op::kPvSdotuspB;
-    default: return Op::kIllegal;
+    case 0x00:
+      return Op::kPvAddB;
+    case 0x02:
+      return Op::kPvSubB;
+    case 0x06:
+      return Op::kPvAvguB;
+    case 0x0A:
+      return Op::kPvMinuB;
+    case 0x0E:
+      return Op::kPvMaxuB;
+    case 0x1C:
+      return Op::kPvAbsB;
+    case 0x20:
+      return Op::kPvDotupB;
+    case 0x22:
+      return Op::kPvDotuspB;
+    case 0x28:
+      return Op::kPvSdotupB;
+    case 0x2A:
+      return Op::kPvSdotuspB;
+    default:
+      return Op::kIllegal;
   }
 }
 
@@ -60,7 +71,7 @@ Decoded DecodeXpulpSimd(uint32_t w) {
 
 Decoded DecodeHwLoop(uint32_t w) {
   if (Bits(w, 11, 8) != 0) return Illegal(w);
-  static constexpr Op kOps[8] = {Op::kLpStarti, Op::kLpEndi,   Op::kLpCount,  Op::kLpCounti,
+  static constexpr Op kOps[8] = {Op::kLpStarti, Op::kLpEndi,   Op::kLpCount, Op::kLpCounti,
                                  Op::kLpSetup,  Op::kLpSetupi, Op::kIllegal, Op::kIllegal};
   const uint32_t f3 = Bits(w, 14, 12);
   if (kOps[f3] == Op::kIllegal) return Illegal(w);

@@ -24,8 +24,8 @@ bool InL2(uint32_t addr, uint64_t size) {
 std::string Dma::Check(const DmaCommand& c) {
   if (c.size == 0) return "DMA transfer of 0 bytes";
   if (c.dir > 1) return "DMA direction " + std::to_string(c.dir) + " is neither 0 nor 1";
-  if (!InL1(c.loc, c.size)) return "DMA L1 range " + Hex(c.loc) + " + " + std::to_string(c.size) +
-                                   " bytes is outside L1";
+  if (!InL1(c.loc, c.size))
+    return "DMA L1 range " + Hex(c.loc) + " + " + std::to_string(c.size) + " bytes is outside L1";
   if (c.length != 0 && c.stride < c.length) return "DMA 2-D stride smaller than the row length";
   // L2 bytes touched: every row but the last is `length` long, rows start `stride` apart.
   const uint64_t rows = Rows(c);
@@ -37,8 +37,8 @@ std::string Dma::Check(const DmaCommand& c) {
 
 uint32_t Dma::Push(const DmaCommand& cmd, uint64_t now) {
   const uint64_t start = std::max(now, busy_until_);
-  uint64_t cost = timing::kDmaSetup + (cmd.size + timing::kDmaBytesPerCycle - 1) /
-                                          timing::kDmaBytesPerCycle;
+  uint64_t cost =
+      timing::kDmaSetup + (cmd.size + timing::kDmaBytesPerCycle - 1) / timing::kDmaBytesPerCycle;
   if (cmd.length != 0) cost += static_cast<uint64_t>(Rows(cmd)) * timing::kDmaRowSetup;
   busy_until_ = start + cost;
   queue_.push_back({cmd, next_id_, busy_until_});

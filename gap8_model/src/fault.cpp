@@ -17,10 +17,14 @@ std::string Fault::Message() const {
 
 const char* FaultKindName(FaultKind kind) {
   switch (kind) {
-    case FaultKind::kIllegalInstruction: return "illegal instruction";
-    case FaultKind::kMemory: return "memory fault";
-    case FaultKind::kCycleBudget: return "cycle budget exceeded";
-    case FaultKind::kDeadlock: return "deadlock";
+    case FaultKind::kIllegalInstruction:
+      return "illegal instruction";
+    case FaultKind::kMemory:
+      return "memory fault";
+    case FaultKind::kCycleBudget:
+      return "cycle budget exceeded";
+    case FaultKind::kDeadlock:
+      return "deadlock";
   }
   return "fault";
 }

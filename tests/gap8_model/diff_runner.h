@@ -26,5 +26,4 @@ Regions WholeMemory();
 // so). The `regions` are compared at the end. Unicorn keeps code it translated: new code must
 // go to addresses it has not run (or to a fresh UnicornCpu).
 DiffOutcome RunDifferential(UnicornCpu& uc, gap8::Memory& memory, uint32_t start, uint32_t end,
-                            const uint32_t (&regs)[32], uint64_t max_steps,
-                            const Regions& regions);
+                            const uint32_t (&regs)[32], uint64_t max_steps, const Regions& regions);

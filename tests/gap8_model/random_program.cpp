@@ -12,9 +12,7 @@ bool IsBase(uint32_t r) { return r == 2 || r == 8 || r == 9; }
 
 bool IsMemory(gap8::Op op) { return op == gap8::Op::kLoad || op == gap8::Op::kStore; }
 
-bool WritesRd(gap8::Op op) {
-  return op != gap8::Op::kStore && op != gap8::Op::kFence;
-}
+bool WritesRd(gap8::Op op) { return op != gap8::Op::kStore && op != gap8::Op::kFence; }
 
 // Straight-line instructions only; control flow is generated with known targets.
 bool Acceptable(const gap8::Decoded& d) {
@@ -44,9 +42,9 @@ enum class Kind { kPlain32, kPlain16, kBranch, kJal, kCj, kCbz, kAuipcJalr };
 
 struct Slot {
   Kind kind;
-  uint32_t bits = 0;   // kPlain*: the encoding; otherwise registers/condition packed below
+  uint32_t bits = 0;  // kPlain*: the encoding; otherwise registers/condition packed below
   uint32_t rs1 = 0, rs2 = 0, rd = 0, cond = 0;
-  int target = 0;      // index of the target slot (== count: the end)
+  int target = 0;  // index of the target slot (== count: the end)
   uint32_t size = 4;
 };
 
@@ -63,8 +61,8 @@ Slot RandomStraight(std::mt19937& rng) {
     const uint32_t bits = compressed ? (rng() & 0xFFFFu) | 0u : RandomWide(rng);
     if (compressed && (bits & 3u) == 3u) continue;
     if (Acceptable(gap8::Decode(bits))) {
-      return Slot{compressed ? Kind::kPlain16 : Kind::kPlain32, bits, 0, 0, 0, 0, 0,
-                  compressed ? 2u : 4u};
+      return Slot{
+          compressed ? Kind::kPlain16 : Kind::kPlain32, bits, 0, 0, 0, 0, 0, compressed ? 2u : 4u};
     }
   }
 }
@@ -115,13 +113,18 @@ void EmitSlot(std::vector<uint8_t>& code, const Slot& s, uint32_t addr, uint32_t
   const uint32_t off = target - addr;
   switch (s.kind) {
     case Kind::kPlain32:
-    case Kind::kPlain16: return Emit(code, s.bits, s.size);
-    case Kind::kBranch: return Emit(code, EncodeBranch(s, off), 4);
-    case Kind::kJal: return Emit(code, EncodeJal(s.rd, off), 4);
-    case Kind::kCj: return Emit(code, EncodeCj(off), 2);
-    case Kind::kCbz: return Emit(code, EncodeCbz(s, off), 2);
+    case Kind::kPlain16:
+      return Emit(code, s.bits, s.size);
+    case Kind::kBranch:
+      return Emit(code, EncodeBranch(s, off), 4);
+    case Kind::kJal:
+      return Emit(code, EncodeJal(s.rd, off), 4);
+    case Kind::kCj:
+      return Emit(code, EncodeCj(off), 2);
+    case Kind::kCbz:
+      return Emit(code, EncodeCbz(s, off), 2);
     case Kind::kAuipcJalr:
-      Emit(code, (s.rd << 7) | 0x17, 4);  // auipc rd, 0
+      Emit(code, (s.rd << 7) | 0x17, 4);                                      // auipc rd, 0
       return Emit(code, (off << 20) | (s.rd << 15) | (s.rd << 7) | 0x67, 4);  // jalr rd, off(rd)
   }
 }

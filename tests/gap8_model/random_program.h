@@ -10,11 +10,11 @@
 #include <vector>
 
 struct RandomProgram {
-  uint32_t start = 0;             // address of the first instruction (in L2)
-  uint32_t end = 0;               // address just past the last one
-  std::vector<uint8_t> code;      // bytes at start
+  uint32_t start = 0;               // address of the first instruction (in L2)
+  uint32_t end = 0;                 // address just past the last one
+  std::vector<uint8_t> code;        // bytes at start
   std::array<uint32_t, 32> regs{};  // initial registers (x0 = 0)
-  std::vector<uint8_t> data;      // initial bytes at kRandomDataBase (in L1)
+  std::vector<uint8_t> data;        // initial bytes at kRandomDataBase (in L1)
 };
 
 inline constexpr uint32_t kRandomDataBase = 0x10000000u;

@@ -8,15 +8,15 @@ using gap8::Decode;
 using gap8::Op;
 
 TEST_CASE("reserved and FPU compressed encodings are illegal") {
-  CHECK(Decode(0x0000).op == Op::kIllegal);  // all zero
+  CHECK(Decode(0x0000).op == Op::kIllegal);              // all zero
   CHECK(Decode(0x0000 | (1u << 2)).op == Op::kIllegal);  // c.addi4spn with zero immediate
-  CHECK(Decode(0x2000).op == Op::kIllegal);  // c.fld
-  CHECK(Decode(0x6000).op == Op::kIllegal);  // c.flw
-  CHECK(Decode(0x4002).op == Op::kIllegal);  // c.lwsp x0
-  CHECK(Decode(0x8002).op == Op::kIllegal);  // c.jr x0
-  CHECK(Decode(0x9002).op == Op::kIllegal);  // c.ebreak: no debugger modelled
+  CHECK(Decode(0x2000).op == Op::kIllegal);              // c.fld
+  CHECK(Decode(0x6000).op == Op::kIllegal);              // c.flw
+  CHECK(Decode(0x4002).op == Op::kIllegal);              // c.lwsp x0
+  CHECK(Decode(0x8002).op == Op::kIllegal);              // c.jr x0
+  CHECK(Decode(0x9002).op == Op::kIllegal);              // c.ebreak: no debugger modelled
   CHECK(Decode(0x1002 | (1u << 7)).op == Op::kIllegal);  // c.slli with shamt[5] on RV32
-  CHECK(Decode(0x9C21).op == Op::kIllegal);  // c.subw (RV64)
+  CHECK(Decode(0x9C21).op == Op::kIllegal);              // c.subw (RV64)
 }
 
 TEST_CASE("compressed instructions expand to their 32-bit operations") {
@@ -68,8 +68,9 @@ TEST_CASE("a fetch outside L1 and L2 is a memory fault naming the pc") {
     FAIL("no fault");
   } catch (const gap8::Fault& f) {
     CHECK(f.kind == gap8::FaultKind::kMemory);
-    CHECK(f.Message() == "core 0 at pc 0x20000000 (insn 0x00000000): instruction fetch from "
-                         "unmapped address 0x20000000");
+    CHECK(f.Message() ==
+          "core 0 at pc 0x20000000 (insn 0x00000000): instruction fetch from "
+          "unmapped address 0x20000000");
   }
 }
 

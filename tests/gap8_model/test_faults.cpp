@@ -10,15 +10,17 @@ gap8::Fault ExpectFault(const std::string& name, RunOptions options, gap8::Fault
   INFO(run.Describe());
   REQUIRE(run.result.fault);
   CHECK(run.result.fault->kind == kind);
-  CHECK_THAT(run.result.fault->Message(),
-             Catch::Matchers::Matches("core [0-7] at pc 0x1c[0-9a-f]{6} \\(insn 0x[0-9a-f]{8}\\): .+"));
+  CHECK_THAT(
+      run.result.fault->Message(),
+      Catch::Matchers::Matches("core [0-7] at pc 0x1c[0-9a-f]{6} \\(insn 0x[0-9a-f]{8}\\): .+"));
   return *run.result.fault;
 }
 
 }  // namespace
 
 TEST_CASE("illegal instruction") {
-  const gap8::Fault f = ExpectFault("fault_illegal", OnCores(1), gap8::FaultKind::kIllegalInstruction);
+  const gap8::Fault f =
+      ExpectFault("fault_illegal", OnCores(1), gap8::FaultKind::kIllegalInstruction);
   CHECK(f.insn == 0);
   CHECK(f.what == "illegal instruction");
 }
@@ -39,8 +41,8 @@ TEST_CASE("barrier that never completes is a deadlock, on 2..8 cores") {
   for (int cores = 2; cores <= 8; ++cores) {
     const gap8::Fault f = ExpectFault("fault_deadlock", OnCores(cores), gap8::FaultKind::kDeadlock);
     CHECK(f.core == 0);
-    CHECK(f.what == "barrier never completes: 1 of " + std::to_string(cores) +
-                        " team cores arrived");
+    CHECK(f.what ==
+          "barrier never completes: 1 of " + std::to_string(cores) + " team cores arrived");
   }
 }
 

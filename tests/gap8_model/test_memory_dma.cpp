@@ -36,8 +36,8 @@ TEST_CASE("DMA transfers complete in order after setup + bytes / 8 cycles, then 
   CHECK_FALSE(dma.Done(a));
   CHECK(dma.CompleteNext(memory) == a);
   CHECK(dma.Done(a));
-  CHECK(dma.NextCompletion() ==
-        100 + gap8::timing::kDmaSetup + 8 + gap8::timing::kDmaSetup + 2 + 2 * gap8::timing::kDmaRowSetup);
+  CHECK(dma.NextCompletion() == 100 + gap8::timing::kDmaSetup + 8 + gap8::timing::kDmaSetup + 2 +
+                                    2 * gap8::timing::kDmaRowSetup);
   CHECK(dma.CompleteNext(memory) == b);
   uint8_t l1[80];
   memory.Read(GAP8_L1_BASE, l1, 80);

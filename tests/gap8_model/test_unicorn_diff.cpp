@@ -2,7 +2,6 @@
 // instruction (pc and x1..x31) and on all of L1 and L2 at the end. Seeds are printed on failure;
 // GAP8_DIFF_SEED=<n> reruns from another seed.
 #include <catch2/catch.hpp>
-
 #include <cstdlib>
 #include <memory>
 #include <random>
@@ -46,7 +45,8 @@ TEST_CASE("random RV32IMC sequences (compressed included) match Unicorn step by 
     std::copy(p.regs.begin(), p.regs.end(), regs);
     const Regions regions = {{kRandomDataBase, kRandomDataSize},
                              {p.start, static_cast<uint32_t>(p.code.size())}};
-    const DiffOutcome out = RunDifferential(*uc, memory, p.start, p.end, regs, 10 * kLength, regions);
+    const DiffOutcome out =
+        RunDifferential(*uc, memory, p.start, p.end, regs, 10 * kLength, regions);
     INFO("seed " << seed << " (GAP8_DIFF_SEED=" << seed << " reproduces it first)");
     REQUIRE(out.difference == "");
     steps += out.steps;

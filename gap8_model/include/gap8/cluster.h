@@ -19,10 +19,10 @@
 namespace gap8 {
 
 struct ClusterConfig {
-  int cores = 8;                            // 1..8
-  bool contention = true;                   // model TCDM bank conflicts
-  uint64_t max_cycles = 4'000'000'000ull;   // a runaway program faults past this
-  std::function<void(char)> putc;           // program output; stdout when empty
+  int cores = 8;                           // 1..8
+  bool contention = true;                  // model TCDM bank conflicts
+  uint64_t max_cycles = 4'000'000'000ull;  // a runaway program faults past this
+  std::function<void(char)> putc;          // program output; stdout when empty
 };
 
 struct RunResult {
@@ -82,7 +82,7 @@ class Cluster {
   Dma dma_;
   uint32_t team_size_ = 1;
   uint32_t fork_arg_ = 0;
-  uint32_t barrier_arrived_ = 0;  // bit per core
+  uint32_t barrier_arrived_ = 0;                    // bit per core
   std::array<int, GAP8_L1_BANKS> bank_priority_{};  // round-robin: core served first next time
   bool schedule_changed_ = false;  // a wake-up or DMA push: the solo loop must yield
   bool exited_ = false;

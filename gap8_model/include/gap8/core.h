@@ -28,10 +28,18 @@ class Core {
   }
 
   // The decoded instruction at pc; throws Fault when pc is outside L1 and L2.
-  const Decoded& Fetch();
+  const Decoded& Fetch() {
+    Decoded* slot = mem_.CodeSlot(pc_);
+    if (!slot) RaiseFetchFault();
+    if (slot->op == Op::kUndecoded) *slot = Decode(mem_.FetchBits(pc_));
+    return *slot;
+  }
   // Before issuing d: true (and the hazard consumed, its counter bumped) when d must wait a
   // cycle for the previous instruction's result (load-use, mul-use, jump-register).
-  bool TakeHazardStall(const Decoded& d);
+  bool TakeHazardStall(const Decoded& d) {
+    if (hazard_rd_ == 0 || hazard_ == Hazard::kNone) return false;
+    return TakeHazardStallSlow(d);
+  }
   // The TCDM bank d will access this cycle, or -1 when d makes no TCDM access.
   int TcdmBank(const Decoded& d) const;
   // Executes d (the instruction at pc) and returns its cost in cycles. Throws Fault.
@@ -40,10 +48,10 @@ class Core {
   uint32_t Step() { return Execute(Fetch()); }
 
   // Scheduling state owned by the Cluster.
-  uint64_t time = 0;        // cycle at which the next instruction may issue
-  uint64_t slept = 0;       // cycles spent asleep (not active)
+  uint64_t time = 0;   // cycle at which the next instruction may issue
+  uint64_t slept = 0;  // cycles spent asleep (not active)
   bool asleep = false;
-  uint8_t wake_rd = 0;      // register receiving the value delivered at wake-up
+  uint8_t wake_rd = 0;  // register receiving the value delivered at wake-up
   // Called by a blocking peripheral access; the access's load sets wake_rd.
   void Sleep() {
     asleep = true;
@@ -64,6 +72,8 @@ class Core {
  private:
   enum class Hazard : uint8_t { kNone, kLoad, kMul, kAlu };
 
+  [[noreturn]] void RaiseFetchFault() const;
+  bool TakeHazardStallSlow(const Decoded& d);
   uint32_t Load(const Decoded& d, uint32_t addr, uint32_t* cost);
   void Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost);
   uint32_t ExecuteMemory(const Decoded& d);

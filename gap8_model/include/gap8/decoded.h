@@ -9,22 +9,76 @@ enum class Op : uint8_t {
   kUndecoded = 0,  // decode-cache slot not filled yet; must stay zero
   kIllegal,
   // RV32I
-  kLui, kAuipc, kJal, kJalr,
-  kBeq, kBne, kBlt, kBge, kBltu, kBgeu,
-  kLoad,  // width in Decoded::width: 0 lb, 1 lh, 2 lw, 4 lbu, 5 lhu (RISC-V funct3)
-  kStore, // width: 0 sb, 1 sh, 2 sw
-  kAddi, kSlti, kSltiu, kXori, kOri, kAndi, kSlli, kSrli, kSrai,
-  kAdd, kSub, kSll, kSlt, kSltu, kXor, kSrl, kSra, kOr, kAnd,
-  kFence, kCsrRead,  // only reads of mhartid (csrrs rd, mhartid, x0) are modelled
+  kLui,
+  kAuipc,
+  kJal,
+  kJalr,
+  kBeq,
+  kBne,
+  kBlt,
+  kBge,
+  kBltu,
+  kBgeu,
+  kLoad,   // width in Decoded::width: 0 lb, 1 lh, 2 lw, 4 lbu, 5 lhu (RISC-V funct3)
+  kStore,  // width: 0 sb, 1 sh, 2 sw
+  kAddi,
+  kSlti,
+  kSltiu,
+  kXori,
+  kOri,
+  kAndi,
+  kSlli,
+  kSrli,
+  kSrai,
+  kAdd,
+  kSub,
+  kSll,
+  kSlt,
+  kSltu,
+  kXor,
+  kSrl,
+  kSra,
+  kOr,
+  kAnd,
+  kFence,
+  kCsrRead,  // only reads of mhartid (csrrs rd, mhartid, x0) are modelled
   // RV32M
-  kMul, kMulh, kMulhsu, kMulhu, kDiv, kDivu, kRem, kRemu,
+  kMul,
+  kMulh,
+  kMulhsu,
+  kMulhu,
+  kDiv,
+  kDivu,
+  kRem,
+  kRemu,
   // Xpulp (PULPv2 encodings as used by GAP8's RI5CY cores)
-  kLoadPostImm, kLoadRegReg, kLoadPostReg,     // p.l* rd, imm(rs1!) / rs2(rs1) / rs2(rs1!)
-  kStorePostImm, kStoreRegReg, kStorePostReg,  // p.s* rs2, imm(rs1!) / rs3(rs1) / rs3(rs1!)
-  kPAbs, kPMin, kPMinu, kPMax, kPMaxu,
-  kPvAddB, kPvSubB, kPvAvguB, kPvMinuB, kPvMaxuB, kPvAbsB,
-  kPvDotupB, kPvDotuspB, kPvSdotupB, kPvSdotuspB,
-  kLpStarti, kLpEndi, kLpCount, kLpCounti, kLpSetup, kLpSetupi,
+  kLoadPostImm,
+  kLoadRegReg,
+  kLoadPostReg,  // p.l* rd, imm(rs1!) / rs2(rs1) / rs2(rs1!)
+  kStorePostImm,
+  kStoreRegReg,
+  kStorePostReg,  // p.s* rs2, imm(rs1!) / rs3(rs1) / rs3(rs1!)
+  kPAbs,
+  kPMin,
+  kPMinu,
+  kPMax,
+  kPMaxu,
+  kPvAddB,
+  kPvSubB,
+  kPvAvguB,
+  kPvMinuB,
+  kPvMaxuB,
+  kPvAbsB,
+  kPvDotupB,
+  kPvDotuspB,
+  kPvSdotupB,
+  kPvSdotuspB,
+  kLpStarti,
+  kLpEndi,
+  kLpCount,
+  kLpCounti,
+  kLpSetup,
+  kLpSetupi,
 };
 
 struct Decoded {

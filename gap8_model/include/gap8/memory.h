@@ -34,7 +34,10 @@ class Memory {
     uint32_t off = pc - GAP8_L2_BASE;
     if (off < GAP8_L2_SIZE) return &l2_code_[off >> 1];
     off = pc - GAP8_L1_BASE;
-    if (off < GAP8_L1_SIZE) return &l1_code_[off >> 1];
+    if (off < GAP8_L1_SIZE) {
+      l1_has_code_ = true;
+      return &l1_code_[off >> 1];
+    }
     return nullptr;
   }
 
@@ -42,7 +45,11 @@ class Memory {
   uint32_t FetchBits(uint32_t pc);
 
   // Forgets decoded instructions overlapping [addr, addr + size): the bytes were rewritten.
-  void InvalidateCode(uint32_t addr, uint32_t size);
+  void InvalidateCode(uint32_t addr, uint32_t size) {
+    // Data stores are frequent and code in L1 is rare: skip L1 until code was decoded there.
+    if (!l1_has_code_ && addr - GAP8_L1_BASE < GAP8_L1_SIZE) return;
+    InvalidateCodeSlow(addr, size);
+  }
 
   // Copies host bytes in (ELF loading, tests); false when the range is not wholly mapped.
   bool Write(uint32_t addr, const void* src, uint32_t size);
@@ -52,7 +59,10 @@ class Memory {
   void Clear();
 
  private:
+  void InvalidateCodeSlow(uint32_t addr, uint32_t size);
+
   std::vector<uint8_t> l1_, l2_;
+  bool l1_has_code_ = false;
   std::vector<Decoded> l1_code_, l2_code_;
 };
 

@@ -29,7 +29,8 @@ int main(void) {
   __asm__ volatile(START_STOP_PROLOGUE
                    ".option push\n .option norvc\n"
                    ".rept 10\n addi a0, a0, 1\n .endr\n"
-                   ".option pop\n" STOP ::REGS : "t0", "t1", "a0", "memory");
+                   ".option pop\n" STOP ::REGS
+                   : "t0", "t1", "a0", "memory");
   expect("alu", PI_PERF_INSTR, "INSTR", 11);
   expect("alu", PI_PERF_CYCLES, "CYCLES", 12);
   expect("alu", PI_PERF_ACTIVE_CYCLES, "ACTIVE", 12);
@@ -38,7 +39,8 @@ int main(void) {
 
   begin();
   __asm__ volatile("mv a2, %[p]\n" START_STOP_PROLOGUE
-                   "lw a1, 0(a2)\n addi a1, a1, 1\n" STOP ::REGS, [p] "r"(&l1_word)
+                   "lw a1, 0(a2)\n addi a1, a1, 1\n" STOP ::REGS,
+                   [p] "r"(&l1_word)
                    : "t0", "t1", "a1", "a2", "memory");
   expect("load-use", PI_PERF_CYCLES, "CYCLES", 2 + 1 + 1 + 1);
   expect("load-use", PI_PERF_LD_STALL, "LD_STALL", 1);
@@ -46,9 +48,9 @@ int main(void) {
   expect("load-use", PI_PERF_LD_EXT, "LD_EXT", 0);
 
   begin();
-  __asm__ volatile("mv a2, %[p]\n" START_STOP_PROLOGUE "lw a1, 0(a2)\n" STOP ::REGS,
-                   [p] "r"(&l2_word)
-                   : "t0", "t1", "a1", "a2", "memory");
+  __asm__ volatile(
+      "mv a2, %[p]\n" START_STOP_PROLOGUE "lw a1, 0(a2)\n" STOP ::REGS, [p] "r"(&l2_word)
+      : "t0", "t1", "a1", "a2", "memory");
   expect("l2-load", PI_PERF_CYCLES, "CYCLES", 2 + 10);
   expect("l2-load", PI_PERF_LD_EXT, "LD_EXT", 1);
   expect("l2-load", PI_PERF_LD_EXT_CYC, "LD_EXT_CYC", 10);
@@ -63,9 +65,10 @@ int main(void) {
   expect("branches", PI_PERF_JUMP, "JUMP", 1);
 
   begin();
-  __asm__ volatile("li a1, 3\n li a3, 1\n" START_STOP_PROLOGUE
-                   "mul a0, a1, a1\n addi a0, a0, 1\n mulh a0, a1, a1\n div a0, a1, a3\n" STOP ::REGS
-                   : "t0", "t1", "a0", "a1", "a3", "memory");
+  __asm__ volatile(
+      "li a1, 3\n li a3, 1\n" START_STOP_PROLOGUE
+      "mul a0, a1, a1\n addi a0, a0, 1\n mulh a0, a1, a1\n div a0, a1, a3\n" STOP ::REGS
+      : "t0", "t1", "a0", "a1", "a3", "memory");
   /* mul 1 + use stall 1 + addi 1 + mulh 5 + div by 1: clz(1) + 3 = 34 */
   expect("mul-div", PI_PERF_CYCLES, "CYCLES", 2 + 1 + 1 + 1 + 5 + 34);
 
@@ -74,6 +77,23 @@ int main(void) {
                    : "t0", "t1", "a0", "memory");
   expect("compressed", PI_PERF_RVC, "RVC", 3);
   expect("compressed", PI_PERF_INSTR, "INSTR", 4);
+
+  /* jr right after the instruction that computed its target: one jump-register stall. */
+  begin();
+  __asm__ volatile(".option push\n .option norelax\n" START_STOP_PROLOGUE
+                   "la t2, 1f\n jr t2\n 1:\n" STOP ".option pop\n" ::REGS
+                   : "t0", "t1", "t2", "memory");
+  expect("jump-register", PI_PERF_JR_STALL, "JR_STALL", 1);
+  expect("jump-register", PI_PERF_JUMP, "JUMP", 1);
+  expect("jump-register", PI_PERF_CYCLES, "CYCLES", 2 + 1 + 1 + 1 + 2);
+
+  /* A misaligned word load is split in two: one more cycle, counted as two loads. */
+  begin();
+  __asm__ volatile("mv a2, %[p]\n" START_STOP_PROLOGUE "lw a1, 1(a2)\n" STOP ::REGS,
+                   [p] "r"(&l1_word)
+                   : "t0", "t1", "a1", "a2", "memory");
+  expect("misaligned", PI_PERF_CYCLES, "CYCLES", 2 + 2);
+  expect("misaligned", PI_PERF_LD, "LD", 2);
 
   /* A disabled event reads 0; a stopped counter keeps its value. */
   pi_perf_conf(1u << PI_PERF_INSTR);

@@ -13,14 +13,22 @@ static int fib(int n) { return n < 2 ? n : fib(n - 1) + fib(n - 2); }
 
 static int classify(int v) {
   switch (v & 7) {
-    case 0: return 11;
-    case 1: return -3;
-    case 2: return v >> 2;
-    case 3: return v * 5;
-    case 4: return 1000 - v;
-    case 5: return v & 0x55;
-    case 6: return -v;
-    default: return 7;
+    case 0:
+      return 11;
+    case 1:
+      return -3;
+    case 2:
+      return v >> 2;
+    case 3:
+      return v * 5;
+    case 4:
+      return 1000 - v;
+    case 5:
+      return v & 0x55;
+    case 6:
+      return -v;
+    default:
+      return 7;
   }
 }
 

@@ -30,8 +30,8 @@ int main(void) {
   l1 = pi_cl_l1_malloc(0, N);
   if (!l1) return 2;
 
-  pi_cl_dma_copy_t copy = {.ext = (uint32_t)src, .loc = (uint32_t)l1, .size = N,
-                           .dir = PI_CL_DMA_DIR_EXT2LOC};
+  pi_cl_dma_copy_t copy = {
+      .ext = (uint32_t)src, .loc = (uint32_t)l1, .size = N, .dir = PI_CL_DMA_DIR_EXT2LOC};
   pi_perf_conf(1u << PI_PERF_CYCLES | 1u << PI_PERF_ACTIVE_CYCLES);
   pi_perf_reset();
   pi_perf_start();
@@ -39,18 +39,22 @@ int main(void) {
   const int early = ((volatile uint8_t *)l1)[N - 1];
   pi_cl_dma_wait(&copy);
   pi_perf_stop();
-  if (early != 0) return 3;  /* asynchronous: the last byte cannot have arrived yet */
+  if (early != 0) return 3; /* asynchronous: the last byte cannot have arrived yet */
   for (int i = 0; i < N; ++i) {
     if (l1[i] != src[i]) return 4;
   }
-  const unsigned cycles = pi_perf_read(PI_PERF_CYCLES), active = pi_perf_read(PI_PERF_ACTIVE_CYCLES);
-  if (cycles < 20 + N / 8) return 5;  /* setup latency + 8 bytes per cycle */
-  if (active >= cycles) return 6;     /* the core slept during the wait */
+  const unsigned cycles = pi_perf_read(PI_PERF_CYCLES),
+                 active = pi_perf_read(PI_PERF_ACTIVE_CYCLES);
+  if (cycles < 20 + N / 8) return 5; /* setup latency + 8 bytes per cycle */
+  if (active >= cycles) return 6;    /* the core slept during the wait */
 
   /* 2-D: a 16 x 8 tile at (5, 3) of the 64-wide image, packed in L1. */
-  pi_cl_dma_copy_2d_t tile = {.ext = (uint32_t)(image + 3 * IMAGE_W + 5), .loc = (uint32_t)l1,
-                              .size = 16 * 8, .dir = PI_CL_DMA_DIR_EXT2LOC,
-                              .stride = IMAGE_W, .length = 16};
+  pi_cl_dma_copy_2d_t tile = {.ext = (uint32_t)(image + 3 * IMAGE_W + 5),
+                              .loc = (uint32_t)l1,
+                              .size = 16 * 8,
+                              .dir = PI_CL_DMA_DIR_EXT2LOC,
+                              .stride = IMAGE_W,
+                              .length = 16};
   pi_cl_dma_memcpy_2d(&tile);
   pi_cl_dma_wait(&tile);
   for (int y = 0; y < 8; ++y) {
@@ -61,8 +65,8 @@ int main(void) {
 
   /* L1 -> L2. */
   for (int i = 0; i < N; ++i) l1[i] = (uint8_t)(255 - i);
-  pi_cl_dma_copy_t out = {.ext = (uint32_t)back, .loc = (uint32_t)l1, .size = N,
-                          .dir = PI_CL_DMA_DIR_LOC2EXT};
+  pi_cl_dma_copy_t out = {
+      .ext = (uint32_t)back, .loc = (uint32_t)l1, .size = N, .dir = PI_CL_DMA_DIR_LOC2EXT};
   pi_cl_dma_memcpy(&out);
   pi_cl_dma_wait(&out);
   for (int i = 0; i < N; ++i) {

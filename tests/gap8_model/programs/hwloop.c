@@ -2,8 +2,8 @@
  * post-increment loads, in their PULPv2 encodings through .insn. */
 #include "pmsis.h"
 
-static const uint8_t data[16] __attribute__((aligned(4))) = {1, 2, 3, 4, 5, 6, 7, 8,
-                                                             9, 10, 11, 12, 13, 14, 15, 16};
+static const uint8_t data[16]
+    __attribute__((aligned(4))) = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
 
 int main(void) {
   /* lp.setupi x0(L=0), count 10, end = pc + 2 * 4 (the second body instruction). */

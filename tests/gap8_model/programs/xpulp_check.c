@@ -7,7 +7,8 @@ static uint32_t lane(uint32_t x, int i) { return (x >> (8 * i)) & 0xFF; }
 
 static uint32_t sad_c(uint32_t a, uint32_t b) {
   uint32_t s = 0;
-  for (int i = 0; i < 4; ++i) s += lane(a, i) > lane(b, i) ? lane(a, i) - lane(b, i) : lane(b, i) - lane(a, i);
+  for (int i = 0; i < 4; ++i)
+    s += lane(a, i) > lane(b, i) ? lane(a, i) - lane(b, i) : lane(b, i) - lane(a, i);
   return s;
 }
 
