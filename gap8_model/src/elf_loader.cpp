@@ -20,12 +20,12 @@ class ElfFile {
     fd_ = open(path.c_str(), O_RDONLY);
     if (fd_ < 0) Fail("cannot open file");
     elf_ = elf_begin(fd_, ELF_C_READ, nullptr);
-    if (!elf_ || elf_kind(elf_) != ELF_K_ELF) Fail("not an ELF file");
+    if (!elf_ || elf_kind(elf_) != ELF_K_ELF) {
+      Close();  // a throwing constructor never runs the destructor
+      Fail("not an ELF file");
+    }
   }
-  ~ElfFile() {
-    if (elf_) elf_end(elf_);
-    if (fd_ >= 0) close(fd_);
-  }
+  ~ElfFile() { Close(); }
   ElfFile(const ElfFile&) = delete;
   ElfFile& operator=(const ElfFile&) = delete;
 
@@ -33,6 +33,13 @@ class ElfFile {
   [[noreturn]] void Fail(const std::string& why) const { throw ElfError(path_ + ": " + why); }
 
  private:
+  void Close() {
+    if (elf_) elf_end(elf_);
+    if (fd_ >= 0) close(fd_);
+    elf_ = nullptr;
+    fd_ = -1;
+  }
+
   std::string path_;
   int fd_ = -1;
   Elf* elf_ = nullptr;
