@@ -97,8 +97,8 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
 
 void Cluster::IssueCycle(uint64_t cycle) {
   std::array<const Decoded*, GAP8_MAX_CORES> insn{};
-  std::array<int, GAP8_MAX_CORES> bank;
-  bank.fill(-1);
+  std::array<uint32_t, GAP8_L1_BANKS> requests{};  // per bank: bit per requesting core
+  uint32_t banks = 0;                              // bit per bank with a request
   for (auto& c : cores_) {
     if (c->asleep || c->time != cycle) continue;
     const Decoded& d = c->Fetch();
@@ -107,26 +107,27 @@ void Cluster::IssueCycle(uint64_t cycle) {
       continue;
     }
     insn[c->id()] = &d;
-    if (config_.contention) bank[c->id()] = c->TcdmBank(d);
-  }
-  const int n = num_cores();
-  for (uint32_t b = 0; b < GAP8_L1_BANKS; ++b) {
-    // Round robin: starting from the bank's priority pointer, the first requester wins.
-    int winner = -1;
-    for (int k = 0; k < n; ++k) {
-      const int id = (bank_priority_[b] + k) % n;
-      if (!insn[id] || bank[id] != static_cast<int>(b)) continue;
-      if (winner < 0) {
-        winner = id;
-        continue;
-      }
-      insn[id] = nullptr;  // loses this cycle: retries next cycle
-      cores_[id]->time += 1;
-      ++cores_[id]->event(GAP8_EVT_TCDM_CONT);
+    const int bank = config_.contention ? c->TcdmBank(d) : -1;
+    if (bank >= 0) {
+      requests[bank] |= 1u << c->id();
+      banks |= 1u << bank;
     }
-    if (winner >= 0) bank_priority_[b] = (winner + 1) % n;
   }
-  for (int id = 0; id < n && !exited_; ++id) {
+  for (; banks != 0; banks &= banks - 1) {
+    const int b = std::countr_zero(banks);
+    // Round robin: the first requester at or after the bank's priority pointer wins.
+    const uint32_t mask = requests[b];
+    const uint32_t from_pointer = mask & ~((1u << bank_priority_[b]) - 1u);
+    const int winner = std::countr_zero(from_pointer ? from_pointer : mask);
+    bank_priority_[b] = (winner + 1) % num_cores();
+    for (uint32_t losers = mask & ~(1u << winner); losers != 0; losers &= losers - 1) {
+      Core& loser = *cores_[std::countr_zero(losers)];
+      insn[loser.id()] = nullptr;  // retries next cycle
+      loser.time += 1;
+      ++loser.event(GAP8_EVT_TCDM_CONT);
+    }
+  }
+  for (int id = 0; id < num_cores() && !exited_; ++id) {
     if (insn[id]) cores_[id]->time += cores_[id]->Execute(*insn[id]);
   }
 }
