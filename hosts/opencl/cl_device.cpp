@@ -54,7 +54,9 @@ std::vector<DeviceEntry> list_devices() {
       e.device = device;
       e.name = device_string(device, CL_DEVICE_NAME);
       e.platform_name = platform_name;
-      e.gpu = (device_value<cl_device_type>(device, CL_DEVICE_TYPE) & CL_DEVICE_TYPE_GPU) != 0;
+      const auto type = device_value<cl_device_type>(device, CL_DEVICE_TYPE);
+      e.gpu = (type & CL_DEVICE_TYPE_GPU) != 0;
+      e.cpu = (type & CL_DEVICE_TYPE_CPU) != 0;
       out.push_back(std::move(e));
     }
   }

@@ -13,7 +13,8 @@ struct DeviceEntry {
   cl_device_id device = nullptr;
   std::string name;           // CL_DEVICE_NAME, e.g. "pthread-skylake-avx512-Intel(R) ..."
   std::string platform_name;  // CL_PLATFORM_NAME, e.g. "Portable Computing Language"
-  bool gpu = false;
+  bool gpu = false;           // CL_DEVICE_TYPE_GPU
+  bool cpu = false;           // CL_DEVICE_TYPE_CPU (PoCL's pthread device)
 };
 
 // Every device of every platform, platforms in driver order. Empty when no platform is

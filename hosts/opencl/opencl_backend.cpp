@@ -35,12 +35,17 @@ OpenclBackend::OpenclBackend(const BackendOptions& options, const OpenclTuning& 
   if (!cl::device_value<cl_bool>(device, CL_DEVICE_ENDIAN_LITTLE))
     throw BackendError("opencl: device '" + device_name() + "' is big-endian (not supported)");
 
+  // PoCL runs a work-group as a loop over its work-items on one core: barriers and local
+  // memory only add work there, while a GPU needs the group's parallelism (docs/opencl.md).
+  if (tuning_.layout == OpenclLayout::kAuto)
+    tuning_.layout = program_->device.cpu ? OpenclLayout::kItemPerPoi : OpenclLayout::kGroupPerPoi;
+
   cl_int err = CL_SUCCESS;
   queue_.reset(
       clCreateCommandQueue(program_->context.get(), device, CL_QUEUE_PROFILING_ENABLE, &err));
   cl::check(err, "clCreateCommandQueue on '" + device_name() + "'");
-  kernel_.reset(clCreateKernel(program_->program.get(), kernel_name(tuning.layout), &err));
-  cl::check(err, std::string("clCreateKernel ") + kernel_name(tuning.layout));
+  kernel_.reset(clCreateKernel(program_->program.get(), kernel_name(tuning_.layout), &err));
+  cl::check(err, std::string("clCreateKernel ") + kernel_name(tuning_.layout));
 
   std::size_t kernel_max = 0;
   cl::check(clGetKernelWorkGroupInfo(kernel_.get(), device, CL_KERNEL_WORK_GROUP_SIZE,

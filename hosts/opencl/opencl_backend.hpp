@@ -12,15 +12,16 @@
 
 namespace pxflow {
 
-// Which kernel of opencl.cl runs. The registry row uses the default; the tests check both and
-// the benchmark compares them.
+// Which kernel of opencl.cl runs. The registry row uses kAuto; the tests check every layout and
+// the benchmark compares them (docs/opencl.md).
 enum class OpenclLayout {
+  kAuto,         // item-per-poi on CPU devices, group-per-poi on GPUs and accelerators
   kGroupPerPoi,  // flow_group_per_poi: a work-group per POI, window in local memory
   kItemPerPoi,   // flow_item_per_poi: a work-item per POI, global memory only
 };
 
 struct OpenclTuning {
-  OpenclLayout layout = OpenclLayout::kGroupPerPoi;
+  OpenclLayout layout = OpenclLayout::kAuto;
   std::size_t group_size = 0;       // work-items per work-group; 0 = chosen for the device
   std::size_t max_chunk_bytes = 0;  // cap on one launch's buffers; 0 = the device's limits
 };
@@ -46,6 +47,7 @@ class OpenclBackend final : public Backend {
   const OpenclTiming& last_timing() const { return timing_; }
   const std::string& device_name() const { return program_->device.name; }
   std::size_t group_size() const { return group_size_; }
+  OpenclLayout layout() const { return tuning_.layout; }  // never kAuto
 
  private:
   struct Limits {

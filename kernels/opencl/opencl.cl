@@ -10,7 +10,7 @@
 //                       are staged in local memory, work-items split the candidates.
 //   flow_item_per_poi:  one work-item per POI, everything from global memory.
 //
-// Floor averaging everywhere: hadd(), never rhadd() (rhadd rounds up, SPEC sec. 7).
+// Floor averaging everywhere: floor_avg(), never rhadd() (rhadd rounds up, SPEC sec. 7).
 
 // Half-pixel step (sx, sy) of direction k (SPEC sec. 3 table); k = 8 is the integer match.
 __constant int kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
@@ -33,13 +33,15 @@ typedef struct {
   int radius;  // S
 } Poi;
 
+inline uchar8 floor_avg(uchar8 a, uchar8 b) { return (a & b) + ((a ^ b) >> (uchar8)(1)); }
+
 inline uint lane_sum(ushort8 v) {
   uint4 s = convert_uint4(v.lo) + convert_uint4(v.hi);
   s.xy += s.zw;
   return s.x + s.y;
 }
 
-inline ushort8 row_sad(uchar8 a, uchar8 b) { return convert_ushort8(abs_diff(a, b)); }
+inline ushort8 row_sad(uchar8 a, uchar8 b) { return convert_ushort8(max(a, b) - min(a, b)); }
 
 // SPEC sec. 3 step 1: 24 absolute differences over the central 4x4 of the block.
 inline uint feature_of(const uchar8 block[8]) {
@@ -61,17 +63,17 @@ inline uint feature_of(const uchar8 block[8]) {
 inline void direction_row(const uchar8 p[3][3], uchar8 value[8]) {
   uchar8 h_right[3], h_left[3];  // h(c, r-1+v) and h(c-1, r-1+v)
   for (int v = 0; v < 3; ++v) {
-    h_right[v] = hadd(p[v][1], p[v][2]);
-    h_left[v] = hadd(p[v][0], p[v][1]);
+    h_right[v] = floor_avg(p[v][1], p[v][2]);
+    h_left[v] = floor_avg(p[v][0], p[v][1]);
   }
   value[0] = h_right[1];
-  value[1] = hadd(h_right[1], h_right[2]);
-  value[2] = hadd(p[1][1], p[2][1]);
-  value[3] = hadd(h_left[1], h_left[2]);
+  value[1] = floor_avg(h_right[1], h_right[2]);
+  value[2] = floor_avg(p[1][1], p[2][1]);
+  value[3] = floor_avg(h_left[1], h_left[2]);
   value[4] = h_left[1];
-  value[5] = hadd(h_left[0], h_left[1]);
-  value[6] = hadd(p[0][1], p[1][1]);
-  value[7] = hadd(h_right[0], h_right[1]);
+  value[5] = floor_avg(h_left[0], h_left[1]);
+  value[6] = floor_avg(p[0][1], p[1][1]);
+  value[7] = floor_avg(h_right[0], h_right[1]);
 }
 
 // The address-space-specific helpers: OpenCL C 1.2 has no generic address space, so the same
@@ -80,7 +82,8 @@ inline void direction_row(const uchar8 p[3][3], uchar8 value[8]) {
   /* 8x8 SAD of the block against the 8x8 of `w` (row stride `stride`). */                     \
   inline uint block_sad_##SPACE(const uchar8 block[8], SPACE const uchar* w, int stride) {     \
     ushort8 acc = row_sad(block[0], vload8(0, w));                                             \
-    for (int r = 1; r < 8; ++r) acc += row_sad(block[r], vload8(0, w + r * stride));           \
+    _Pragma("unroll") for (int r = 1; r < 8; ++r) acc +=                                       \
+        row_sad(block[r], vload8(0, w + r * stride));                                          \
     return lane_sum(acc);                                                                      \
   }                                                                                            \
   /* The eight half-pixel SADs around the match whose top-left pixel P(0, 0) is at `m`. */     \
@@ -147,14 +150,15 @@ inline Poi grid_poi(uint index, int radius, int4 grid_x, int4 grid_y) {
 
 // --- flow_group_per_poi ------------------------------------------------------------------
 
-// Copies the search window of next, rows y-S-1 .. y+S+8 and the same columns, into `win`.
+// Copies the search window of next, rows y-S-1 .. y+S+8 and the same columns, into `win`, one
+// row per async copy: every work-item takes part, and a GPU coalesces each row's reads.
 inline void stage_window(__global const uchar* next, int width, Poi poi, __local uchar* win) {
   const int side = 2 * poi.radius + 10;
-  const int x0 = poi.x - poi.radius - 1, y0 = poi.y - poi.radius - 1;
-  for (int t = get_local_id(0); t < side * side; t += get_local_size(0)) {
-    const int row = t / side, col = t - row * side;
-    win[t] = next[(y0 + row) * width + x0 + col];
-  }
+  __global const uchar* src = next + (poi.y - poi.radius - 1) * width + poi.x - poi.radius - 1;
+  event_t copied = 0;
+  for (int row = 0; row < side; ++row)
+    copied = async_work_group_copy(win + row * side, src + row * width, side, copied);
+  wait_group_events(1, &copied);
 }
 
 // Each work-item keeps the minimum key over the candidates it owns (lid, lid + size, ...).
@@ -181,10 +185,9 @@ __kernel void flow_group_per_poi(__global const uchar* frames, __global uint* re
   const Poi poi = grid_poi(group % pois, radius, grid_x, grid_y);
   __global uint* out = records + (size_t)group * 8;
 
-  stage_window(prev + plane, width, poi, win);
+  stage_window(prev + plane, width, poi, win);  // complete in every work-item on return
   uchar8 block[8];
   for (int r = 0; r < 8; ++r) block[r] = vload8(0, prev + (poi.y + r) * width + poi.x);
-  barrier(CLK_LOCAL_MEM_FENCE);
 
   // The feature test is uniform across the group, so the early exit keeps barriers legal.
   const uint feature = feature_of(block);

@@ -21,7 +21,7 @@ void check_exact(const std::string& profile, const OpenclTuning& tuning, const s
 
 void check_both_layouts(const std::string& profile) {
   require_opencl_device();
-  check_exact(profile, {}, "group-per-poi");
+  check_exact(profile, {OpenclLayout::kGroupPerPoi, 0, 0}, "group-per-poi");
   check_exact(profile, {OpenclLayout::kItemPerPoi, 0, 0}, "item-per-poi");
 }
 
@@ -50,6 +50,13 @@ TEST_CASE("opencl: is bit-exact at any work-group size", "[opencl]") {
     check_exact("px4flow-head", {OpenclLayout::kGroupPerPoi, size, 0},
                 "group-per-poi, asked for " + std::to_string(size));
   check_exact("px4flow-head", {OpenclLayout::kItemPerPoi, 1, 0}, "item-per-poi");
+}
+
+TEST_CASE("opencl: the default layout follows the device type", "[opencl]") {
+  require_opencl_device();
+  OpenclBackend backend({});
+  const bool cpu = cl::choose_device(cl::list_devices(), "").cpu;
+  CHECK(backend.layout() == (cpu ? OpenclLayout::kItemPerPoi : OpenclLayout::kGroupPerPoi));
 }
 
 TEST_CASE("opencl: splits a batch larger than its buffer limit into exact chunks", "[opencl]") {
