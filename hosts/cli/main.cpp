@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
   CLI::App app{"pxflow: the PX4FLOW optical-flow kernel, cross-checked bit for bit across backends"};
   app.set_version_flag("--version", "pxflow 0.1");
   app.require_subcommand(1);
-  std::vector<cli::Command> commands = {cli::add_flow_command(app), cli::add_backends_command(app)};
+  std::vector<cli::Command> commands = {cli::add_flow_command(app), cli::add_check_command(app),
+                                        cli::add_backends_command(app)};
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for (const auto& c : commands) known |= c.app->get_name() == argv[1];

@@ -4,6 +4,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -34,6 +35,16 @@ class Backend {
   // limit it is outside (e.g. a frame too large for the device's local memory). The checker
   // counts such a case "n/a" for this backend.
   virtual std::string unsupported(const Params&) const { return {}; }
+
+  // The duration of the last run() by the backend's own clock (OpenCL event profiling, Vulkan
+  // timestamps, the GAP8 model's cycles), when it has one. The benchmark reports it beside the
+  // host clock and never compares figures of different sources.
+  struct DeviceTime {
+    std::string source;  // e.g. "opencl-events", "vulkan-timestamps", "gap8-model-cycles"
+    double ns = 0;
+    std::optional<double> cycles;  // when the clock counts cycles
+  };
+  virtual std::optional<DeviceTime> last_device_time() const { return std::nullopt; }
 };
 
 // One row of the registry.

@@ -1,0 +1,49 @@
+// pxflow check: every selected backend against ref-original, record by record and flow by bits,
+// in the manner of checkasm: one line per mismatch, the run goes on, a count at the end.
+#pragma once
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "backend.hpp"
+#include "check_corpus.hpp"
+#include "result_json.hpp"
+
+namespace pxflow {
+
+struct CheckOptions {
+  std::vector<std::string> backends;  // empty: every registered backend
+  std::vector<std::string> require;   // skips of these become failures; "all": every selected
+  long fuzz_pairs = 0;                // > 0: a fuzz campaign of that many random pairs instead
+  bool verbose = false;               // dump the 8x8 blocks behind each mismatch
+  int max_lines_per_case = 5;
+  BackendOptions backend_options;
+  CorpusOptions corpus;
+};
+
+struct BackendOutcome {
+  std::string name;
+  std::string state = "passed";  // passed | failed | skipped
+  std::string reason;            // why skipped
+  long passed = 0, failed = 0, not_applicable = 0;  // cases
+  long pairs = 0;
+  double seconds = 0;  // host time inside run()
+  std::vector<std::string> failures;  // the mismatch lines printed
+};
+
+struct CheckReport {
+  std::uint64_t seed = 0;
+  long cases = 0, pairs = 0;
+  std::vector<BackendOutcome> backends;
+  long passed = 0, failed = 0, skipped = 0, not_applicable = 0;
+  bool ok() const { return failed == 0; }
+};
+
+// Runs the check, printing progress lines to `out` as it goes (and a live counter to stderr
+// when stderr is a terminal). Throws InputError for unknown backend names.
+CheckReport run_check(const CheckOptions& o, std::ostream& out);
+
+Json check_json(const CheckReport& r);
+
+}  // namespace pxflow

@@ -1,0 +1,212 @@
+#include "check_corpus.hpp"
+
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "errors.hpp"
+#include "frame_io.hpp"
+#include "frame_ops.hpp"
+#include "grid.hpp"
+#include "kernel.hpp"
+
+namespace pxflow {
+namespace {
+
+OwnedPair owned(std::string name, const Frame& a, const Frame& b) {
+  return {std::move(name), a.width, a.height, a.pixels, b.pixels};
+}
+
+Frame from_mat(const cv::Mat& gray) {
+  Frame f{gray.cols, gray.rows, std::vector<std::uint8_t>(gray.total())};
+  for (int y = 0; y < gray.rows; ++y) std::copy_n(gray.ptr<std::uint8_t>(y), gray.cols, f.pixels.data() + y * gray.cols);
+  return f;
+}
+
+cv::Mat to_mat(const Frame& f) { return cv::Mat(f.height, f.width, CV_8UC1, const_cast<std::uint8_t*>(f.pixels.data())).clone(); }
+
+// The PX4FLOW camera bins its 752x480 sensor 4x4 and reads a 64x64 window from the middle.
+Frame px4flow_camera(const Frame& full) {
+  const int factor = (full.width >= 256 && full.height >= 256) ? 4 : 2;
+  const Frame b = bin(full, factor);
+  return crop(b, (b.width - 64) / 2, (b.height - 64) / 2, 64, 64);
+}
+
+std::vector<std::pair<std::string, std::pair<Frame, Frame>>> real_pairs(const CorpusOptions& o) {
+  std::vector<std::pair<std::string, std::pair<Frame, Frame>>> out;
+  auto path = [&](const char* name) {
+    const std::string p = o.data_dir + "/" + name;
+    if (!std::filesystem::exists(p))
+      throw InputError(p + ": real frame missing (Debian's opencv-doc; bash ci/install-deps.sh installs it)");
+    return p;
+  };
+  for (const char* stem : {"rubberwhale", "basketball"})
+    out.push_back({stem, {load_frame(path((std::string(stem) + "1.png").c_str()), std::nullopt),
+                          load_frame(path((std::string(stem) + "2.png").c_str()), std::nullopt)}});
+  for (auto [video, first] : {std::pair{"vtest.avi", 0}, {"vtest.avi", 120}, {"tree.avi", 0}, {"tree.avi", 30}}) {
+    cv::VideoCapture cap(path(video));
+    cv::Mat frame, gray[2];
+    for (int n = 0; n <= first + 1 && cap.read(frame); ++n)
+      if (n >= first) cv::cvtColor(frame, gray[n - first], cv::COLOR_BGR2GRAY);
+    if (gray[1].empty()) throw InputError(std::string(video) + ": cannot read frames " + std::to_string(first) + ".." + std::to_string(first + 1));
+    out.push_back({std::string(video) + "#" + std::to_string(first), {from_mat(gray[0]), from_mat(gray[1])}});
+  }
+  return out;
+}
+
+struct Motion {
+  const char* name;
+  double tx, ty, angle_deg, scale;
+  double noise_sigma, blur_sigma, gain, offset;
+};
+
+// Known motion applied with OpenCV (bilinear warp), then the camera's ills.
+Frame moved(const Frame& src, const Motion& m, std::uint64_t seed) {
+  const cv::Mat a = to_mat(src);
+  cv::Mat M = cv::getRotationMatrix2D(cv::Point2f(src.width / 2.0f, src.height / 2.0f), m.angle_deg, m.scale);
+  M.at<double>(0, 2) += m.tx;
+  M.at<double>(1, 2) += m.ty;
+  cv::Mat b;
+  cv::warpAffine(a, b, M, a.size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
+  if (m.blur_sigma > 0) cv::GaussianBlur(b, b, cv::Size(0, 0), m.blur_sigma);
+  if (m.gain != 1.0 || m.offset != 0.0) b.convertTo(b, CV_8U, m.gain, m.offset);
+  if (m.noise_sigma > 0) {
+    cv::Mat n(b.size(), CV_16S);
+    cv::RNG rng(seed);
+    rng.fill(n, cv::RNG::NORMAL, 0, m.noise_sigma);
+    cv::Mat wide;
+    b.convertTo(wide, CV_16S);
+    wide += n;
+    wide.convertTo(b, CV_8U);  // saturates
+  }
+  return from_mat(b);
+}
+
+const Motion kMotions[] = {
+    {"translate(+2,-1)", 2, -1, 0, 1, 0, 0, 1, 0},       {"translate(+1.5,+2)", 1.5, 2, 0, 1, 0, 0, 1, 0},
+    {"translate(+0.5,+0.5)", 0.5, 0.5, 0, 1, 0, 0, 1, 0}, {"translate(-0.3,+0.7)", -0.3, 0.7, 0, 1, 0, 0, 1, 0},
+    {"translate(+3.25,-2.75)", 3.25, -2.75, 0, 1, 0, 0, 1, 0}, {"rotate(2deg)", 0, 0, 2, 1, 0, 0, 1, 0},
+    {"rotate(-3deg)", 0, 0, -3, 1, 0, 0, 1, 0},           {"zoom(1.03)", 0, 0, 0, 1.03, 0, 0, 1, 0},
+    {"zoom(0.97)", 0, 0, 0, 0.97, 0, 0, 1, 0},            {"translate+noise", 1.5, -0.5, 0, 1, 4, 0, 1, 0},
+    {"translate+blur", -1, 1.5, 0, 1, 0, 1.0, 1, 0},      {"translate+brighter", 1, 1, 0, 1, 0, 0, 1.1, 12},
+};
+
+// Features exactly at FT - 1, FT and FT + 1 (one bump in a POI's central 4x4), moved by (1, 1).
+OwnedPair feature_threshold_pair(const Params& p) {
+  const int W = p.width, H = p.height;
+  std::vector<std::uint8_t> px(static_cast<std::size_t>(W) * H, 100);
+  const auto pois = poi_grid(p);
+  // An interior pixel of the 4x4 has 4 neighbours there, an edge pixel 3, a corner 2.
+  const int bumps[][3] = {{1, 1, 4}, {1, 0, 3}, {0, 0, 2}};
+  for (std::size_t n = 0; n < pois.size(); ++n) {
+    const auto [cx, cy, neighbours] = bumps[n % 3];
+    const int target = p.feature_threshold + static_cast<int>(n % 5) - 2;  // FT-2 .. FT+2
+    const int bump = std::max(1, target / neighbours);
+    px[(pois[n].y + 2 + cy) * W + pois[n].x + 2 + cx] = static_cast<std::uint8_t>(std::min(255, 100 + bump));
+  }
+  OwnedPair op{"threshold/feature-near-FT", W, H, px, {}};
+  shift_into(px, op.next, W, H, 1, 1, 3);
+  return op;
+}
+
+// A pair and a VT equal to one POI's best SAD, so that POI sits exactly on the threshold.
+std::pair<OwnedPair, int> sad_threshold_pair(const Params& p, std::uint64_t seed) {
+  for (std::uint64_t s = seed;; ++s) {
+    OwnedPair op = random_pair(p.width, p.height, p.search_radius, s);
+    Params loose = p;
+    loose.sad_threshold = 65535;
+    std::vector<PoiRecord> recs(poi_count(p));
+    OpCounts c;
+    reference_flow(RefVariant::kOriginal, op.view(), loose, recs, c);
+    for (const auto& r : recs)
+      if (r.status == kAccepted && r.sad > 0) {
+        op.name = "threshold/sad-at-VT=" + std::to_string(r.sad) + "/seed=" + std::to_string(s);
+        return {std::move(op), r.sad};
+      }
+  }
+}
+
+Params sized(Params p, int w, int h) {
+  p.width = w, p.height = h;
+  return p;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, Params>> check_settings() {
+  auto big = [](int w, int h, int S, int B) {
+    Params p;
+    p.width = w, p.height = h, p.search_radius = S, p.blocks = B;
+    return p;
+  };
+  return {{"px4flow-64", profile("px4flow-64")},
+          {"px4flow-head", profile("px4flow-head")},
+          {"320x240 S=7 B=16", big(320, 240, 7, 16)},
+          {"640x480 S=6 B=32 HF off", [&] { Params p = big(640, 480, 6, 32); p.hist_filter = false; return p; }()}};
+}
+
+CheckCase fuzz_case(const std::string& setting, const Params& p, std::uint64_t first_seed, int count) {
+  CheckCase c{"random", setting, p, {}};
+  for (int n = 0; n < count; ++n) c.pairs.push_back(random_pair(p.width, p.height, p.search_radius, first_seed + n));
+  return c;
+}
+
+std::vector<CheckCase> build_check_corpus(const CorpusOptions& o) {
+  std::vector<CheckCase> cases;
+  const auto settings = check_settings();
+  for (const auto& [setting, p] : settings) {
+    const int w = p.width;
+    const int randoms = w == 64 ? 96 : (w <= 320 ? 12 : 4);
+    cases.push_back(fuzz_case(setting, p, o.seed * 1000003u, randoms));
+    CheckCase hostile{"hostile", setting, p, hostile_pairs(p.width, p.height, p.search_radius)};
+    cases.push_back(std::move(hostile));
+    CheckCase ft{"threshold/feature", setting, p, {feature_threshold_pair(p)}};
+    cases.push_back(std::move(ft));
+    auto [vt_pair, vt] = sad_threshold_pair(p, o.seed);
+    Params pv = p;
+    pv.sad_threshold = vt;
+    CheckCase vtc{"threshold/sad", setting + " VT=" + std::to_string(vt), pv, {}};
+    vtc.pairs.push_back(std::move(vt_pair));
+    cases.push_back(std::move(vtc));
+  }
+  if (!o.real) return cases;
+
+  const auto reals = real_pairs(o);
+  CheckCase binned64{"real/camera-64x64", "px4flow-64", profile("px4flow-64"), {}};
+  CheckCase binned_head{"real/camera-64x64", "px4flow-head", profile("px4flow-head"), {}};
+  for (const auto& [name, fr] : reals) {
+    const Frame a = px4flow_camera(fr.first), b = px4flow_camera(fr.second);
+    binned64.pairs.push_back(owned("real/" + name + "/camera-64x64", a, b));
+    binned_head.pairs.push_back(owned("real/" + name + "/camera-64x64", a, b));
+    // Full size, one case each (frames differ in size): the profile's B and a dense grid.
+    Params dense = sized(profile("px4flow-64"), fr.first.width, fr.first.height);
+    cases.push_back({"real/full-size", "px4flow-64 " + std::to_string(dense.width) + "x" + std::to_string(dense.height),
+                     dense, {owned("real/" + name + "/full", fr.first, fr.second)}});
+    dense.search_radius = 7, dense.blocks = 32;
+    cases.push_back({"real/full-size", "S=7 B=32 " + std::to_string(dense.width) + "x" + std::to_string(dense.height),
+                     dense, {owned("real/" + name + "/full", fr.first, fr.second)}});
+  }
+  cases.push_back(std::move(binned64));
+  cases.push_back(std::move(binned_head));
+
+  // Known motion with OpenCV on the camera-like 64x64 frame and on a 320x240 window.
+  const Frame src = reals.front().second.first;
+  const Frame base64 = px4flow_camera(src), base320 = crop(src, 0, 0, 320, 240);
+  CheckCase s64{"synthetic/64x64", "px4flow-64", profile("px4flow-64"), {}};
+  CheckCase s64h{"synthetic/64x64", "px4flow-head", profile("px4flow-head"), {}};
+  CheckCase s320{"synthetic/320x240", settings[2].first, settings[2].second, {}};
+  std::uint64_t seed = o.seed;
+  for (const Motion& m : kMotions) {
+    s64.pairs.push_back(owned(std::string("synthetic/") + m.name + "/seed=" + std::to_string(seed), base64, moved(base64, m, seed)));
+    s64h.pairs.push_back(s64.pairs.back());
+    s320.pairs.push_back(owned(std::string("synthetic/") + m.name + "/seed=" + std::to_string(seed), base320, moved(base320, m, seed)));
+    ++seed;
+  }
+  cases.push_back(std::move(s64));
+  cases.push_back(std::move(s64h));
+  cases.push_back(std::move(s320));
+  return cases;
+}
+
+}  // namespace pxflow

@@ -1,0 +1,38 @@
+// The corpus `pxflow check` runs every backend on: real frames (opencv-doc images and videos,
+// 64x64 binned like the PX4FLOW camera and at full size), synthetic motion made with OpenCV,
+// seeded random pairs and hostile patterns, at px4flow-64, px4flow-head and larger frames.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "params.hpp"
+#include "synthetic.hpp"
+
+namespace pxflow {
+
+// One batch of pairs sharing parameters: what a backend's run() gets in one call.
+struct CheckCase {
+  std::string name;     // e.g. "real/64x64", "random/px4flow-head"
+  std::string setting;  // the parameter set, e.g. "px4flow-64", "320x240 S=7 B=16"
+  Params params;
+  std::vector<OwnedPair> pairs;  // each pair's name says where it came from (and its seed)
+};
+
+struct CorpusOptions {
+  std::uint64_t seed = 1;
+  std::string data_dir = "/usr/share/doc/opencv-doc/examples/data";
+  bool real = true;  // false: generated inputs only (no files needed)
+};
+
+// The fixed corpus. Throws InputError when a real frame cannot be read (say which file and that
+// ci/install-deps.sh installs opencv-doc).
+std::vector<CheckCase> build_check_corpus(const CorpusOptions& o);
+
+// A fuzz batch: `count` random pairs with seeds first_seed.., at the given parameters.
+CheckCase fuzz_case(const std::string& setting, const Params& p, std::uint64_t first_seed, int count);
+
+// The larger parameter sets the corpus uses beside the two profiles.
+std::vector<std::pair<std::string, Params>> check_settings();
+
+}  // namespace pxflow
