@@ -10,7 +10,7 @@
 //                       are staged in local memory, work-items split the candidates.
 //   flow_item_per_poi:  one work-item per POI, everything from global memory.
 //
-// Floor averaging everywhere: floor_avg(), never rhadd() (rhadd rounds up, SPEC sec. 7).
+// Floor averaging everywhere: hadd(), never rhadd() (rhadd rounds up, SPEC sec. 7).
 
 // Half-pixel step (sx, sy) of direction k (SPEC sec. 3 table); k = 8 is the integer match.
 __constant int kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
@@ -33,25 +33,27 @@ typedef struct {
   int radius;  // S
 } Poi;
 
-inline uchar8 floor_avg(uchar8 a, uchar8 b) { return (a & b) + ((a ^ b) >> (uchar8)(1)); }
-
 inline uint lane_sum(ushort8 v) {
   uint4 s = convert_uint4(v.lo) + convert_uint4(v.hi);
   s.xy += s.zw;
   return s.x + s.y;
 }
 
+// |a - b| per lane. Not abs_diff(): PoCL 3.1 lowers abs_diff on uchar8 to scalar code, and the
+// search ran 7x slower with it (docs/opencl.md); max - min cannot wrap and is plain SIMD.
 inline ushort8 row_sad(uchar8 a, uchar8 b) { return convert_ushort8(max(a, b) - min(a, b)); }
 
 // SPEC sec. 3 step 1: 24 absolute differences over the central 4x4 of the block.
 inline uint feature_of(const uchar8 block[8]) {
   uint sum = 0;
   for (int r = 0; r < 3; ++r) {  // vertical neighbours
-    uchar4 d = abs_diff(block[2 + r].s2345, block[3 + r].s2345);
+    const uchar4 a = block[2 + r].s2345, b = block[3 + r].s2345;
+    const uchar4 d = max(a, b) - min(a, b);
     sum += (uint)d.s0 + d.s1 + d.s2 + d.s3;
   }
   for (int r = 0; r < 4; ++r) {  // horizontal neighbours
-    uchar3 d = abs_diff(block[2 + r].s234, block[2 + r].s345);
+    const uchar3 a = block[2 + r].s234, b = block[2 + r].s345;
+    const uchar3 d = max(a, b) - min(a, b);
     sum += (uint)d.s0 + d.s1 + d.s2;
   }
   return sum;
@@ -63,17 +65,17 @@ inline uint feature_of(const uchar8 block[8]) {
 inline void direction_row(const uchar8 p[3][3], uchar8 value[8]) {
   uchar8 h_right[3], h_left[3];  // h(c, r-1+v) and h(c-1, r-1+v)
   for (int v = 0; v < 3; ++v) {
-    h_right[v] = floor_avg(p[v][1], p[v][2]);
-    h_left[v] = floor_avg(p[v][0], p[v][1]);
+    h_right[v] = hadd(p[v][1], p[v][2]);
+    h_left[v] = hadd(p[v][0], p[v][1]);
   }
   value[0] = h_right[1];
-  value[1] = floor_avg(h_right[1], h_right[2]);
-  value[2] = floor_avg(p[1][1], p[2][1]);
-  value[3] = floor_avg(h_left[1], h_left[2]);
+  value[1] = hadd(h_right[1], h_right[2]);
+  value[2] = hadd(p[1][1], p[2][1]);
+  value[3] = hadd(h_left[1], h_left[2]);
   value[4] = h_left[1];
-  value[5] = floor_avg(h_left[0], h_left[1]);
-  value[6] = floor_avg(p[0][1], p[1][1]);
-  value[7] = floor_avg(h_right[0], h_right[1]);
+  value[5] = hadd(h_left[0], h_left[1]);
+  value[6] = hadd(p[0][1], p[1][1]);
+  value[7] = hadd(h_right[0], h_right[1]);
 }
 
 // The address-space-specific helpers: OpenCL C 1.2 has no generic address space, so the same
