@@ -1,0 +1,108 @@
+#include "command_runner.hpp"
+
+#include "vk_error.hpp"
+
+namespace pxflow::vk {
+
+CommandRunner::CommandRunner(const Context& ctx)
+    : device_(ctx.device()),
+      queue_(ctx.queue()),
+      timestamp_bits_(ctx.timestamp_valid_bits()),
+      timestamp_period_(ctx.properties().limits.timestampPeriod) {
+  try {
+    auto pool = zeroed<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
+    pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pool.queueFamilyIndex = ctx.queue_family();
+    check(vkCreateCommandPool(device_, &pool, nullptr, &pool_), "vkCreateCommandPool");
+    auto alloc =
+        zeroed<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+    alloc.commandPool = pool_;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    check(vkAllocateCommandBuffers(device_, &alloc, &cmd_), "vkAllocateCommandBuffers");
+    auto fence = zeroed<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
+    check(vkCreateFence(device_, &fence, nullptr, &fence_), "vkCreateFence");
+    if (timestamp_bits_ > 0) {
+      auto q = zeroed<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
+      q.queryType = VK_QUERY_TYPE_TIMESTAMP;
+      q.queryCount = 2;
+      check(vkCreateQueryPool(device_, &q, nullptr, &queries_), "vkCreateQueryPool");
+    }
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+CommandRunner::~CommandRunner() { release(); }
+
+void CommandRunner::release() {
+  // A pending command buffer must finish before its pool goes away.
+  if (!broken_.empty()) vkDeviceWaitIdle(device_);
+  if (queries_) vkDestroyQueryPool(device_, queries_, nullptr);
+  if (fence_) vkDestroyFence(device_, fence_, nullptr);
+  if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);  // frees cmd_ too
+  queries_ = VK_NULL_HANDLE;
+  fence_ = VK_NULL_HANDLE;
+  pool_ = VK_NULL_HANDLE;
+}
+
+void CommandRunner::run(const std::function<void(VkCommandBuffer)>& body,
+                        std::chrono::milliseconds timeout) {
+  ensure_usable();
+  record(body);
+  check(vkResetFences(device_, 1, &fence_), "vkResetFences");
+  auto submit = zeroed<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd_;
+  const VkResult r = vkQueueSubmit(queue_, 1, &submit, fence_);
+  if (r == VK_ERROR_DEVICE_LOST) broken_ = "device lost at vkQueueSubmit";
+  check(r, "vkQueueSubmit");
+  wait(timeout);
+  read_timestamps();
+}
+
+void CommandRunner::ensure_usable() const {
+  if (!broken_.empty()) fail("device unusable after an earlier failure: " + broken_);
+}
+
+void CommandRunner::record(const std::function<void(VkCommandBuffer)>& body) {
+  check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
+  auto begin = zeroed<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(cmd_, &begin), "vkBeginCommandBuffer");
+  if (queries_) {
+    vkCmdResetQueryPool(cmd_, queries_, 0, 2);
+    vkCmdWriteTimestamp(cmd_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries_, 0);
+  }
+  body(cmd_);
+  if (queries_) vkCmdWriteTimestamp(cmd_, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries_, 1);
+  check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
+}
+
+void CommandRunner::wait(std::chrono::milliseconds timeout) {
+  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count();
+  const VkResult r = vkWaitForFences(device_, 1, &fence_, VK_TRUE, static_cast<std::uint64_t>(ns));
+  if (r == VK_TIMEOUT) {
+    broken_ = "timed out after " + std::to_string(timeout.count()) + " ms";
+    fail("the kernel did not finish within " + std::to_string(timeout.count()) + " ms");
+  }
+  if (r == VK_ERROR_DEVICE_LOST) broken_ = "device lost";
+  check(r, "vkWaitForFences");
+}
+
+void CommandRunner::read_timestamps() {
+  last_ns_.reset();
+  if (!queries_) return;
+  std::uint64_t stamps[2] = {};
+  check(
+      vkGetQueryPoolResults(device_, queries_, 0, 2, sizeof(stamps), stamps, sizeof(std::uint64_t),
+                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+      "vkGetQueryPoolResults");
+  const std::uint64_t mask =
+      timestamp_bits_ >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << timestamp_bits_) - 1;
+  const std::uint64_t ticks = ((stamps[1] & mask) - (stamps[0] & mask)) & mask;
+  last_ns_ = static_cast<double>(ticks) * static_cast<double>(timestamp_period_);
+}
+
+}  // namespace pxflow::vk

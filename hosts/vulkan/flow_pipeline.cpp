@@ -1,0 +1,127 @@
+#include "flow_pipeline.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "vk_error.hpp"
+
+// Generated at build time from kernels/vulkan/flow.comp (kernels/vulkan/CMakeLists.txt).
+#include "flow_spv.h"
+
+namespace pxflow::vk {
+namespace {
+
+// 64 invocations: a multiple of every common subgroup size, small enough for any device (Vulkan
+// guarantees at least 128 per work-group).
+constexpr std::uint32_t kPreferredLocalSize = 64;
+
+}  // namespace
+
+FlowPipeline::FlowPipeline(const Context& ctx) : device_(ctx.device()) {
+  const auto& limits = ctx.properties().limits;
+  local_size_ = std::min({kPreferredLocalSize, limits.maxComputeWorkGroupSize[0],
+                          limits.maxComputeWorkGroupInvocations});
+  try {
+    create_layouts();
+    create_pipeline();
+    create_descriptor_set();
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+FlowPipeline::~FlowPipeline() { release(); }
+
+void FlowPipeline::release() {
+  if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);  // frees set_ too
+  if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
+  if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
+  if (set_layout_) vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
+  if (shader_) vkDestroyShaderModule(device_, shader_, nullptr);
+  pool_ = VK_NULL_HANDLE;
+  pipeline_ = VK_NULL_HANDLE;
+  layout_ = VK_NULL_HANDLE;
+  set_layout_ = VK_NULL_HANDLE;
+  shader_ = VK_NULL_HANDLE;
+}
+
+void FlowPipeline::create_layouts() {
+  VkDescriptorSetLayoutBinding bindings[2] = {};
+  for (std::uint32_t b = 0; b < 2; ++b) {
+    bindings[b].binding = b;
+    bindings[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[b].descriptorCount = 1;
+    bindings[b].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+  }
+  auto set_info =
+      zeroed<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+  set_info.bindingCount = 2;
+  set_info.pBindings = bindings;
+  check(vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_),
+        "vkCreateDescriptorSetLayout");
+  VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(FlowPushConstants)};
+  auto info = zeroed<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+  info.setLayoutCount = 1;
+  info.pSetLayouts = &set_layout_;
+  info.pushConstantRangeCount = 1;
+  info.pPushConstantRanges = &range;
+  check(vkCreatePipelineLayout(device_, &info, nullptr, &layout_), "vkCreatePipelineLayout");
+}
+
+void FlowPipeline::create_pipeline() {
+  auto module = zeroed<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+  module.codeSize = sizeof(k_flow_spirv);
+  module.pCode = k_flow_spirv;
+  check(vkCreateShaderModule(device_, &module, nullptr, &shader_), "vkCreateShaderModule");
+  VkSpecializationMapEntry entry{0, 0, sizeof(std::uint32_t)};  // constant_id 0 = local_size_x
+  VkSpecializationInfo spec{1, &entry, sizeof(local_size_), &local_size_};
+  auto info = zeroed<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = shader_;
+  info.stage.pName = "main";
+  info.stage.pSpecializationInfo = &spec;
+  info.layout = layout_;
+  check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+        "vkCreateComputePipelines (flow.comp)");
+}
+
+void FlowPipeline::create_descriptor_set() {
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
+  auto pool = zeroed<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+  pool.maxSets = 1;
+  pool.poolSizeCount = 1;
+  pool.pPoolSizes = &size;
+  check(vkCreateDescriptorPool(device_, &pool, nullptr, &pool_), "vkCreateDescriptorPool");
+  auto alloc = zeroed<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+  alloc.descriptorPool = pool_;
+  alloc.descriptorSetCount = 1;
+  alloc.pSetLayouts = &set_layout_;
+  check(vkAllocateDescriptorSets(device_, &alloc, &set_), "vkAllocateDescriptorSets");
+}
+
+void FlowPipeline::bind_buffers(VkBuffer frames, VkBuffer records) {
+  VkDescriptorBufferInfo infos[2] = {{frames, 0, VK_WHOLE_SIZE}, {records, 0, VK_WHOLE_SIZE}};
+  VkWriteDescriptorSet writes[2] = {};
+  for (std::uint32_t b = 0; b < 2; ++b) {
+    writes[b].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    writes[b].dstSet = set_;
+    writes[b].dstBinding = b;
+    writes[b].descriptorCount = 1;
+    writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[b].pBufferInfo = &infos[b];
+  }
+  vkUpdateDescriptorSets(device_, 2, writes, 0, nullptr);
+}
+
+void FlowPipeline::bind(VkCommandBuffer cmd) const {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);
+}
+
+void FlowPipeline::push(VkCommandBuffer cmd, const FlowPushConstants& pc) const {
+  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pc), &pc);
+}
+
+}  // namespace pxflow::vk

@@ -1,0 +1,63 @@
+// The compute pipeline of kernels/vulkan/flow.comp: shader module, descriptor set (frames,
+// records), push constants, and the pipeline itself. Built once per backend object: lavapipe
+// JIT-compiles at vkCreateComputePipelines, which takes a noticeable fraction of a second.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+
+#include "context.hpp"
+
+namespace pxflow::vk {
+
+// Mirrors `Problem` in flow.comp, word for word.
+struct FlowPushConstants {
+  std::uint32_t width;
+  std::uint32_t search_radius;
+  std::uint32_t feature_threshold;
+  std::uint32_t sad_threshold;
+  std::uint32_t grid_x0;
+  std::uint32_t grid_step_x;
+  std::uint32_t grid_nx;
+  std::uint32_t grid_y0;
+  std::uint32_t grid_step_y;
+  std::uint32_t pois_per_pair;
+  std::uint32_t words_per_frame;
+  std::uint32_t first_item;
+  std::uint32_t item_count;
+};
+
+class FlowPipeline {
+ public:
+  explicit FlowPipeline(const Context& ctx);  // throws BackendError
+  ~FlowPipeline();
+  FlowPipeline(const FlowPipeline&) = delete;
+  FlowPipeline& operator=(const FlowPipeline&) = delete;
+
+  // Invocations per work-group (the shader's local_size_x), within the device's limits.
+  std::uint32_t local_size() const { return local_size_; }
+
+  // Points the descriptor set at the buffers; call when they change, never while in use.
+  void bind_buffers(VkBuffer frames, VkBuffer records);
+
+  // Records binding the pipeline and its descriptor set into `cmd`.
+  void bind(VkCommandBuffer cmd) const;
+  void push(VkCommandBuffer cmd, const FlowPushConstants& pc) const;
+
+ private:
+  void create_layouts();
+  void create_pipeline();
+  void create_descriptor_set();
+  void release();
+
+  VkDevice device_;
+  std::uint32_t local_size_ = 64;
+  VkShaderModule shader_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+};
+
+}  // namespace pxflow::vk

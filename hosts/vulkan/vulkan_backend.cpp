@@ -1,0 +1,186 @@
+#include "vulkan_backend.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+
+#include "batch_plan.hpp"
+#include "command_runner.hpp"
+#include "context.hpp"
+#include "flow_pipeline.hpp"
+#include "grid.hpp"
+#include "host_buffer.hpp"
+#include "vk_error.hpp"
+
+namespace pxflow {
+
+// The shader writes each record as 8 little-endian words; copying them out as PoiRecord bytes
+// is exact only on a little-endian host.
+static_assert(std::endian::native == std::endian::little);
+
+namespace {
+
+// The grid of SPEC §2 as the shader needs it: first coordinate, step and count per axis.
+struct AxisGrid {
+  std::uint32_t first = 0;
+  std::uint32_t step = 1;
+  std::uint32_t count = 0;
+};
+
+AxisGrid axis_grid(int side, const Params& p) {
+  const auto coords = grid_axis(side, p);
+  AxisGrid a;
+  a.count = static_cast<std::uint32_t>(coords.size());
+  if (!coords.empty()) a.first = static_cast<std::uint32_t>(coords[0]);
+  if (coords.size() > 1) a.step = static_cast<std::uint32_t>(coords[1] - coords[0]);
+  return a;
+}
+
+vk::FlowPushConstants push_constants(const Params& p, const vk::BatchLayout& layout) {
+  const AxisGrid gx = axis_grid(p.width, p);
+  const AxisGrid gy = axis_grid(p.height, p);
+  vk::FlowPushConstants pc{};
+  pc.width = static_cast<std::uint32_t>(p.width);
+  pc.search_radius = static_cast<std::uint32_t>(p.search_radius);
+  pc.feature_threshold = static_cast<std::uint32_t>(p.feature_threshold);
+  pc.sad_threshold = static_cast<std::uint32_t>(p.sad_threshold);
+  pc.grid_x0 = gx.first;
+  pc.grid_step_x = gx.step;
+  pc.grid_nx = gx.count;
+  pc.grid_y0 = gy.first;
+  pc.grid_step_y = gy.step;
+  pc.pois_per_pair = static_cast<std::uint32_t>(layout.pois_per_pair);
+  pc.words_per_frame = layout.words_per_frame;
+  return pc;
+}
+
+// Copies one frame into the buffer as packed rows (stride = width), zeroing the tail words.
+void pack_frame(const FrameView& f, std::byte* dst, std::uint32_t words) {
+  for (int y = 0; y < f.height; ++y)
+    std::memcpy(dst + std::size_t(y) * f.width, f.row(y), std::size_t(f.width));
+  const std::size_t used = std::size_t(f.width) * f.height;
+  std::memset(dst + used, 0, std::size_t(words) * 4 - used);
+}
+
+// Device writes become visible to the host's reads of the mapped records after the fence.
+void barrier_to_host(VkCommandBuffer cmd) {
+  auto barrier = vk::zeroed<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                       &barrier, 0, nullptr, 0, nullptr);
+}
+
+}  // namespace
+
+VulkanBackend::VulkanBackend(const VulkanConfig& config) : config_(config) {
+  ctx_ = std::make_unique<vk::Context>(vk::ContextOptions{config.device, config.validation});
+  pipeline_ = std::make_unique<vk::FlowPipeline>(*ctx_);
+  runner_ = std::make_unique<vk::CommandRunner>(*ctx_);
+  fail_on_validation_messages();
+}
+
+VulkanBackend::~VulkanBackend() {
+  // A chunk that timed out may still be running and writing into records_: let it finish
+  // before any buffer is freed (lavapipe's buffers are host memory). Then children before the
+  // device they were made from.
+  if (ctx_) vkDeviceWaitIdle(ctx_->device());
+  records_.reset();
+  frames_.reset();
+  runner_.reset();
+  pipeline_.reset();
+  ctx_.reset();
+}
+
+std::string VulkanBackend::device_name() const { return ctx_->properties().deviceName; }
+
+std::vector<std::string> VulkanBackend::validation_messages() const { return ctx_->messages(); }
+
+std::uint64_t VulkanBackend::buffer_limit() const {
+  return std::min<std::uint64_t>(config_.max_buffer_bytes,
+                                 ctx_->properties().limits.maxStorageBufferRange);
+}
+
+std::string VulkanBackend::unsupported(const Params& p) const {
+  const vk::BatchLayout layout = vk::batch_layout(p);
+  if (vk::pairs_per_chunk(layout, {buffer_limit(), config_.max_chunk_work}) > 0) return {};
+  return "a " + std::to_string(p.width) + "x" + std::to_string(p.height) + " frame pair needs " +
+         std::to_string(std::max(layout.pair_bytes, layout.record_bytes_per_pair)) +
+         " bytes in one storage buffer; the Vulkan device allows " + std::to_string(buffer_limit());
+}
+
+void VulkanBackend::run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+                        OpCounts&) {
+  last_device_seconds_.reset();
+  last_chunks_ = 0;
+  last_dispatches_ = 0;
+  runner_->ensure_usable();
+  if (const std::string why = unsupported(p); !why.empty()) vk::fail(why);
+  const vk::BatchLayout layout = vk::batch_layout(p);
+  const std::size_t per_chunk =
+      vk::pairs_per_chunk(layout, {buffer_limit(), config_.max_chunk_work});
+  double device_ns = 0;
+  bool timed = true;
+  for (std::size_t start = 0; start < pairs.size(); start += per_chunk) {
+    const std::size_t n = std::min(per_chunk, pairs.size() - start);
+    run_chunk(pairs.subspan(start, n), p,
+              out.subspan(start * layout.pois_per_pair, n * layout.pois_per_pair));
+    const auto ns = runner_->last_device_ns();
+    timed = timed && ns.has_value();
+    if (ns) device_ns += *ns;
+    ++last_chunks_;
+  }
+  fail_on_validation_messages();
+  if (timed && last_chunks_ > 0) last_device_seconds_ = device_ns * 1e-9;
+}
+
+void VulkanBackend::ensure_buffers(std::uint64_t frame_bytes, std::uint64_t record_bytes) {
+  if (frames_ && records_ && frames_->size() >= frame_bytes && records_->size() >= record_bytes)
+    return;
+  records_.reset();
+  frames_.reset();
+  frames_ = std::make_unique<vk::HostBuffer>(*ctx_, frame_bytes);
+  records_ = std::make_unique<vk::HostBuffer>(*ctx_, record_bytes);
+  pipeline_->bind_buffers(frames_->buffer(), records_->buffer());
+}
+
+void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
+                              std::span<PoiRecord> out) {
+  const vk::BatchLayout layout = vk::batch_layout(p);
+  ensure_buffers(pairs.size() * layout.pair_bytes, out.size_bytes());
+  for (std::size_t n = 0; n < pairs.size(); ++n) {
+    std::byte* prev = frames_->data() + n * layout.pair_bytes;
+    pack_frame(pairs[n].prev, prev, layout.words_per_frame);
+    pack_frame(pairs[n].next, prev + layout.pair_bytes / 2, layout.words_per_frame);
+  }
+  const std::uint32_t local = pipeline_->local_size();
+  const std::uint32_t max_groups = config_.max_groups_per_dispatch
+                                       ? config_.max_groups_per_dispatch
+                                       : ctx_->properties().limits.maxComputeWorkGroupCount[0];
+  const std::uint64_t items = out.size();
+  const std::uint64_t per_dispatch = std::uint64_t(max_groups) * local;
+  vk::FlowPushConstants pc = push_constants(p, layout);
+  runner_->run(
+      [&](VkCommandBuffer cmd) {
+        pipeline_->bind(cmd);
+        for (std::uint64_t first = 0; first < items; first += per_dispatch) {
+          pc.first_item = static_cast<std::uint32_t>(first);
+          pc.item_count = static_cast<std::uint32_t>(std::min(per_dispatch, items - first));
+          pipeline_->push(cmd, pc);
+          vkCmdDispatch(cmd, (pc.item_count + local - 1) / local, 1, 1);
+          ++last_dispatches_;
+        }
+        barrier_to_host(cmd);
+      },
+      config_.fence_timeout);
+  std::memcpy(out.data(), records_->data(), out.size_bytes());
+}
+
+void VulkanBackend::fail_on_validation_messages() const {
+  const auto messages = ctx_->messages();
+  if (!messages.empty())
+    vk::fail("validation layer reported " + std::to_string(messages.size()) +
+             " message(s), first: " + messages.front());
+}
+
+}  // namespace pxflow

@@ -1,0 +1,70 @@
+// The `vulkan` backend: kernels/vulkan/flow.comp on a Vulkan device (lavapipe here). The class
+// is public so that tests and the benchmark can reach what the Backend interface does not
+// offer: validation, chunk limits, the device time of the last run.
+#pragma once
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "backend.hpp"
+
+namespace pxflow {
+
+namespace vk {
+class Context;
+class FlowPipeline;
+class CommandRunner;
+class HostBuffer;
+}  // namespace vk
+
+struct VulkanConfig {
+  std::string device;       // index or name substring (BackendOptions::device); empty = preferred
+  bool validation = false;  // Khronos validation layer on; any message fails the run
+  std::chrono::milliseconds fence_timeout{60000};  // per chunk
+  // Upper bound of each storage buffer, below the device's maxStorageBufferRange.
+  std::uint64_t max_buffer_bytes = 64ull << 20;
+  // Integer-search pixel differences per chunk: keeps each submission well under a second on
+  // lavapipe and under GPU watchdogs.
+  std::uint64_t max_chunk_work = 1ull << 31;
+  std::uint32_t max_groups_per_dispatch = 0;  // 0 = the device's maxComputeWorkGroupCount[0]
+};
+
+class VulkanBackend final : public Backend {
+ public:
+  explicit VulkanBackend(const VulkanConfig& config);  // throws BackendError
+  ~VulkanBackend() override;
+
+  void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+           OpCounts& counts) override;
+  std::string unsupported(const Params& p) const override;
+
+  // Device time of the last run(), summed over its chunks (timestamp queries), in seconds;
+  // empty when the queue has no timestamps or no run completed.
+  std::optional<double> last_device_seconds() const { return last_device_seconds_; }
+  // Chunks (submissions) and dispatches the last run() used.
+  std::size_t last_chunks() const { return last_chunks_; }
+  std::size_t last_dispatches() const { return last_dispatches_; }
+  std::string device_name() const;
+  // Validation-layer messages so far (only with config.validation or PXFLOW_VULKAN_VALIDATION).
+  std::vector<std::string> validation_messages() const;
+
+ private:
+  std::uint64_t buffer_limit() const;
+  void ensure_buffers(std::uint64_t frame_bytes, std::uint64_t record_bytes);
+  void run_chunk(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out);
+  void fail_on_validation_messages() const;
+
+  VulkanConfig config_;
+  std::unique_ptr<vk::Context> ctx_;
+  std::unique_ptr<vk::FlowPipeline> pipeline_;
+  std::unique_ptr<vk::CommandRunner> runner_;
+  std::unique_ptr<vk::HostBuffer> frames_;
+  std::unique_ptr<vk::HostBuffer> records_;
+  std::optional<double> last_device_seconds_;
+  std::size_t last_chunks_ = 0;
+  std::size_t last_dispatches_ = 0;
+};
+
+}  // namespace pxflow

@@ -1,0 +1,44 @@
+// The `vulkan` registry row.
+#include <vulkan/vulkan.h>
+
+#include "backend_rows.hpp"
+#include "context.hpp"
+#include "errors.hpp"
+#include "vulkan_backend.hpp"
+
+namespace pxflow {
+namespace {
+
+// Empty when a Vulkan device that can run the kernel is present. Only the instance and the
+// device list are consulted: building the pipeline (which lavapipe JIT-compiles) is left to
+// create(), whose BackendError carries the reason if it fails.
+std::string probe_vulkan() {
+  try {
+    const vk::Context ctx({});
+    return {};
+  } catch (const BackendError& e) {
+    std::string why = e.what();
+    const std::string prefix = "vulkan: ";
+    return why.rfind(prefix, 0) == 0 ? why.substr(prefix.size()) : why;
+  }
+}
+
+}  // namespace
+
+std::vector<BackendRow> vulkan_rows() {
+  BackendRow row;
+  row.name = "vulkan";
+  row.needs = "a Vulkan 1.2 device with a compute queue (lavapipe: mesa-vulkan-drivers)";
+  row.probe = [] {
+    static const std::string reason = probe_vulkan();  // the device list does not change
+    return reason;
+  };
+  row.create = [](const BackendOptions& options) -> std::unique_ptr<Backend> {
+    VulkanConfig config;
+    config.device = options.device;
+    return std::make_unique<VulkanBackend>(config);
+  };
+  return {row};
+}
+
+}  // namespace pxflow

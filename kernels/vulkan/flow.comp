@@ -1,0 +1,196 @@
+// pxflow kernel (SPEC §3) as a Vulkan compute shader: one invocation per point of interest.
+//
+// Why one invocation per POI: the per-POI work (feature, (2S+1)^2 candidate SADs, eight
+// half-pixel SADs) is independent, so no shared memory, no barriers and no reduction are needed,
+// and the raster-order tie rule is just the sequential loop of the reference. On lavapipe the
+// invocations of a work-group become the SIMD lanes of the JIT-compiled loop; on a GPU a batch of
+// frame pairs supplies the parallelism (4096 pairs x 64 POIs = 262,144 invocations).
+//
+// No 8-bit storage or shaderInt8: a frame is a uint[] holding 4 pixels per word (pixel n in byte
+// n & 3 of word n >> 2, little-endian), and every value is handled as 4 packed bytes, like the
+// firmware's USAD8 / UHADD8 (SPEC §7).
+#version 450
+
+layout(local_size_x_id = 0) in;  // set by the host from the device's work-group limits
+
+// Frame pairs of the current chunk: pair p's prev starts at word 2*p*words_per_frame, its next
+// right after. Each frame carries one spare word at its end so that the 4-byte funnel read of the
+// last pixels never leaves the frame.
+layout(std430, set = 0, binding = 0) readonly buffer Frames { uint frame_words[]; };
+
+// One 32-byte record (reference/record.hpp) = 8 little-endian words per POI, pair after pair.
+layout(std430, set = 0, binding = 1) writeonly buffer Records { uint record_words[]; };
+
+layout(push_constant) uniform Problem {
+  uint width;              // W = row stride in pixels
+  uint search_radius;      // S
+  uint feature_threshold;  // FT
+  uint sad_threshold;      // VT
+  uint grid_x0;            // first POI column, column step, POIs per grid row (SPEC §2)
+  uint grid_step_x;
+  uint grid_nx;
+  uint grid_y0;            // first POI row, row step
+  uint grid_step_y;
+  uint pois_per_pair;
+  uint words_per_frame;
+  uint first_item;  // this dispatch's first POI, counted over the chunk (pair-major)
+  uint item_count;  // POIs in this dispatch
+}
+pc;
+
+// The 4 pixels at n .. n+3 of the frame starting at word `base`, pixel n in the low byte.
+// (hi << 1) << (31 - sh) is hi << (32 - sh) without the undefined shift by 32 when sh == 0.
+uint load4(uint base, uint n) {
+  uint lo = frame_words[base + (n >> 2)];
+  uint hi = frame_words[base + (n >> 2) + 1u];
+  uint sh = (n & 3u) * 8u;
+  return (lo >> sh) | ((hi << 1u) << (31u - sh));
+}
+
+// USAD8: sum over the 4 byte lanes of |a_i - b_i|.
+uint usad8(uint a, uint b) {
+  ivec4 va = ivec4((uvec4(a) >> uvec4(0u, 8u, 16u, 24u)) & 0xFFu);
+  ivec4 vb = ivec4((uvec4(b) >> uvec4(0u, 8u, 16u, 24u)) & 0xFFu);
+  ivec4 d = abs(va - vb);
+  return uint(d.x + d.y + d.z + d.w);
+}
+
+// UHADD8: per byte floor((a_i + b_i) / 2). NOT (a+b+1)/2, which rounds up (SPEC §7).
+uint uhadd8(uint a, uint b) { return (a & b) + (((a ^ b) & 0xFEFEFEFEu) >> 1); }
+
+// Step 1, the feature test over the central 4x4 of prev's block: three vertical row differences
+// and, per row, the three horizontal neighbour differences (the top lane of q and q >> 8 is 0 in
+// both, so it adds nothing).
+uint feature_value(uint prev, uint n) {
+  uint q[4];
+  for (int r = 0; r < 4; ++r) q[r] = load4(prev, n + 2u + (2u + uint(r)) * pc.width);
+  uint sum = 0u;
+  for (int r = 0; r < 3; ++r) sum += usad8(q[r], q[r + 1]);
+  for (int r = 0; r < 4; ++r) sum += usad8(q[r] & 0x00FFFFFFu, q[r] >> 8);
+  return sum;
+}
+
+// Step 2's SAD of the block (packed in blk) against next at pixel n, rows of 2 words.
+uint block_sad(uint blk[16], uint next, uint n) {
+  uint sad = 0u;
+  for (int r = 0; r < 8; ++r) {
+    uint m = n + uint(r) * pc.width;
+    sad += usad8(blk[2 * r], load4(next, m)) + usad8(blk[2 * r + 1], load4(next, m + 4u));
+  }
+  return sad;
+}
+
+// The packed values of one row of the matched block's neighbourhood, for the 4 columns 4*q ..
+// 4*q+3 of block row v: p = P(c, v), h = h(c, v), hl = h(c-1, v) (SPEC §3 notation).
+struct HalfRow {
+  uint p;
+  uint h;
+  uint hl;
+};
+
+HalfRow half_row(uint next, uint n) {
+  uint left = load4(next, n - 1u);
+  uint here = load4(next, n);
+  uint right = load4(next, n + 1u);
+  return HalfRow(here, uhadd8(here, right), uhadd8(left, here));
+}
+
+// Step 3: the eight half-pixel SADs around the integer match at pixel n of next. The diagonal
+// d(u, v) is the floor average of two floored HORIZONTAL averages h(u, v), h(u, v+1).
+void half_pixel_sads(uint blk[16], uint next, uint n, out uint sub[8]) {
+  for (int k = 0; k < 8; ++k) sub[k] = 0u;
+  for (int r = 0; r < 8; ++r) {
+    for (int q = 0; q < 2; ++q) {
+      uint m = n + uint(r) * pc.width + 4u * uint(q);
+      HalfRow up = half_row(next, m - pc.width);
+      HalfRow mid = half_row(next, m);
+      HalfRow down = half_row(next, m + pc.width);
+      uint b = blk[2 * r + q];
+      sub[0] += usad8(b, mid.h);                     // h(c, r)
+      sub[1] += usad8(b, uhadd8(mid.h, down.h));     // d(c, r)
+      sub[2] += usad8(b, uhadd8(mid.p, down.p));     // g(c, r)
+      sub[3] += usad8(b, uhadd8(mid.hl, down.hl));   // d(c-1, r)
+      sub[4] += usad8(b, mid.hl);                    // h(c-1, r)
+      sub[5] += usad8(b, uhadd8(up.hl, mid.hl));     // d(c-1, r-1)
+      sub[6] += usad8(b, uhadd8(up.p, mid.p));       // g(c, r-1)
+      sub[7] += usad8(b, uhadd8(up.h, mid.h));       // d(c, r-1)
+    }
+  }
+}
+
+const int kStepX[9] = int[9](1, 1, 0, -1, -1, -1, 0, 1, 0);
+const int kStepY[9] = int[9](0, 1, 1, 1, 0, -1, -1, -1, 0);
+
+uint pack_i8(int lo, int hi) { return (uint(lo) & 0xFFu) | ((uint(hi) & 0xFFu) << 8); }
+
+void write_record(uint item, uint x, uint y, uint status, uint feature, int bx, int by, uint sad,
+                  uint dir, uint sub[8], int hx, int hy) {
+  uint o = item * 8u;
+  record_words[o + 0u] = x | (y << 16);
+  record_words[o + 1u] = status | (feature << 16);  // pad0 = 0
+  record_words[o + 2u] = pack_i8(bx, by) | (sad << 16);
+  record_words[o + 3u] = dir | (sub[0] << 16);  // pad1 = 0
+  record_words[o + 4u] = sub[1] | (sub[2] << 16);
+  record_words[o + 5u] = sub[3] | (sub[4] << 16);
+  record_words[o + 6u] = sub[5] | (sub[6] << 16);
+  record_words[o + 7u] = sub[7] | (pack_i8(hx, hy) << 16);
+}
+
+void main() {
+  if (gl_GlobalInvocationID.x >= pc.item_count) return;
+  uint item = pc.first_item + gl_GlobalInvocationID.x;
+  uint pair = item / pc.pois_per_pair;
+  uint poi = item % pc.pois_per_pair;
+  uint x = pc.grid_x0 + (poi % pc.grid_nx) * pc.grid_step_x;
+  uint y = pc.grid_y0 + (poi / pc.grid_nx) * pc.grid_step_y;
+  uint prev = 2u * pair * pc.words_per_frame;
+  uint next = prev + pc.words_per_frame;
+  uint n = y * pc.width + x;  // the POI's top-left pixel
+  uint zero[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+
+  uint feature = feature_value(prev, n);
+  if (feature < pc.feature_threshold) {
+    write_record(item, x, y, 0u, feature, 0, 0, 0u, 8u, zero, 0, 0);
+    return;
+  }
+
+  uint blk[16];
+  for (int r = 0; r < 8; ++r) {
+    blk[2 * r] = load4(prev, n + uint(r) * pc.width);
+    blk[2 * r + 1] = load4(prev, n + uint(r) * pc.width + 4u);
+  }
+
+  // Raster order, dy outer; only a STRICTLY smaller SAD replaces, so ties keep the first.
+  int S = int(pc.search_radius);
+  uint best = 0xFFFFFFFFu;
+  int bx = 0;
+  int by = 0;
+  for (int dy = -S; dy <= S; ++dy) {
+    for (int dx = -S; dx <= S; ++dx) {
+      uint sad = block_sad(blk, next, uint(int(n) + dy * int(pc.width) + dx));
+      if (sad < best) {
+        best = sad;
+        bx = dx;
+        by = dy;
+      }
+    }
+  }
+  if (!(best < pc.sad_threshold)) {
+    write_record(item, x, y, 1u, feature, bx, by, best, 8u, zero, 0, 0);
+    return;
+  }
+
+  uint sub[8];
+  half_pixel_sads(blk, next, uint(int(n) + by * int(pc.width) + bx), sub);
+  // The vote starts from the integer match (dir 8); k = 0..7 replaces only when strictly smaller.
+  uint vote = best;
+  uint dir = 8u;
+  for (uint k = 0u; k < 8u; ++k) {
+    if (sub[k] < vote) {
+      vote = sub[k];
+      dir = k;
+    }
+  }
+  write_record(item, x, y, 2u, feature, bx, by, best, dir, sub, 2 * bx + kStepX[dir],
+               2 * by + kStepY[dir]);
+}

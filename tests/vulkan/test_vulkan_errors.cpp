@@ -1,0 +1,105 @@
+// Device selection, limits and failure paths: one clear BackendError, no crash, no records
+// written when a run is refused.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cstring>
+
+#include "errors.hpp"
+#include "grid.hpp"
+#include "registry.hpp"
+#include "vulkan/batch_plan.hpp"
+#include "vulkan/device_select.hpp"
+#include "vulkan_test_util.hpp"
+
+using namespace pxflow;
+using namespace pxflow::test;
+using Catch::Matchers::Contains;
+
+namespace {
+
+std::vector<vk::DeviceCandidate> fake_devices() {
+  return {{"llvmpipe (LLVM 15.0.6, 256 bits)", VK_PHYSICAL_DEVICE_TYPE_CPU, ""},
+          {"Old GPU", VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, "Vulkan 1.1 < 1.2"},
+          {"Intel(R) UHD Graphics", VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU, ""},
+          {"AMD Radeon RX", VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, ""}};
+}
+
+}  // namespace
+
+TEST_CASE("vulkan: device selection prefers GPUs, honours index and name", "[vulkan]") {
+  auto d = fake_devices();
+  CHECK(vk::select_device(d, "") == 3);
+  CHECK(vk::select_device(d, "0") == 0);
+  CHECK(vk::select_device(d, "uhd") == 2);
+  CHECK(vk::select_device(d, "LLVMPIPE") == 0);
+  d.pop_back();
+  CHECK(vk::select_device(d, "") == 2);  // the unusable discrete GPU is passed over
+  d.pop_back();
+  CHECK(vk::select_device(d, "") == 0);
+  CHECK_THROWS_WITH(vk::select_device(d, "1"), Contains("cannot run the kernel"));
+  CHECK_THROWS_WITH(vk::select_device(d, "7"), Contains("device index 7 is out of range"));
+  CHECK_THROWS_WITH(vk::select_device(d, "nvidia"), Contains("no Vulkan device name contains"));
+  CHECK_THROWS_WITH(vk::select_device({}, ""), Contains("no Vulkan device found"));
+}
+
+TEST_CASE("vulkan: a bad --device gives one clear error", "[vulkan]") {
+  const BackendRow& row = find_backend("vulkan");
+  REQUIRE(row.probe() == "");
+  CHECK_THROWS_WITH(row.create({.threads = 0, .device = "99"}),
+                    Contains("vulkan: device index 99 is out of range"));
+  CHECK_THROWS_AS(row.create({.threads = 0, .device = "no-such-device"}), BackendError);
+  CHECK(row.create({.threads = 0, .device = "0"}) != nullptr);
+  CHECK(row.create({.threads = 0, .device = "llvmpipe"}) != nullptr);
+}
+
+TEST_CASE("vulkan: chunks respect the buffer limit", "[vulkan]") {
+  const Params p = make_params("px4flow-64", 64, 64);
+  const vk::BatchLayout layout = vk::batch_layout(p);
+  CHECK(layout.words_per_frame == 64 * 64 / 4 + 1);
+  CHECK(vk::pairs_per_chunk(layout, {layout.pair_bytes * 3 + 1, ~0ull}) == 3);
+  CHECK(vk::pairs_per_chunk(layout, {layout.pair_bytes - 1, ~0ull}) == 0);
+  CHECK(vk::pairs_per_chunk(layout, {~0ull >> 8, layout.work_per_pair * 2}) == 2);
+  CHECK(vk::pairs_per_chunk(layout, {~0ull >> 8, 1}) == 1);  // never 0 for work alone
+
+  VulkanConfig config;
+  config.max_buffer_bytes = layout.pair_bytes * 3;
+  config.max_groups_per_dispatch = 1;  // 64 POIs per dispatch at local size 64
+  auto vk = make_vulkan(config);
+  expect_exact(*vk, random_pairs(64, 64, 4, 10, 77), p);
+  CHECK(vk->last_chunks() == 4);
+  CHECK(vk->last_dispatches() == 10);
+  REQUIRE(vk->last_device_seconds().has_value());
+  CHECK(*vk->last_device_seconds() > 0.0);
+}
+
+TEST_CASE("vulkan: a frame pair beyond the buffer limit is refused untouched", "[vulkan]") {
+  VulkanConfig config;
+  config.max_buffer_bytes = 4096;
+  auto vk = make_vulkan(config);
+  const Params p = make_params("px4flow-64", 64, 64);
+  CHECK_THAT(vk->unsupported(p), Contains("bytes in one storage buffer"));
+  const OwnedPair pair = random_pair(64, 64, 4, 1);
+  const FramePair view = pair.view();
+  std::vector<PoiRecord> out(64);
+  std::memset(out.data(), 0xA5, out.size() * sizeof(PoiRecord));
+  OpCounts counts;
+  CHECK_THROWS_AS(vk->run({&view, 1}, p, out, counts), BackendError);
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(out.data());
+  CHECK(std::all_of(bytes, bytes + out.size() * sizeof(PoiRecord),
+                    [](std::uint8_t b) { return b == 0xA5; }));
+  CHECK(make_vulkan()->unsupported(p).empty());
+}
+
+TEST_CASE("vulkan: a kernel that misses its deadline is an error, then refused", "[vulkan]") {
+  VulkanConfig config;
+  config.fence_timeout = std::chrono::milliseconds(0);
+  auto vk = make_vulkan(config);
+  const Params p = make_params("px4flow-64", 256, 256, 16, 8);
+  const auto pairs = random_pairs(256, 256, 16, 4);
+  std::vector<FramePair> views;
+  for (const auto& op : pairs) views.push_back(op.view());
+  std::vector<PoiRecord> out(views.size() * poi_count(p));
+  OpCounts counts;
+  CHECK_THROWS_WITH(vk->run(views, p, out, counts), Contains("did not finish within 0 ms"));
+  CHECK_THROWS_WITH(vk->run(views, p, out, counts), Contains("unusable after an earlier failure"));
+}
