@@ -29,12 +29,16 @@ std::vector<BackendRow> build_rows() {
   return rows;
 }
 
-}  // namespace
-
-const std::vector<BackendRow>& backend_rows() {
-  static const std::vector<BackendRow> rows = build_rows();
+std::vector<BackendRow>& mutable_rows() {
+  static std::vector<BackendRow> rows = build_rows();
   return rows;
 }
+
+}  // namespace
+
+const std::vector<BackendRow>& backend_rows() { return mutable_rows(); }
+
+void add_backend_row(BackendRow row) { mutable_rows().push_back(std::move(row)); }
 
 const BackendRow& find_backend(std::string_view name) {
   std::string known;

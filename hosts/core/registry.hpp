@@ -9,6 +9,10 @@ namespace pxflow {
 
 const std::vector<BackendRow>& backend_rows();
 
+// Appends a row. For test programs that need a backend the product does not ship (e.g. a
+// deliberately broken one). Call it before anything looks rows up: it may move the table.
+void add_backend_row(BackendRow row);
+
 // The row named `name`; throws InputError listing the known names when there is none.
 const BackendRow& find_backend(std::string_view name);
 

@@ -213,8 +213,13 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
       return true;
     };
   }
-  for (auto& k : contenders)
-    if (!k.backend) out << "skip " << k.row->name << " (" << k.outcome.reason << ")\n";
+  for (auto& k : contenders) {
+    if (k.backend) continue;
+    if (k.outcome.state == "failed")
+      out << k.outcome.failures.front() << "\n";
+    else
+      out << "skip " << k.row->name << " (" << k.outcome.reason << ")\n";
+  }
 
   CheckCase c;
   while (next_case(c)) {

@@ -6,7 +6,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "run_binary.hpp"
+#include "run_program.hpp"
 #include "synthetic.hpp"
 
 using namespace pxflow;

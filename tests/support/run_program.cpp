@@ -1,4 +1,4 @@
-#include "run_binary.hpp"
+#include "run_program.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -27,10 +27,10 @@ std::string slurp(const std::string& path) {
 
 int RunResult::err_lines() const { return static_cast<int>(std::count(err.begin(), err.end(), '\n')); }
 
-RunResult run_pxflow(const std::vector<std::string>& args) {
+RunResult run_program(const std::string& binary, const std::vector<std::string>& args) {
   TempDir io;
   const std::string out = io.path("stdout"), err = io.path("stderr");
-  std::vector<std::string> argv_s = {PXFLOW_BINARY};
+  std::vector<std::string> argv_s = {binary};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : argv_s) argv.push_back(a.data());
@@ -44,7 +44,7 @@ RunResult run_pxflow(const std::vector<std::string>& args) {
   pid_t pid = 0;
   const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) throw std::runtime_error("cannot start " + std::string(PXFLOW_BINARY));
+  if (rc != 0) throw std::runtime_error("cannot start " + binary);
   int status = 0;
   waitpid(pid, &status, 0);
   RunResult r;

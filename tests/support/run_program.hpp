@@ -1,4 +1,4 @@
-// Runs the pxflow binary as a user would and captures its exit code, stdout and stderr.
+// Runs a program as a user would and captures its exit code, stdout and stderr.
 #pragma once
 #include <string>
 #include <vector>
@@ -11,7 +11,12 @@ struct RunResult {
   int err_lines() const;
 };
 
-RunResult run_pxflow(const std::vector<std::string>& args);
+RunResult run_program(const std::string& binary, const std::vector<std::string>& args);
+
+#ifdef PXFLOW_BINARY
+// The pxflow binary of this build.
+inline RunResult run_pxflow(const std::vector<std::string>& args) { return run_program(PXFLOW_BINARY, args); }
+#endif
 
 // A fresh temporary directory for one test's files (removed when the object dies).
 class TempDir {

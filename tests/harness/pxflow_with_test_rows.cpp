@@ -1,0 +1,57 @@
+// pxflow with three extra registry rows that exist only in this test program, to prove that the
+// checker catches what it must: a backend that flips one bit, one that leaves a record unwritten,
+// one that cannot run, and one with a documented size limit.
+#include <cstring>
+
+#include "grid.hpp"
+#include "kernel.hpp"
+#include "pxflow_app.hpp"
+#include "registry.hpp"
+
+namespace {
+
+using namespace pxflow;
+
+// Runs ref-original, then damages the output the way `Fault` says.
+enum class Fault { kFlipBit, kSkipRecord, kNone };
+
+class Damaged final : public Backend {
+ public:
+  Damaged(Fault f, int max_side) : fault_(f), max_side_(max_side) {}
+  void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out, OpCounts& c) override {
+    const std::size_t per = poi_count(p);
+    for (std::size_t n = 0; n < pairs.size(); ++n) {
+      auto recs = out.subspan(n * per, per);
+      std::vector<PoiRecord> tmp(per);
+      reference_flow(RefVariant::kOriginal, pairs[n], p, tmp, c);
+      for (std::size_t i = 0; i < per; ++i) {
+        if (fault_ == Fault::kSkipRecord && i == 5) continue;  // leaves the sentinel
+        recs[i] = tmp[i];
+      }
+      if (fault_ == Fault::kFlipBit && per > 3) recs[3].sub[2] ^= 1;  // one bit of one record
+    }
+  }
+  std::string unsupported(const Params& p) const override {
+    if (p.width > max_side_ || p.height > max_side_) return "frames larger than " + std::to_string(max_side_) + " pixels";
+    return {};
+  }
+
+ private:
+  Fault fault_;
+  int max_side_;
+};
+
+BackendRow row(const char* name, Fault f, int max_side, std::string probe_reason = {}) {
+  return {name, "test only", [probe_reason] { return probe_reason; },
+          [f, max_side](const BackendOptions&) { return std::make_unique<Damaged>(f, max_side); }};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  add_backend_row(row("test-bitflip", Fault::kFlipBit, 1 << 20));
+  add_backend_row(row("test-unwritten", Fault::kSkipRecord, 1 << 20));
+  add_backend_row(row("test-unavailable", Fault::kNone, 1 << 20, "no such device here (test row)"));
+  add_backend_row(row("test-small-only", Fault::kNone, 64));
+  return run_pxflow(argc, argv);
+}

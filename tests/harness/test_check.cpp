@@ -1,0 +1,94 @@
+// pxflow check against backends that are wrong on purpose: the mismatch line, the counts, the
+// exit code, skips, --require, n/a cases, fuzz campaigns and the JSON file.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "run_program.hpp"
+
+using pxflow::test::run_program;
+
+namespace {
+
+pxflow::test::RunResult check(std::vector<std::string> args) {
+  args.insert(args.begin(), "check");
+  return run_program(PXFLOW_WITH_TEST_ROWS, args);
+}
+
+std::string last_line(const std::string& out) {
+  const auto end = out.find_last_not_of('\n');
+  const auto start = out.rfind('\n', end);
+  return out.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
+}
+
+}  // namespace
+
+TEST_CASE("a backend that flips one bit fails with one line naming the field", "[check]") {
+  const auto r = check({"--backends", "test-bitflip", "--generated-only"});
+  INFO(r.out);
+  CHECK(r.exit_code == 1);
+  // poi 3 of the first random px4flow-64 pair; sub[2] only differs when the POI was accepted,
+  // so look for the field rather than a fixed pair.
+  CHECK(r.out.find("FAIL test-bitflip case=") != std::string::npos);
+  CHECK(r.out.find("poi=3 (x=23,y=5) field=sub[2]") != std::string::npos);
+  CHECK(r.out.find("pair=") != std::string::npos);
+  CHECK(r.out.find("seed=") != std::string::npos);
+  CHECK(last_line(r.out).find("0 passed") == 0);
+  CHECK(last_line(r.out).find(" failed, 0 skipped") != std::string::npos);
+}
+
+TEST_CASE("an unwritten record is caught by the sentinel", "[check]") {
+  const auto r = check({"--backends", "test-unwritten", "--generated-only"});
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("poi=5 (x=35,y=5) field=record expected=written got=never written") != std::string::npos);
+}
+
+TEST_CASE("correct backends pass; the summary line counts cases", "[check]") {
+  const auto r = check({"--backends", "ref-local,ref-global", "--generated-only"});
+  INFO(r.out);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("FAIL") == std::string::npos);
+  // 4 settings x 4 generated cases, 2 backends
+  CHECK(last_line(r.out) == "32 passed, 0 failed, 0 skipped");
+}
+
+TEST_CASE("a backend that cannot run is skipped with its reason, or fails when required", "[check]") {
+  auto r = check({"--backends", "test-unavailable,ref-local", "--generated-only"});
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("skip test-unavailable (no such device here (test row))") != std::string::npos);
+  CHECK(last_line(r.out) == "16 passed, 0 failed, 16 skipped");
+  r = check({"--backends", "test-unavailable,ref-local", "--require", "test-unavailable", "--generated-only"});
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("FAIL test-unavailable: required but cannot run") != std::string::npos);
+  r = check({"--backends", "test-unavailable", "--require", "all", "--generated-only"});
+  CHECK(r.exit_code == 1);
+}
+
+TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
+  const auto r = check({"--backends", "test-small-only", "--generated-only"});
+  INFO(r.out);
+  CHECK(r.exit_code == 0);
+  CHECK(last_line(r.out) == "8 passed, 0 failed, 0 skipped");  // the 8 cases at 64x64
+  CHECK(r.out.find("       8 ") != std::string::npos);          // the n/a column
+}
+
+TEST_CASE("fuzz campaign, JSON file, and bad arguments", "[check]") {
+  pxflow::test::TempDir dir;
+  const auto r = check({"--backends", "ref-local", "--cases", "600", "--seed", "7", "--json", dir.path("c.json")});
+  INFO(r.out);
+  CHECK(r.exit_code == 0);
+  CHECK(last_line(r.out) == "3 passed, 0 failed, 0 skipped");  // 256 + 256 + 88 pairs
+  std::ifstream in(dir.path("c.json"));
+  const auto j = nlohmann::json::parse(in);
+  CHECK(j["seed"] == 7);
+  CHECK(j["pairs"] == 600);
+  CHECK(j["backends"][0]["name"] == "ref-local");
+  CHECK(j["backends"][0]["state"] == "passed");
+
+  const auto bad = check({"--backends", "no-such-backend"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.err.find("unknown backend 'no-such-backend'") != std::string::npos);
+  CHECK(bad.err_lines() == 1);
+  CHECK(check({"--cases", "0"}).exit_code == 2);
+}
