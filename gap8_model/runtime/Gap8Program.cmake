@@ -2,19 +2,27 @@
 # Builds <name>.elf for the GAP8 cluster model with Debian's riscv64-unknown-elf-gcc: RV32IMC,
 # ilp32, the runtime (crt0.S, runtime.c, link.ld) and libgcc for soft-float and 64-bit helpers.
 # Defines the target gap8_prog_<name>; the ELF path is in the GAP8_PROGRAM_<name> variable.
-# Does nothing when PXFLOW_GAP8_CC is empty (the toolchain is missing).
+# Does nothing when the toolchain is missing (PXFLOW_GAP8_HAVE_CC is then OFF).
+include_guard(GLOBAL)
 find_program(PXFLOW_GAP8_CC riscv64-unknown-elf-gcc)
-set(PXFLOW_GAP8_CFLAGS -march=rv32imc -mabi=ilp32 -misa-spec=2.2 -O2 -g -Wall -Wextra
-    -ffreestanding -fno-builtin -fno-tree-loop-distribute-patterns -ffp-contract=off)
+if(PXFLOW_GAP8_CC AND EXISTS "${PXFLOW_GAP8_CC}")
+  set(PXFLOW_GAP8_HAVE_CC ON CACHE INTERNAL "")
+else()
+  set(PXFLOW_GAP8_HAVE_CC OFF CACHE INTERNAL "")
+  message(STATUS "gap8_model: riscv64-unknown-elf-gcc not found: GAP8 programs are not built, "
+                 "their tests report SKIPPED (install gcc-riscv64-unknown-elf)")
+endif()
 
 function(pxflow_gap8_program name)
   cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES" ${ARGN})
-  if(NOT PXFLOW_GAP8_CC)
+  if(NOT PXFLOW_GAP8_HAVE_CC)
     return()
   endif()
   if(NOT ARG_OUTPUT_DIR)
     set(ARG_OUTPUT_DIR ${CMAKE_CURRENT_BINARY_DIR})
   endif()
+  set(cflags -march=rv32imc -mabi=ilp32 -misa-spec=2.2 -O2 -g -Wall -Wextra -ffreestanding
+      -fno-builtin -fno-tree-loop-distribute-patterns -ffp-contract=off)
   set(rt ${PXFLOW_GAP8_RUNTIME_DIR})
   set(elf ${ARG_OUTPUT_DIR}/${name}.elf)
   set(sources)
@@ -24,7 +32,7 @@ function(pxflow_gap8_program name)
   endforeach()
   add_custom_command(
     OUTPUT ${elf}
-    COMMAND ${PXFLOW_GAP8_CC} ${PXFLOW_GAP8_CFLAGS} -I${rt} -nostdlib -nostartfiles
+    COMMAND ${PXFLOW_GAP8_CC} ${cflags} -I${rt} -nostdlib -nostartfiles
             -T ${rt}/link.ld -Wl,--no-warn-rwx-segments
             ${rt}/crt0.S ${rt}/runtime.c ${sources} -lgcc -o ${elf}
     DEPENDS ${sources} ${rt}/crt0.S ${rt}/runtime.c ${rt}/link.ld ${rt}/pmsis.h
