@@ -92,3 +92,32 @@ TEST_CASE("fuzz campaign, JSON file, and bad arguments", "[check]") {
   CHECK(bad.err_lines() == 1);
   CHECK(check({"--cases", "0"}).exit_code == 2);
 }
+
+TEST_CASE("bench times only checked backends and writes the documented JSON rows", "[bench]") {
+  pxflow::test::TempDir dir;
+  const auto r = run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--backends", "ref-original,ref-local,test-bitflip,test-unavailable",
+                                                     "--batch", "1,3", "--min-time", "0", "--json", dir.path("b.json")});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("test-bitflip: not timed: records differ from ref-original") != std::string::npos);
+  CHECK(r.out.find("skipped test-unavailable: no such device here") != std::string::npos);
+  std::ifstream in(dir.path("b.json"));
+  const auto j = nlohmann::json::parse(in);
+  int timed = 0;
+  for (const auto& row : j["rows"]) {
+    for (const char* key : {"backend", "profile", "width", "height", "batch", "threads", "source"})
+      REQUIRE(row.contains(key));
+    if (row["backend"] == "test-bitflip") {
+      CHECK(row["median_ns_per_frame"] == 0);
+      continue;
+    }
+    ++timed;
+    CHECK(row["median_ns_per_frame"].get<double>() > 0);
+    CHECK(row["frames_per_s"].get<double>() > 0);
+    CHECK(row["width"] == 64);
+    if (row["backend"] == "ref-original") CHECK(row["speedup_vs_ref_original"] == 1.0);
+  }
+  CHECK(timed == 4);  // 2 backends x 2 batch sizes
+  CHECK(run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--batch", "0"}).exit_code == 2);
+  CHECK(run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--size", "8x8"}).exit_code == 2);
+}

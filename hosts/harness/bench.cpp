@@ -1,0 +1,249 @@
+#include "bench.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <map>
+#include <ostream>
+#include <thread>
+#if defined(__x86_64__) || defined(__i386__)
+#include <x86intrin.h>
+#endif
+
+#include "grid.hpp"
+#include "registry.hpp"
+#include "synthetic.hpp"
+
+namespace pxflow {
+namespace {
+
+constexpr int kDistinctPairs = 16;  // a batch cycles through these, so memory stays small
+
+std::uint64_t tsc_now() {
+#if defined(__x86_64__) || defined(__i386__)
+  return __rdtsc();
+#else
+  return 0;
+#endif
+}
+constexpr bool kHasTsc =
+#if defined(__x86_64__) || defined(__i386__)
+    true;
+#else
+    false;
+#endif
+
+struct Inputs {
+  std::vector<OwnedPair> owned;
+  std::vector<FramePair> views;  // `batch` views over the owned pairs
+};
+
+Inputs make_inputs(const Params& p, int batch) {
+  Inputs in;
+  for (int n = 0; n < std::min(batch, kDistinctPairs); ++n)
+    in.owned.push_back(random_pair(p.width, p.height, p.search_radius, 0xBE7C4 + static_cast<std::uint64_t>(n)));
+  for (int n = 0; n < batch; ++n) in.views.push_back(in.owned[n % in.owned.size()].view());
+  return in;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
+}
+
+std::string point_label(const BenchPoint& pt) {
+  return pt.setting + " " + std::to_string(pt.params.width) + "x" + std::to_string(pt.params.height) +
+         " S=" + std::to_string(pt.params.search_radius) + " batch=" + std::to_string(pt.batch) +
+         " threads=" + (pt.threads ? std::to_string(pt.threads) : "all");
+}
+
+class Bench {
+ public:
+  Bench(const BenchOptions& o, std::ostream& out) : o_(o), out_(out) {}
+
+  void measure(const BackendRow& row, const BenchPoint& pt, const Inputs& in,
+               const std::vector<PoiRecord>& expected, BenchReport& report) {
+    Backend* b = backend_for(row, pt.threads, report);
+    if (!b) return;
+    BenchRow base = row_for(row.name, pt);
+    if (std::string why = b->unsupported(pt.params); !why.empty()) return note(base, "n/a: " + why, report);
+    std::vector<PoiRecord> got(expected.size());
+    std::memset(got.data(), 0xA5, got.size() * sizeof(PoiRecord));
+    OpCounts counts;
+    // Warm-up and check in one: the first run's records must equal ref-original's.
+    const auto w0 = std::chrono::steady_clock::now();
+    try {
+      b->run(in.views, pt.params, got, counts);
+    } catch (const std::exception& e) {
+      return note(base, std::string("failed: ") + e.what(), report);
+    }
+    const double first = seconds_since(w0);
+    if (std::memcmp(got.data(), expected.data(), got.size() * sizeof(PoiRecord)) != 0)
+      return note(base, "not timed: records differ from ref-original (run pxflow check)", report);
+    if (first > o_.max_run_seconds)
+      return note(base, "not timed: one run takes " + std::to_string(first) + " s", report);
+
+    std::vector<double> host_ns, tsc, device_ns, device_cycles;
+    std::string device_source;
+    const auto start = std::chrono::steady_clock::now();
+    while (host_ns.size() < 3 || (seconds_since(start) < o_.min_seconds && static_cast<int>(host_ns.size()) < o_.max_repeats)) {
+      const std::uint64_t c0 = tsc_now();
+      const auto t0 = std::chrono::steady_clock::now();
+      b->run(in.views, pt.params, got, counts);
+      const double ns = seconds_since(t0) * 1e9;
+      tsc.push_back(static_cast<double>(tsc_now() - c0) / pt.batch);
+      host_ns.push_back(ns / pt.batch);
+      if (auto d = b->last_device_time()) {
+        device_source = d->source;
+        device_ns.push_back(d->ns / pt.batch);
+        if (d->cycles) device_cycles.push_back(*d->cycles / pt.batch);
+      }
+    }
+    BenchRow host = base;
+    host.source = kHasTsc ? "host-steady-clock+tsc" : "host-steady-clock";
+    fill(host, host_ns, kHasTsc ? median(tsc) : 0);
+    emit(host, report);
+    if (!device_ns.empty()) {
+      BenchRow dev = base;
+      dev.source = device_source;
+      fill(dev, device_ns, device_cycles.empty() ? 0 : median(device_cycles));
+      emit(dev, report);
+    }
+  }
+
+ private:
+  Backend* backend_for(const BackendRow& row, int threads, BenchReport& report) {
+    auto key = std::pair{row.name, threads};
+    if (auto it = cache_.find(key); it != cache_.end()) return it->second.get();
+    std::unique_ptr<Backend> b;
+    std::string why = row.probe();
+    if (why.empty()) {
+      try {
+        BackendOptions bo = o_.backend_options;
+        bo.threads = threads;
+        b = row.create(bo);
+      } catch (const std::exception& e) {
+        why = std::string("set-up failed: ") + e.what();
+      }
+    }
+    if (!why.empty() && threads == 0) report.skipped.push_back(row.name + ": " + why);
+    return (cache_[key] = std::move(b)).get();
+  }
+
+  static double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  }
+
+  static BenchRow row_for(const std::string& backend, const BenchPoint& pt) {
+    BenchRow r;
+    r.backend = backend, r.sweep = pt.sweep, r.setting = pt.setting;
+    r.width = pt.params.width, r.height = pt.params.height, r.search_radius = pt.params.search_radius;
+    r.batch = pt.batch, r.threads = pt.threads ? pt.threads : static_cast<int>(std::thread::hardware_concurrency());
+    r.pois_per_frame = static_cast<long>(poi_count(pt.params));
+    return r;
+  }
+
+  static void fill(BenchRow& r, const std::vector<double>& ns, double cycles) {
+    r.repeats = static_cast<int>(ns.size());
+    r.median_ns_per_frame = median(ns);
+    r.min_ns_per_frame = *std::min_element(ns.begin(), ns.end());
+    r.max_ns_per_frame = *std::max_element(ns.begin(), ns.end());
+    r.frames_per_s = 1e9 / r.median_ns_per_frame;
+    r.ns_per_poi = r.median_ns_per_frame / static_cast<double>(r.pois_per_frame);
+    r.cycles_per_frame = cycles;
+  }
+
+  void note(BenchRow r, const std::string& why, BenchReport& report) {
+    r.note = why;
+    out_ << "  " << r.backend << ": " << why << "\n";
+    report.rows.push_back(r);
+  }
+
+  void emit(const BenchRow& r, BenchReport& report) {
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-14s %-22s %12.0f ns/frame (%0.f..%0.f)  %10.1f frames/s  %8.1f ns/POI",
+                  r.backend.c_str(), r.source.c_str(), r.median_ns_per_frame, r.min_ns_per_frame,
+                  r.max_ns_per_frame, r.frames_per_s, r.ns_per_poi);
+    out_ << line;
+    if (r.cycles_per_frame > 0) out_ << "  " << static_cast<long>(r.cycles_per_frame) << " cycles/frame";
+    out_ << "\n" << std::flush;
+    report.rows.push_back(r);
+  }
+
+  const BenchOptions& o_;
+  std::ostream& out_;
+  std::map<std::pair<std::string, int>, std::unique_ptr<Backend>> cache_;
+};
+
+// Speed-up of every timed row over ref-original at the same point, measured by the same clock.
+void add_speedups(BenchReport& r) {
+  for (auto& row : r.rows) {
+    if (row.median_ns_per_frame <= 0) continue;
+    for (const auto& ref : r.rows)
+      if (ref.backend == "ref-original" && ref.source == row.source && ref.sweep == row.sweep &&
+          ref.setting == row.setting && ref.width == row.width && ref.height == row.height &&
+          ref.search_radius == row.search_radius && ref.batch == row.batch && ref.threads == row.threads &&
+          ref.median_ns_per_frame > 0)
+        row.speedup_vs_reference = ref.median_ns_per_frame / row.median_ns_per_frame;
+  }
+}
+
+}  // namespace
+
+std::vector<BenchPoint> default_bench_points(const Params& base, const std::string& name) {
+  std::vector<BenchPoint> pts;
+  for (int batch : {1, 16, 256, 4096}) pts.push_back({"batch", name, base, batch, 0});
+  for (auto [w, h] : {std::pair{160, 120}, {320, 240}, {640, 480}}) {
+    Params p = base;
+    p.width = w, p.height = h;
+    pts.push_back({"size", name, p, 16, 0});
+  }
+  for (int S : {2, 8}) {
+    Params p = base;
+    p.search_radius = S;
+    pts.push_back({"radius", name, p, 256, 0});
+  }
+  pts.push_back({"threads", name, base, 256, 1});
+  return pts;
+}
+
+BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
+  BenchReport report;
+  std::vector<const BackendRow*> rows;
+  if (o.backends.empty())
+    for (const auto& r : backend_rows()) rows.push_back(&r);
+  else
+    for (const auto& n : o.backends) rows.push_back(&find_backend(n));
+  Bench bench(o, out);
+  for (const auto& pt : o.points) {
+    validate(pt.params);
+    out << point_label(pt) << "\n";
+    const Inputs in = make_inputs(pt.params, pt.batch);
+    std::vector<PoiRecord> expected(poi_count(pt.params) * in.views.size());
+    OpCounts counts;
+    find_backend("ref-original").create({})->run(in.views, pt.params, expected, counts);
+    for (const BackendRow* row : rows) bench.measure(*row, pt, in, expected, report);
+  }
+  add_speedups(report);
+  for (const auto& s : report.skipped) out << "skipped " << s << "\n";
+  return report;
+}
+
+Json bench_json(const BenchReport& r) {
+  Json rows = Json::array();
+  for (const auto& b : r.rows) {
+    Json j{{"backend", b.backend}, {"sweep", b.sweep}, {"profile", b.setting}, {"width", b.width},
+           {"height", b.height}, {"search_radius", b.search_radius}, {"batch", b.batch},
+           {"threads", b.threads}, {"source", b.source}, {"note", b.note}, {"repeats", b.repeats},
+           {"pois_per_frame", b.pois_per_frame}, {"median_ns_per_frame", b.median_ns_per_frame},
+           {"min_ns_per_frame", b.min_ns_per_frame}, {"max_ns_per_frame", b.max_ns_per_frame},
+           {"frames_per_s", b.frames_per_s}, {"ns_per_poi", b.ns_per_poi}};
+    if (b.cycles_per_frame > 0) j["cycles_per_frame"] = b.cycles_per_frame;
+    if (b.speedup_vs_reference > 0) j["speedup_vs_ref_original"] = b.speedup_vs_reference;
+    rows.push_back(std::move(j));
+  }
+  return Json{{"rows", rows}, {"skipped", r.skipped}};
+}
+
+}  // namespace pxflow

@@ -1,0 +1,54 @@
+// pxflow bench: throughput of every backend whose output was just checked, over sweeps of batch
+// size, frame size, search radius and threads. Medians of repeated runs; every row names its
+// clock; speed-ups only between rows of the same clock.
+#pragma once
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "backend.hpp"
+#include "result_json.hpp"
+
+namespace pxflow {
+
+// One measured configuration.
+struct BenchPoint {
+  std::string sweep;  // "batch", "size", "radius", "threads" or "custom"
+  std::string setting;
+  Params params;
+  int batch = 1;
+  int threads = 0;  // 0 = all cores
+};
+
+struct BenchOptions {
+  std::vector<std::string> backends;  // empty: all that can run
+  std::vector<BenchPoint> points;
+  double min_seconds = 0.25;  // per point and backend, after warm-up
+  int max_repeats = 25;
+  double max_run_seconds = 3.0;  // skip a point whose single run would take longer
+  BackendOptions backend_options;
+};
+
+struct BenchRow {
+  std::string backend, sweep, setting, source, note;
+  int width = 0, height = 0, search_radius = 0, batch = 0, threads = 0, repeats = 0;
+  long pois_per_frame = 0;
+  double median_ns_per_frame = 0, min_ns_per_frame = 0, max_ns_per_frame = 0;
+  double frames_per_s = 0, ns_per_poi = 0;
+  double cycles_per_frame = 0;  // 0 when the source has no cycle clock
+  double speedup_vs_reference = 0;  // vs ref-original, same point and source; 0 when not measured
+};
+
+struct BenchReport {
+  std::vector<BenchRow> rows;
+  std::vector<std::string> skipped;  // "backend: reason" lines
+};
+
+// The default sweeps around `base` (the profile with any --set applied).
+std::vector<BenchPoint> default_bench_points(const Params& base, const std::string& profile_name);
+
+BenchReport run_bench(const BenchOptions& o, std::ostream& out);
+
+Json bench_json(const BenchReport& r);
+
+}  // namespace pxflow
