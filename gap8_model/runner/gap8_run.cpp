@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <string>
 
 #include "gap8/cluster.h"
@@ -107,7 +108,7 @@ int main(int argc, char** argv) {
   gap8::ElfImage image;
   try {
     image = gap8::LoadElf(opt.elf, cluster.memory());
-  } catch (const gap8::ElfError& e) {
+  } catch (const std::exception& e) {  // ElfError, or no memory for a corrupt file's segment
     std::fprintf(stderr, "gap8-run: %s\n", e.what());
     return 2;
   }

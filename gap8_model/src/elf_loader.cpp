@@ -5,6 +5,7 @@
 #include <libelf.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "gap8/fault.h"
@@ -57,11 +58,14 @@ void LoadSegments(const ElfFile& file, Memory& memory) {
     if (ph.p_filesz > ph.p_memsz || ph.p_offset + ph.p_filesz > file_size)
       file.Fail("truncated segment");
     const uint32_t addr = static_cast<uint32_t>(ph.p_paddr);
-    std::vector<uint8_t> bytes(ph.p_memsz, 0);
-    std::copy(raw + ph.p_offset, raw + ph.p_offset + ph.p_filesz, bytes.begin());
-    if (!memory.Write(addr, bytes.data(), static_cast<uint32_t>(bytes.size())))
+    // Checked before anything is allocated: a hostile size must not reach the allocator.
+    if (ph.p_paddr != addr || ph.p_memsz > UINT32_MAX ||
+        !memory.Span(addr, static_cast<uint32_t>(ph.p_memsz)))
       file.Fail("segment at " + Hex(addr) + " of " + std::to_string(ph.p_memsz) +
                 " bytes is outside L1 and L2");
+    std::vector<uint8_t> bytes(ph.p_memsz, 0);
+    std::copy(raw + ph.p_offset, raw + ph.p_offset + ph.p_filesz, bytes.begin());
+    memory.Write(addr, bytes.data(), static_cast<uint32_t>(bytes.size()));
   }
 }
 

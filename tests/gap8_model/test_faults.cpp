@@ -65,4 +65,7 @@ TEST_CASE("a missing or malformed ELF is an ElfError, not a crash") {
   gap8::Memory memory;
   CHECK_THROWS_AS(gap8::LoadElf("/nonexistent.elf", memory), gap8::ElfError);
   CHECK_THROWS_AS(gap8::LoadElf(GAP8_PROGRAM_DIR, memory), gap8::ElfError);
+  CHECK_THROWS_WITH(gap8::LoadElf(ProgramPath("elf_outside"), memory),
+                    Catch::Matchers::Contains("segment at 0x1ffff000") &&
+                        Catch::Matchers::Contains("is outside L1 and L2"));
 }
