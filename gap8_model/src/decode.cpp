@@ -214,7 +214,8 @@ Decoded Decode(uint32_t bits) {
       return DecodeOpImm(w);
     case 0x33:
       return DecodeOp(w);
-    case 0x0F: {
+    case 0x0F: {  // fence and fence.i: no effect on an in-order core without caches
+      if (Bits(w, 14, 12) > 1) return Illegal(w);
       Decoded d = Base(w, Op::kFence);
       d.rd = 0;
       d.src_mask = 0;
