@@ -58,7 +58,7 @@ uint32_t NonBaseReg(std::mt19937& rng) {
 Slot RandomStraight(std::mt19937& rng) {
   for (;;) {
     const bool compressed = rng() % 3 == 0;
-    const uint32_t bits = compressed ? (rng() & 0xFFFFu) | 0u : RandomWide(rng);
+    const uint32_t bits = compressed ? rng() & 0xFFFFu : RandomWide(rng);
     if (compressed && (bits & 3u) == 3u) continue;
     if (Acceptable(gap8::Decode(bits))) {
       return Slot{

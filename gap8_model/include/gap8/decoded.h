@@ -51,7 +51,8 @@ enum class Op : uint8_t {
   kDivu,
   kRem,
   kRemu,
-  // Xpulp (PULPv2 encodings as used by GAP8's RI5CY cores)
+  // Xpulp (PULPv2 encodings as used by GAP8's RI5CY cores): kept last, so `op >= kLoadPostImm`
+  // tells an Xpulp instruction (the differential tests rely on it).
   kLoadPostImm,
   kLoadRegReg,
   kLoadPostReg,  // p.l* rd, imm(rs1!) / rs2(rs1) / rs2(rs1!)
