@@ -1,8 +1,9 @@
 // pxflow_opencl_bench: batch throughput of the opencl backend against the best CPU backend in
 // this build on all cores, at batch 1, 256 and 4096 (docs/opencl.md has the figures). Every
 // configuration is checked first (opencl's records must equal the CPU backend's byte for byte);
-// only then is it timed. Clocks: wall (steady_clock) around Backend::run for both, plus the
-// OpenCL event-profiled kernel and transfer times of the last opencl run.
+// only then is it timed. Clocks: wall (steady_clock) around Backend::run for both, the process
+// CPU time per pair (core-microseconds, all threads), and the OpenCL event-profiled kernel and
+// transfer times of the last opencl run.
 //
 //   pxflow_opencl_bench [--cpu NAME] [--sizes 64,640] [--batches 1,256,4096] [--seconds S]
 //                       [--layout group|item] [--group-size N]   (default: the row's choice)
@@ -10,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <string>
 #include <thread>
 #include <vector>
@@ -95,20 +97,33 @@ class CpuRunner {
   std::vector<std::unique_ptr<Backend>> backends_;
 };
 
-// Seconds per call of `f`, the mean over as many calls as fit in `min_seconds` (at least 2).
+// Wall and process CPU seconds per call of `f` (CPU time sums every thread: a load-independent
+// measure of work on a shared machine), means over as many calls as fit in `min_seconds`.
+struct Cost {
+  double wall = 0;
+  double cpu = 0;
+};
+
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 template <class F>
-double seconds_per_run(F&& f, double min_seconds) {
+Cost cost_per_run(F&& f, double min_seconds) {
   using clock = std::chrono::steady_clock;
   f();  // warm-up: first-use costs (page faults, PoCL's kernel specialization) are not timed
   int runs = 0;
   const auto start = clock::now();
+  const double cpu_start = process_cpu_seconds();
   double elapsed = 0;
   while (runs < 2 || elapsed < min_seconds) {
     f();
     ++runs;
     elapsed = std::chrono::duration<double>(clock::now() - start).count();
   }
-  return elapsed / runs;
+  return {elapsed / runs, (process_cpu_seconds() - cpu_start) / runs};
 }
 
 void bench_one(const Options& o, CpuRunner& cpu, OpenclBackend& ocl, int size, int batch) {
@@ -125,11 +140,12 @@ void bench_one(const Options& o, CpuRunner& cpu, OpenclBackend& ocl, int size, i
                        std::to_string(p.width) + "x" + std::to_string(p.height) + ", batch " +
                        std::to_string(batch) + ": not timed");
 
-  const double t_cpu = seconds_per_run([&] { cpu.run(b.pairs, p, expected); }, o.seconds);
-  const double t_ocl = seconds_per_run([&] { ocl.run(b.pairs, p, got, counts); }, o.seconds);
+  const Cost c = cost_per_run([&] { cpu.run(b.pairs, p, expected); }, o.seconds);
+  const Cost g = cost_per_run([&] { ocl.run(b.pairs, p, got, counts); }, o.seconds);
   const OpenclTiming& dev = ocl.last_timing();
-  std::printf("%4dx%-4d %5d  %12.0f  %12.0f  %6.2f  %10.3f  %10.3f  %10.3f  %3d\n", p.width,
-              p.height, batch, batch / t_cpu, batch / t_ocl, t_cpu / t_ocl, 1e3 * t_ocl,
+  std::printf("%4dx%-4d %5d  %11.0f %11.0f %7.2f  %9.1f %9.1f %7.2f  %10.3f %9.3f %8.3f %3d\n",
+              p.width, p.height, batch, batch / c.wall, batch / g.wall, c.wall / g.wall,
+              1e6 * c.cpu / batch, 1e6 * g.cpu / batch, c.cpu / g.cpu, 1e3 * g.wall,
               1e3 * dev.kernel_seconds, 1e3 * dev.transfer_seconds, dev.launches);
 }
 
@@ -176,6 +192,7 @@ Options parse(int argc, char** argv) {
 }
 
 int run(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they are measured
   const Options o = parse(argc, argv);
   CpuRunner cpu(o.cpu);
   OpenclBackend ocl({}, o.tuning);
@@ -183,8 +200,9 @@ int run(int argc, char** argv) {
               cpu.label().c_str(), ocl.device_name().c_str(),
               ocl.layout() == OpenclLayout::kGroupPerPoi ? "group-per-poi" : "item-per-poi",
               ocl.group_size(), o.seconds);
-  std::printf("%-9s %5s  %12s  %12s  %6s  %10s  %10s  %10s  %3s\n", "frame", "batch", "cpu pairs/s",
-              "ocl pairs/s", "ocl/cpu", "ocl ms/run", "kernel ms", "xfer ms", "launches");
+  std::printf("%-9s %5s  %11s %11s %7s  %9s %9s %7s  %10s %9s %8s %3s\n", "frame", "batch",
+              "cpu pair/s", "ocl pair/s", "ocl/cpu", "cpu us/pr", "ocl us/pr", "ocl/cpu",
+              "ocl ms/run", "kernel ms", "xfer ms", "launches");
   for (int size : o.sizes)
     for (int batch : o.batches) bench_one(o, cpu, ocl, size, batch);
   return 0;

@@ -27,6 +27,10 @@ Shape shape_of(const std::string& profile) {
     return {pxflow::profile(profile), 300, 61};
   Params p;
   p.search_radius = 7;
+  if (profile == "128x128-S31") {  // the largest radius: 63x63 candidates, a 72x72 window
+    p.width = 128, p.height = 128, p.search_radius = 31, p.blocks = 4;
+    return {p, 20, 200};
+  }
   if (profile == "320x240") {
     p.width = 320, p.height = 240, p.blocks = 16;
     return {p, 24, 131};
@@ -96,7 +100,7 @@ void require_opencl_device() {
 }
 
 std::vector<std::string> corpus_profiles() {
-  return {"px4flow-64", "px4flow-head", "320x240", "640x480"};
+  return {"px4flow-64", "px4flow-head", "128x128-S31", "320x240", "640x480"};
 }
 
 const Corpus& corpus(const std::string& profile) {

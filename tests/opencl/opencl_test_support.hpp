@@ -24,8 +24,9 @@ struct Corpus {
   std::vector<FramePair> pairs;
 };
 
-// px4flow-64, px4flow-head (64x64), 320x240 S=7 B=16 and 640x480 S=7 B=32: seeded random pairs,
-// every hostile pair, and windows of the real OpenCV sample frames (stride = the full image).
+// px4flow-64, px4flow-head (64x64), 128x128 S=31 B=4, 320x240 S=7 B=16 and 640x480 S=7 B=32:
+// seeded random pairs, every hostile pair, and windows of the real OpenCV sample frames (stride
+// = the full image).
 std::vector<std::string> corpus_profiles();
 const Corpus& corpus(const std::string& profile);
 

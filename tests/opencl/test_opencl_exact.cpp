@@ -35,6 +35,10 @@ TEST_CASE("opencl: is bit-exact on the px4flow-head corpus", "[opencl]") {
   check_both_layouts("px4flow-head");
 }
 
+TEST_CASE("opencl: is bit-exact at the largest search radius, S=31", "[opencl]") {
+  check_both_layouts("128x128-S31");
+}
+
 TEST_CASE("opencl: is bit-exact on the 320x240 S=7 B=16 corpus", "[opencl]") {
   check_both_layouts("320x240");
 }
