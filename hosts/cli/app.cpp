@@ -16,7 +16,8 @@ int run_pxflow(int argc, char** argv) {
   app.set_version_flag("--version", "pxflow 0.1");
   app.require_subcommand(1);
   std::vector<cli::Command> commands = {cli::add_flow_command(app), cli::add_check_command(app),
-                                        cli::add_bench_command(app), cli::add_backends_command(app)};
+                                        cli::add_bench_command(app), cli::add_report_command(app),
+                                        cli::add_backends_command(app)};
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for (const auto& c : commands) known |= c.app->get_name() == argv[1];

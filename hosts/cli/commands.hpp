@@ -21,6 +21,7 @@ Command add_flow_command(CLI::App& app);
 Command add_backends_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
+Command add_report_command(CLI::App& app);
 
 // Options that describe the problem, shared by every command that runs kernels.
 struct ProblemOptions {

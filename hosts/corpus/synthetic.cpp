@@ -117,6 +117,15 @@ OwnedPair random_pair(int w, int h, int S, std::uint64_t seed) {
   return op;
 }
 
+OwnedPair shifted_texture_pair(int w, int h, int S, std::uint64_t seed) {
+  Rng rng(seed);
+  OwnedPair op = make("shifted-texture/seed=" + std::to_string(seed), w, h);
+  op.prev = noise(w, h, rng);
+  shift_into(op.prev, op.next, w, h, rng.uniform(-S, S), rng.uniform(-S, S), rng.next());
+  add_noise(op.next, rng, 3);
+  return op;
+}
+
 std::vector<OwnedPair> hostile_pairs(int w, int h, int S) {
   std::vector<OwnedPair> out;
   auto add = [&](const std::string& name, auto&& prev_px, auto&& next_px) {

@@ -36,6 +36,11 @@ class Rng {
 // without noise), smooth texture, low-contrast texture, and unrelated frames.
 OwnedPair random_pair(int width, int height, int search_radius, std::uint64_t seed);
 
+// Uniform-noise texture moved by a seeded whole-pixel shift within the search radius, with
+// light noise: nearly every POI passes both thresholds, so every pair costs the full kernel
+// (the paper's "all POIs accepted" case). The benchmark's input.
+OwnedPair shifted_texture_pair(int width, int height, int search_radius, std::uint64_t seed);
+
 // Hostile patterns: all 0, all 255, max-difference checkerboards, periodic textures that make
 // SAD ties, LSB-only contrast (catches round-up averaging), shifts to the edge of the search
 // window, and an identical pair. `search_radius` places the edge shifts.
