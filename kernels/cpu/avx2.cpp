@@ -6,6 +6,7 @@
 
 #include "cpu_kernel.hpp"
 #include "x86_argmin.hpp"
+#include "x86_feature.hpp"
 #include "x86_half_pixel.hpp"
 
 namespace pxflow::cpu {
@@ -25,8 +26,8 @@ int row_bytes(int radius) {
 // against row offset 4 (bits 5:3 = 1,01).
 constexpr int kLaneControl = (1 << 5) | (1 << 3);
 
-BlockMatch search(Block prev, Window next, OpCounts*) {
-  const int S = next.radius;
+BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
+  const int S = radius;
   const int chunks = chunks_of_8(S);
   __m256i block[8];
   for (int r = 0; r < 8; ++r)
@@ -53,12 +54,15 @@ BlockMatch search(Block prev, Window next, OpCounts*) {
 void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, std::uint32_t sub[8],
                 OpCounts*) {
   half_pixel_sse2(prev.data, prev.stride, around, stride, sub);
+  // GCC may build the all-ones constant in a full-width register here without clearing the
+  // upper halves on return; dirty upper state would slow every SSE instruction of the caller.
+  _mm256_zeroupper();
 }
 
 }  // namespace
 
 const IsaKernel& avx2_kernel() {
-  static const IsaKernel k{"avx2", row_bytes, search, half_pixel, false};
+  static const IsaKernel k{"avx2", row_bytes, feature_sse2, search, half_pixel, false};
   return k;
 }
 

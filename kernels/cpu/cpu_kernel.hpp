@@ -31,10 +31,10 @@ struct BlockMatch {
 // up to `row_bytes(S)` bytes from the start of each of its rows and no row outside it. When
 // those bytes would run past the right edge of the frame, the caller copies the window into a
 // zero-padded buffer first.
+// (16 bytes, so that it travels in registers: a larger struct goes through the stack.)
 struct Window {
   const std::uint8_t* data = nullptr;
   std::ptrdiff_t stride = 0;
-  int radius = 0;  // S
 };
 
 // The POI's 8x8 block in `prev`: top-left pixel and row stride.
@@ -47,9 +47,12 @@ struct IsaKernel {
   const char* name;  // the registry name: "swar", "sse2", "sse41", "avx2", "avx512bw", "neon"
   // Bytes from the start of a window row this kernel may read, for radius S (>= 2S+10).
   int (*row_bytes)(int radius);
+  // SPEC §3 step 1 for `q` = prev(i+2, j+2), or null for the portable SWAR form (which
+  // counts its 6 operations).
+  std::uint16_t (*feature)(const std::uint8_t* q, std::ptrdiff_t stride);
   // SPEC §3 step 2: the first candidate in raster order (dy outer, dx inner) with the smallest
   // SAD. `counts` is non-null only for kernels that count their 4-byte operations.
-  BlockMatch (*search)(Block prev, Window next, OpCounts* counts);
+  BlockMatch (*search)(Block prev, Window next, int radius, OpCounts* counts);
   // SPEC §3 step 3: sub[k] for k = 0..7. `around` points at P(-1, -1) of the matched block
   // (window row dy+S, column dx+S); reads stay within P(-1..8, -1..8).
   void (*half_pixel)(Block prev, const std::uint8_t* around, std::ptrdiff_t stride,

@@ -10,8 +10,8 @@ namespace {
 
 int row_bytes(int radius) { return 2 * radius + 10; }
 
-BlockMatch search(Block prev, Window next, OpCounts*) {
-  const int S = next.radius;
+BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
+  const int S = radius;
   uint8x8_t block[8];
   for (int r = 0; r < 8; ++r) block[r] = vld1_u8(prev.data + r * prev.stride);
   BlockMatch best{0, 0, 0xFFFFFFFFu};  // SPEC §3 sentinel
@@ -71,7 +71,7 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
 }  // namespace
 
 const IsaKernel& neon_kernel() {
-  static const IsaKernel k{"neon", row_bytes, search, half_pixel, false};
+  static const IsaKernel k{"neon", row_bytes, nullptr, search, half_pixel, false};
   return k;
 }
 

@@ -44,7 +44,7 @@ Window copy_window(const FrameView& next, int x0, int y0, int side, int row_byte
   const int stride = (row_bytes + 15) / 16 * 16;
   std::memset(copy.bytes, 0, static_cast<std::size_t>(side) * stride);
   for (int r = 0; r < side; ++r) copy_row(copy.bytes + r * stride, next.row(y0 + r) + x0, side);
-  return {copy.bytes, stride, 0};
+  return {copy.bytes, stride};
 }
 
 // SPEC §3 step 1 in the firmware's shape: three USAD8 of vertically adjacent 4-byte rows and
@@ -80,19 +80,19 @@ void run_poi(const PoiContext& ctx, int x, int y, PoiRecord& rec) {
   rec.x = static_cast<std::uint16_t>(x);
   rec.y = static_cast<std::uint16_t>(y);
   rec.dir = kDirNone;
-  rec.feature = feature(ctx.pair.prev, x, y, ctx.counts);
+  rec.feature = ctx.kernel.feature
+                    ? ctx.kernel.feature(ctx.pair.prev.row(y + 2) + x + 2, ctx.pair.prev.stride)
+                    : feature(ctx.pair.prev, x, y, ctx.counts);
   if (rec.feature < ctx.p.feature_threshold) {
     rec.status = kDropped;
     return;
   }
   const FrameView& next = ctx.pair.next;
-  Window w{next.row(y - S - 1) + (x - S - 1), next.stride, S};
-  if (x - S - 1 + ctx.row_bytes > next.width) {
+  Window w{next.row(y - S - 1) + (x - S - 1), next.stride};
+  if (x - S - 1 + ctx.row_bytes > next.width)
     w = copy_window(next, x - S - 1, y - S - 1, 2 * S + 10, ctx.row_bytes, ctx.copy);
-    w.radius = S;
-  }
   const Block block{ctx.pair.prev.row(y) + x, ctx.pair.prev.stride};
-  const BlockMatch m = ctx.kernel.search(block, w, ctx.counts);
+  const BlockMatch m = ctx.kernel.search(block, w, S, ctx.counts);
   rec.dx = static_cast<std::int8_t>(m.dx);
   rec.dy = static_cast<std::int8_t>(m.dy);
   rec.sad = static_cast<std::uint16_t>(m.sad);

@@ -4,6 +4,7 @@
 #include <emmintrin.h>
 
 #include "cpu_kernel.hpp"
+#include "x86_feature.hpp"
 #include "x86_half_pixel.hpp"
 
 namespace pxflow::cpu {
@@ -19,8 +20,8 @@ inline __m128i two_rows(const std::uint8_t* p, std::ptrdiff_t stride) {
   return _mm_unpacklo_epi64(load8(p), load8(p + stride));
 }
 
-BlockMatch search(Block prev, Window next, OpCounts*) {
-  const int S = next.radius;
+BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
+  const int S = radius;
   __m128i block[4];
   for (int q = 0; q < 4; ++q) block[q] = two_rows(prev.data + 2 * q * prev.stride, prev.stride);
   BlockMatch best{0, 0, 0xFFFFFFFFu};  // SPEC §3 sentinel
@@ -47,7 +48,7 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
 }  // namespace
 
 const IsaKernel& sse2_kernel() {
-  static const IsaKernel k{"sse2", row_bytes, search, half_pixel, false};
+  static const IsaKernel k{"sse2", row_bytes, feature_sse2, search, half_pixel, false};
   return k;
 }
 

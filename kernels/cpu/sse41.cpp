@@ -6,6 +6,7 @@
 
 #include "cpu_kernel.hpp"
 #include "x86_argmin.hpp"
+#include "x86_feature.hpp"
 #include "x86_half_pixel.hpp"
 
 namespace pxflow::cpu {
@@ -26,8 +27,8 @@ inline __m128i load16(const std::uint8_t* p) {
   return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
 }
 
-BlockMatch search(Block prev, Window next, OpCounts*) {
-  const int S = next.radius;
+BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
+  const int S = radius;
   const int chunks = chunks_of_8(S);
   __m128i block[8];  // dword 0: columns 0..3 of row r, dword 1: columns 4..7
   for (int r = 0; r < 8; ++r)
@@ -57,7 +58,7 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
 }  // namespace
 
 const IsaKernel& sse41_kernel() {
-  static const IsaKernel k{"sse41", row_bytes, search, half_pixel, false};
+  static const IsaKernel k{"sse41", row_bytes, feature_sse2, search, half_pixel, false};
   return k;
 }
 

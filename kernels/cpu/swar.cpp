@@ -36,8 +36,8 @@ std::uint32_t block_sad(const BlockWords& b, Word&& word) {
   return acc;
 }
 
-BlockMatch search(Block prev, Window next, OpCounts* counts) {
-  const int S = next.radius;
+BlockMatch search(Block prev, Window next, int radius, OpCounts* counts) {
+  const int S = radius;
   const BlockWords b = block_words(prev);
   BlockMatch best{0, 0, 0xFFFFFFFFu};  // SPEC §3 sentinel
   for (int dy = -S; dy <= S; ++dy) {
@@ -78,7 +78,7 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
 }  // namespace
 
 const IsaKernel& swar_kernel() {
-  static const IsaKernel k{"swar", row_bytes, search, half_pixel, true};
+  static const IsaKernel k{"swar", row_bytes, nullptr, search, half_pixel, true};
   return k;
 }
 
