@@ -7,6 +7,9 @@
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "pxflow_app.hpp"
+#ifdef PXFLOW_WITH_CPU_SIMD
+#include "isa_mask.hpp"
+#endif
 
 namespace pxflow {
 
@@ -15,6 +18,12 @@ int run_pxflow(int argc, char** argv) {
   CLI::App app{"pxflow: the PX4FLOW optical-flow kernel, cross-checked bit for bit across backends"};
   app.set_version_flag("--version", "pxflow 0.1");
   app.require_subcommand(1);
+  app.fallthrough();  // global options may follow the subcommand
+#ifdef PXFLOW_WITH_CPU_SIMD
+  std::string disabled_isas;
+  app.add_option("--disable-isa", disabled_isas,
+                 "Mask CPU ISAs for this run, e.g. avx512bw,avx2 (replaces PXFLOW_DISABLE)");
+#endif
   std::vector<cli::Command> commands = {cli::add_flow_command(app), cli::add_check_command(app),
                                         cli::add_bench_command(app), cli::add_report_command(app),
                                         cli::add_backends_command(app)};
@@ -39,6 +48,9 @@ int run_pxflow(int argc, char** argv) {
     return 2;
   }
   try {
+#ifdef PXFLOW_WITH_CPU_SIMD
+    if (!disabled_isas.empty()) cpu::set_disabled_isas(disabled_isas);
+#endif
     for (const auto& c : commands)
       if (c.app->parsed()) return c.run();
     return 2;

@@ -118,3 +118,18 @@ TEST_CASE("text summary and the backend list", "[cli]") {
   CHECK(help.exit_code == 0);
   CHECK(help.out.find("--set") != std::string::npos);
 }
+
+TEST_CASE("--disable-isa masks CPU paths for one run", "[cli][cpu]") {
+  const auto list = run_pxflow({"backends"});
+  if (list.out.find("avx2 ") == std::string::npos) {
+    WARN("no avx2 row compiled into this build: nothing to mask");
+    return;
+  }
+  const auto masked = run_pxflow({"backends", "--disable-isa", "avx2"});
+  CHECK(masked.exit_code == 0);
+  CHECK(masked.out.find("masked by --disable-isa") != std::string::npos);
+  const auto bad = run_pxflow({"backends", "--disable-isa", "mmx"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.err_lines() == 1);
+  CHECK(bad.err.find("unknown ISA 'mmx'") != std::string::npos);
+}
