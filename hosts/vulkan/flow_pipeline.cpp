@@ -17,7 +17,8 @@ constexpr std::uint32_t kPreferredLocalSize = 64;
 
 }  // namespace
 
-FlowPipeline::FlowPipeline(const Context& ctx) : device_(ctx.device()) {
+FlowPipeline::FlowPipeline(const Context& ctx, int search_radius)
+    : device_(ctx.device()), search_radius_(search_radius) {
   const auto& limits = ctx.properties().limits;
   local_size_ = std::min({kPreferredLocalSize, limits.maxComputeWorkGroupSize[0],
                           limits.maxComputeWorkGroupInvocations});
@@ -74,8 +75,11 @@ void FlowPipeline::create_pipeline() {
   module.codeSize = sizeof(k_flow_spirv);
   module.pCode = k_flow_spirv;
   check(vkCreateShaderModule(device_, &module, nullptr, &shader_), "vkCreateShaderModule");
-  VkSpecializationMapEntry entry{0, 0, sizeof(std::uint32_t)};  // constant_id 0 = local_size_x
-  VkSpecializationInfo spec{1, &entry, sizeof(local_size_), &local_size_};
+  // constant_id 0 = local_size_x, constant_id 1 = S.
+  const std::int32_t values[2] = {static_cast<std::int32_t>(local_size_), search_radius_};
+  const VkSpecializationMapEntry entries[2] = {{0, 0, sizeof(std::int32_t)},
+                                               {1, sizeof(std::int32_t), sizeof(std::int32_t)}};
+  const VkSpecializationInfo spec{2, entries, sizeof(values), values};
   auto info = zeroed<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
   info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

@@ -1,6 +1,8 @@
-// The compute pipeline of kernels/vulkan/flow.comp: shader module, descriptor set (frames,
-// records), push constants, and the pipeline itself. Built once per backend object: lavapipe
-// JIT-compiles at vkCreateComputePipelines, which takes a noticeable fraction of a second.
+// The compute pipeline of kernels/vulkan/flow.comp for one search radius: shader module,
+// descriptor set (frames, records), push constants, and the pipeline itself. S is a
+// specialization constant (the driver unrolls the search loops for it), so a backend keeps one
+// pipeline per radius it has seen: lavapipe JIT-compiles at vkCreateComputePipelines, which
+// takes a noticeable fraction of a second.
 #pragma once
 #include <vulkan/vulkan.h>
 
@@ -29,7 +31,7 @@ struct FlowPushConstants {
 
 class FlowPipeline {
  public:
-  explicit FlowPipeline(const Context& ctx);  // throws BackendError
+  FlowPipeline(const Context& ctx, int search_radius);  // throws BackendError
   ~FlowPipeline();
   FlowPipeline(const FlowPipeline&) = delete;
   FlowPipeline& operator=(const FlowPipeline&) = delete;
@@ -52,6 +54,7 @@ class FlowPipeline {
 
   VkDevice device_;
   std::uint32_t local_size_ = 64;
+  std::int32_t search_radius_;
   VkShaderModule shader_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;

@@ -75,7 +75,7 @@ void barrier_to_host(VkCommandBuffer cmd) {
 
 VulkanBackend::VulkanBackend(const VulkanConfig& config) : config_(config) {
   ctx_ = std::make_unique<vk::Context>(vk::ContextOptions{config.device, config.validation});
-  pipeline_ = std::make_unique<vk::FlowPipeline>(*ctx_);
+  pipeline_for(profile("px4flow-64").search_radius);  // a broken pipeline fails create() early
   runner_ = std::make_unique<vk::CommandRunner>(*ctx_);
   fail_on_validation_messages();
 }
@@ -88,8 +88,13 @@ VulkanBackend::~VulkanBackend() {
   records_.reset();
   frames_.reset();
   runner_.reset();
-  pipeline_.reset();
+  pipelines_.clear();
   ctx_.reset();
+}
+
+std::optional<Backend::DeviceTime> VulkanBackend::last_device_time() const {
+  if (!last_device_seconds_) return std::nullopt;
+  return DeviceTime{"vulkan-timestamps", *last_device_seconds_ * 1e9, std::nullopt};
 }
 
 std::string VulkanBackend::device_name() const { return ctx_->properties().deviceName; }
@@ -134,6 +139,12 @@ void VulkanBackend::run(std::span<const FramePair> pairs, const Params& p, std::
   if (timed && last_chunks_ > 0) last_device_seconds_ = device_ns * 1e-9;
 }
 
+vk::FlowPipeline& VulkanBackend::pipeline_for(int search_radius) {
+  auto& slot = pipelines_[search_radius];
+  if (!slot) slot = std::make_unique<vk::FlowPipeline>(*ctx_, search_radius);
+  return *slot;
+}
+
 void VulkanBackend::ensure_buffers(std::uint64_t frame_bytes, std::uint64_t record_bytes) {
   if (frames_ && records_ && frames_->size() >= frame_bytes && records_->size() >= record_bytes)
     return;
@@ -141,7 +152,6 @@ void VulkanBackend::ensure_buffers(std::uint64_t frame_bytes, std::uint64_t reco
   frames_.reset();
   frames_ = std::make_unique<vk::HostBuffer>(*ctx_, frame_bytes);
   records_ = std::make_unique<vk::HostBuffer>(*ctx_, record_bytes);
-  pipeline_->bind_buffers(frames_->buffer(), records_->buffer());
 }
 
 void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
@@ -153,7 +163,9 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
     pack_frame(pairs[n].prev, prev, layout.words_per_frame);
     pack_frame(pairs[n].next, prev + layout.pair_bytes / 2, layout.words_per_frame);
   }
-  const std::uint32_t local = pipeline_->local_size();
+  vk::FlowPipeline& pipeline = pipeline_for(p.search_radius);
+  pipeline.bind_buffers(frames_->buffer(), records_->buffer());  // no submission is pending here
+  const std::uint32_t local = pipeline.local_size();
   const std::uint32_t max_groups = config_.max_groups_per_dispatch
                                        ? config_.max_groups_per_dispatch
                                        : ctx_->properties().limits.maxComputeWorkGroupCount[0];
@@ -162,11 +174,11 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
   vk::FlowPushConstants pc = push_constants(p, layout);
   runner_->run(
       [&](VkCommandBuffer cmd) {
-        pipeline_->bind(cmd);
+        pipeline.bind(cmd);
         for (std::uint64_t first = 0; first < items; first += per_dispatch) {
           pc.first_item = static_cast<std::uint32_t>(first);
           pc.item_count = static_cast<std::uint32_t>(std::min(per_dispatch, items - first));
-          pipeline_->push(cmd, pc);
+          pipeline.push(cmd, pc);
           vkCmdDispatch(cmd, (pc.item_count + local - 1) / local, 1, 1);
           ++last_dispatches_;
         }

@@ -3,6 +3,7 @@
 // offer: validation, chunk limits, the device time of the last run.
 #pragma once
 #include <chrono>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,6 +44,8 @@ class VulkanBackend final : public Backend {
   // Device time of the last run(), summed over its chunks (timestamp queries), in seconds;
   // empty when the queue has no timestamps or no run completed.
   std::optional<double> last_device_seconds() const { return last_device_seconds_; }
+  // The same as Backend::DeviceTime, source "vulkan-timestamps", for the benchmark.
+  std::optional<DeviceTime> last_device_time() const override;
   // Chunks (submissions) and dispatches the last run() used.
   std::size_t last_chunks() const { return last_chunks_; }
   std::size_t last_dispatches() const { return last_dispatches_; }
@@ -52,13 +55,14 @@ class VulkanBackend final : public Backend {
 
  private:
   std::uint64_t buffer_limit() const;
+  vk::FlowPipeline& pipeline_for(int search_radius);
   void ensure_buffers(std::uint64_t frame_bytes, std::uint64_t record_bytes);
   void run_chunk(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out);
   void fail_on_validation_messages() const;
 
   VulkanConfig config_;
   std::unique_ptr<vk::Context> ctx_;
-  std::unique_ptr<vk::FlowPipeline> pipeline_;
+  std::map<int, std::unique_ptr<vk::FlowPipeline>> pipelines_;  // by search radius
   std::unique_ptr<vk::CommandRunner> runner_;
   std::unique_ptr<vk::HostBuffer> frames_;
   std::unique_ptr<vk::HostBuffer> records_;

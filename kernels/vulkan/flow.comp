@@ -23,7 +23,7 @@ layout(std430, set = 0, binding = 1) writeonly buffer Records { uint record_word
 
 layout(push_constant) uniform Problem {
   uint width;              // W = row stride in pixels
-  uint search_radius;      // S
+  uint search_radius;      // S, unused: the shader reads the specialization constant S
   uint feature_threshold;  // FT
   uint sad_threshold;      // VT
   uint grid_x0;            // first POI column, column step, POIs per grid row (SPEC §2)
@@ -70,14 +70,59 @@ uint feature_value(uint prev, uint n) {
   return sum;
 }
 
-// Step 2's SAD of the block (packed in blk) against next at pixel n, rows of 2 words.
-uint block_sad(uint blk[16], uint next, uint n) {
-  uint sad = 0u;
-  for (int r = 0; r < 8; ++r) {
-    uint m = n + uint(r) * pc.width;
-    sad += usad8(blk[2 * r], load4(next, m)) + usad8(blk[2 * r + 1], load4(next, m + 4u));
+// Step 2, the integer search, dy outer, dx inner (raster order). For one dy and one block row r,
+// the candidates dx = -S..S all read the same 2S+8 pixels of next: they are unpacked once into
+// `seg` and every candidate's row SAD comes from registers. S is a specialization constant, so
+// the loops over dx, c and the segment have constant trip counts that the driver unrolls, and
+// `seg` and `sad` live in registers instead of memory.
+layout(constant_id = 1) const int S = 4;
+const int kSide = 2 * S + 1;           // candidates per axis
+const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of one row
+
+// Only a STRICTLY smaller SAD replaces, so ties keep the first candidate in raster order.
+void integer_search(uint prev, uint next, uint n, out uint best, out int bx, out int by) {
+  best = 0xFFFFFFFFu;
+  bx = 0;
+  by = 0;
+  for (int dy = -S; dy <= S; ++dy) {
+    uint sad[kSide];
+    for (int k = 0; k < kSide; ++k) sad[k] = 0u;
+    for (int r = 0; r < 8; ++r) {
+      uint row = n + uint(r) * pc.width;
+      uint p0 = load4(prev, row);
+      uint p1 = load4(prev, row + 4u);
+      int pv[8];
+      for (int c = 0; c < 4; ++c) {
+        pv[c] = int((p0 >> (8u * uint(c))) & 0xFFu);
+        pv[c + 4] = int((p1 >> (8u * uint(c))) & 0xFFu);
+      }
+      // The 4 * kSegWords pixels of next from column x - S of row y + r + dy, unpacked. (Arrays
+      // sized by S stay in this function: passing them to functions breaks SPIR-V validation.)
+      uint m = uint(int(row) + dy * int(pc.width) - S);
+      uint q = next + (m >> 2);
+      uint sh = (m & 3u) * 8u;
+      uint lo = frame_words[q];
+      int seg[kSegWords * 4];
+      for (int k = 0; k < kSegWords; ++k) {
+        uint hi = frame_words[q + uint(k) + 1u];
+        uint w = (lo >> sh) | ((hi << 1u) << (31u - sh));
+        lo = hi;
+        for (int j = 0; j < 4; ++j) seg[4 * k + j] = int((w >> (8u * uint(j))) & 0xFFu);
+      }
+      for (int dx = 0; dx < kSide; ++dx) {
+        int acc = 0;
+        for (int c = 0; c < 8; ++c) acc += abs(pv[c] - seg[dx + c]);
+        sad[dx] += uint(acc);
+      }
+    }
+    for (int k = 0; k < kSide; ++k) {
+      if (sad[k] < best) {
+        best = sad[k];
+        bx = k - S;
+        by = dy;
+      }
+    }
   }
-  return sad;
 }
 
 // The packed values of one row of the matched block's neighbourhood, for the 4 columns 4*q ..
@@ -154,30 +199,19 @@ void main() {
     return;
   }
 
+  uint best;
+  int bx;
+  int by;
+  integer_search(prev, next, n, best, bx, by);
+  if (!(best < pc.sad_threshold)) {
+    write_record(item, x, y, 1u, feature, bx, by, best, 8u, zero, 0, 0);
+    return;
+  }
+
   uint blk[16];
   for (int r = 0; r < 8; ++r) {
     blk[2 * r] = load4(prev, n + uint(r) * pc.width);
     blk[2 * r + 1] = load4(prev, n + uint(r) * pc.width + 4u);
-  }
-
-  // Raster order, dy outer; only a STRICTLY smaller SAD replaces, so ties keep the first.
-  int S = int(pc.search_radius);
-  uint best = 0xFFFFFFFFu;
-  int bx = 0;
-  int by = 0;
-  for (int dy = -S; dy <= S; ++dy) {
-    for (int dx = -S; dx <= S; ++dx) {
-      uint sad = block_sad(blk, next, uint(int(n) + dy * int(pc.width) + dx));
-      if (sad < best) {
-        best = sad;
-        bx = dx;
-        by = dy;
-      }
-    }
-  }
-  if (!(best < pc.sad_threshold)) {
-    write_record(item, x, y, 1u, feature, bx, by, best, 8u, zero, 0, 0);
-    return;
   }
 
   uint sub[8];
