@@ -1,0 +1,67 @@
+#include "gap8_backend.hpp"
+
+#include <bit>
+#include <cstring>
+
+#include "errors.hpp"
+#include "estimate.hpp"
+#include "grid.hpp"
+
+namespace pxflow {
+namespace {
+
+// The kernel's estimate must be the host's, bit for bit (SPEC §5: the same float operations in
+// the same order, soft-float on the core).
+void check_estimate(std::span<const PoiRecord> records, const Params& p,
+                    const pxflow_gap8_result& kernel, std::size_t pair) {
+  const FrameResult host = estimate_flow(records, p);
+  if (std::bit_cast<std::uint32_t>(host.flow_x) != std::bit_cast<std::uint32_t>(kernel.flow_x) ||
+      std::bit_cast<std::uint32_t>(host.flow_y) != std::bit_cast<std::uint32_t>(kernel.flow_y) ||
+      host.quality != kernel.quality || host.meancount != kernel.meancount)
+    throw BackendError("gap8: the kernel's estimate of pair " + std::to_string(pair) + " (" +
+                       std::to_string(kernel.flow_x) + ", " + std::to_string(kernel.flow_y) +
+                       ", quality " + std::to_string(kernel.quality) +
+                       ") differs from estimate_flow of its records (" +
+                       std::to_string(host.flow_x) + ", " + std::to_string(host.flow_y) +
+                       ", quality " + std::to_string(host.quality) + ")");
+}
+
+}  // namespace
+
+Gap8Backend::Gap8Backend(std::string_view variant, gap8_host::RunOptions options)
+    : variant_(variant), runner_(variant), options_(options) {}
+
+void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p,
+                      std::span<PoiRecord> out, OpCounts& counts) {
+  last_time_.reset();
+  const std::size_t pois = poi_count(p);
+  if (out.size() != pairs.size() * pois) throw BackendError("gap8: output size mismatch");
+  gap8_host::BatchStats stats = runner_.run(pairs, p, out, options_);
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    check_estimate(out.subspan(i * pois, pois), p, stats.pairs[i], i);
+  counts += gap8_counts(variant_, out, p, pairs.size());
+  const double cycles = static_cast<double>(stats.cycles);
+  last_time_ = DeviceTime{"gap8-model-cycles", cycles / kGap8ClockHz * 1e9, cycles};
+  last_stats_ = std::move(stats);
+}
+
+OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> records,
+                     const Params& p, std::size_t pairs) {
+  OpCounts c;
+  c.counted = true;
+  const std::uint64_t candidates = (2 * p.search_radius + 1) * (2 * p.search_radius + 1);
+  std::uint64_t accepted = 0;
+  for (const PoiRecord& r : records) {
+    c.sad_ops += 6;
+    if (r.status != kDropped) c.sad_ops += 16 * candidates;
+    if (r.status == kAccepted) ++accepted;
+  }
+  c.sad_ops += 128 * accepted;
+  if (variant == "original") c.interpolations = 768 * accepted;
+  if (variant == "local") c.interpolations = 300 * accepted;
+  if (variant == "global")
+    c.interpolations = std::uint64_t{3} * p.width * p.height * static_cast<std::uint64_t>(pairs);
+  return c;
+}
+
+}  // namespace pxflow

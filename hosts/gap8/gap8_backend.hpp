@@ -1,0 +1,41 @@
+// The GAP8 backends (`gap8-original`, `gap8-local`, `gap8-global`): the kernel of kernels/gap8
+// on the cluster model, all 8 cores, TCDM contention on. Besides the records, each run checks
+// the kernel's own soft-float estimate against estimate_flow() of its records.
+#pragma once
+#include <optional>
+#include <string>
+
+#include "backend.hpp"
+#include "gap8_flow_runner.hpp"
+
+namespace pxflow {
+
+class Gap8Backend : public Backend {
+ public:
+  Gap8Backend(std::string_view variant, gap8_host::RunOptions options);
+
+  void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+           OpCounts& counts) override;
+  std::string unsupported(const Params& p) const override { return runner_.unsupported(p); }
+  std::optional<DeviceTime> last_device_time() const override { return last_time_; }
+
+  // The model's statistics of the last run() (per pair and per core).
+  const gap8_host::BatchStats& last_stats() const { return last_stats_; }
+
+ private:
+  std::string variant_;
+  gap8_host::FlowRunner runner_;
+  gap8_host::RunOptions options_;
+  gap8_host::BatchStats last_stats_;
+  std::optional<DeviceTime> last_time_;
+};
+
+// The model's clock (the paper's operating point): cycles to nanoseconds.
+inline constexpr double kGap8ClockHz = 50e6;
+
+// Work of one batch as docs/counting.md charges it, derived from the records (the kernel does
+// exactly this work): SAD operations, and the variant's interpolations.
+OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> records,
+                     const Params& p, std::size_t pairs);
+
+}  // namespace pxflow

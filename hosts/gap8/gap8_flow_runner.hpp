@@ -1,0 +1,59 @@
+// Runs the GAP8 flow kernel (kernels/gap8) on the cluster model: loads the embedded ELF once,
+// then per run builds a fresh cluster from that image, writes the parameter block and the frames
+// into L2, runs, and reads records, the kernel's own estimate and the counters back.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "flow_abi.h"
+#include "frame.hpp"
+#include "gap8/perf.h"
+#include "params.hpp"
+#include "record.hpp"
+
+namespace pxflow::gap8_host {
+
+struct RunOptions {
+  int cores = 8;            // cluster size and team size, 1..8
+  bool contention = true;   // TCDM bank conflicts modelled
+  bool chunked = false;     // POIs split in contiguous chunks instead of round robin
+};
+
+// What one batch cost on the model, and what the kernel reported per pair.
+struct BatchStats {
+  std::uint64_t cycles = 0;                      // cluster cycles, every run of the batch
+  std::vector<pxflow_gap8_result> pairs;         // per pair: estimate and cycle breakdown
+  std::vector<gap8::EventTotals> cores;          // per core: counters summed over the runs
+};
+
+class FlowRunner {
+ public:
+  // `variant`: "original", "local" or "global". Throws BackendError when the image is missing
+  // or cannot be loaded.
+  explicit FlowRunner(std::string_view variant);
+
+  // Empty when a problem of these parameters fits L1 and L2; else the limit it is outside.
+  std::string unsupported(const Params& p) const;
+
+  // Writes poi_count(p) records per pair into `out`. Throws BackendError on a fault, a non-zero
+  // exit status or an unsupported problem.
+  BatchStats run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+                 const RunOptions& options) const;
+
+ private:
+  std::size_t run_chunk(std::span<const FramePair> pairs, const Params& p,
+                        std::span<PoiRecord> out, const RunOptions& options,
+                        BatchStats& stats) const;
+
+  std::vector<std::uint8_t> l2_image_;  // L2 bytes [L2 base, L2 base + size) after loading
+  std::uint32_t entry_ = 0;
+  std::uint32_t params_addr_ = 0;
+  std::uint32_t io_base_ = 0;       // first free L2 byte after the image's .bss
+  std::uint32_t l1_heap_bytes_ = 0;
+  std::uint32_t planes_ = 0;        // full-frame planes of the variant in L1
+};
+
+}  // namespace pxflow::gap8_host

@@ -1,0 +1,41 @@
+/* What the parts of the GAP8 flow kernel share: the run's context in L1 and the per-variant
+ * hooks. One ELF per variant links flow_main.c, flow_poi.c, flow_estimate.c and one
+ * half_<variant>.c. */
+#ifndef PXFLOW_GAP8_FLOW_KERNEL_H
+#define PXFLOW_GAP8_FLOW_KERNEL_H
+
+#include <stdint.h>
+
+#include "flow_abi.h"
+
+typedef struct {
+  uint32_t width, height, search_radius;
+  uint32_t feature_threshold, sad_threshold;
+  uint32_t cores, split;
+  uint32_t pois;
+  const uint8_t *prev, *next; /* L1 */
+  uint8_t *planes[3];         /* L1: h, g, d of the whole next frame (global variant only) */
+  const uint16_t *poi_xy;     /* L1: x, y of each POI in grid order */
+  pxflow_gap8_record *records; /* L1 */
+} flow_ctx;
+
+/* Number of full-frame planes the variant keeps in L1 (3 for global, else 0). */
+extern const uint32_t variant_planes;
+
+/* Runs on every team core before any POI; the global variant builds its planes here (and
+ * synchronises the team itself). */
+void variant_prepare(const flow_ctx *c, uint32_t core);
+
+/* The eight half-pixel SADs of prev's block `blk` (row stride W) against the neighbourhood of
+ * the matched 8x8 block of next, whose top-left corner is (mx, my). */
+void variant_half_sads(const flow_ctx *c, const uint8_t *blk, uint32_t mx, uint32_t my,
+                       uint32_t sub[8]);
+
+/* The team's entry point: every POI of this core, as flow_poi.c computes it. */
+void flow_team_entry(void *ctx);
+
+/* Histograms and the frame estimate of SPEC §5 (HF on or off; no gyro), soft-float. */
+void flow_estimate(const pxflow_gap8_record *records, uint32_t pois,
+                   const pxflow_gap8_params *p, pxflow_gap8_result *out);
+
+#endif

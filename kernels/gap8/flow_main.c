@@ -1,0 +1,111 @@
+/* The GAP8 flow kernel's master (cluster core 0), per frame pair: start the DMA of both frames
+ * into L1, compute the POI grid and clear the records while it runs, wait, fork the team over
+ * the POIs, then build the histograms and the float estimate, and send everything back to L2.
+ * The host writes pxflow_params before the run (docs/gap8-kernel.md). */
+#include <pmsis.h>
+
+#include "flow_kernel.h"
+
+/* In .data, not .bss: the start-up code clears .bss after the host has written it. */
+volatile pxflow_gap8_params pxflow_params __attribute__((section(".data"))) = {0};
+
+static uint32_t cycles_now(void) { return pi_perf_read(PI_PERF_CYCLES); }
+
+/* Grid per axis (SPEC §2): lo = S+1, hi = side-(S+1)-8, step = (hi-lo)/B + 1, values < hi. */
+typedef struct {
+  int lo, step;
+  uint32_t count;
+} grid_axis;
+
+static grid_axis make_axis(uint32_t side, const pxflow_gap8_params *p) {
+  grid_axis a;
+  a.lo = (int)p->search_radius + 1;
+  const int hi = (int)side - a.lo - 8;
+  a.step = (hi - a.lo) / (int)p->blocks + 1;
+  a.count = hi > a.lo ? (uint32_t)((hi - a.lo + a.step - 1) / a.step) : 0;
+  return a;
+}
+
+/* Writes the x, y pairs of every POI in record order (y outer, x inner). */
+static void build_grid(const pxflow_gap8_params *p, uint16_t *xy) {
+  const grid_axis ax = make_axis(p->width, p), ay = make_axis(p->height, p);
+  for (uint32_t j = 0, y = ay.lo; j < ay.count; ++j, y += ay.step) {
+    for (uint32_t i = 0, x = ax.lo; i < ax.count; ++i, x += ax.step) {
+      *xy++ = (uint16_t)x;
+      *xy++ = (uint16_t)y;
+    }
+  }
+}
+
+static void clear_words(void *dst, uint32_t bytes) {
+  uint32_t *w = dst;
+  for (uint32_t n = 0; n < bytes / 4; ++n) w[n] = 0;
+}
+
+static void run_pair(const pxflow_gap8_params *p, flow_ctx *c, uint32_t pair) {
+  const uint32_t frame = p->width * p->height;
+  const uint32_t rec_bytes = c->pois * (uint32_t)sizeof(pxflow_gap8_record);
+  pxflow_gap8_result r = {0};
+  const uint32_t t0 = cycles_now();
+  pi_cl_dma_cmd_t prev_cmd, next_cmd, out_cmd;
+  const uint32_t src = p->frames_l2 + 2 * pair * frame;
+  pi_cl_dma_cmd(src, (uint32_t)c->prev, frame, PI_CL_DMA_DIR_EXT2LOC, &prev_cmd);
+  pi_cl_dma_cmd(src + frame, (uint32_t)c->next, frame, PI_CL_DMA_DIR_EXT2LOC, &next_cmd);
+  build_grid(p, (uint16_t *)c->poi_xy);
+  clear_words(c->records, rec_bytes);
+  const uint32_t t1 = cycles_now();
+  pi_cl_dma_cmd_wait(&prev_cmd);
+  pi_cl_dma_cmd_wait(&next_cmd);
+  const uint32_t t2 = cycles_now();
+  pi_cl_team_fork((int)c->cores, flow_team_entry, c);
+  const uint32_t t3 = cycles_now();
+  flow_estimate(c->records, c->pois, p, &r);
+  const uint32_t t4 = cycles_now();
+  pi_cl_dma_cmd(p->records_l2 + pair * rec_bytes, (uint32_t)c->records, rec_bytes,
+                PI_CL_DMA_DIR_LOC2EXT, &out_cmd);
+  pi_cl_dma_cmd_wait(&out_cmd);
+  const uint32_t t5 = cycles_now();
+  r.pois = c->pois;
+  r.cycles_init = t1 - t0;
+  r.cycles_dma = t2 - t0;
+  r.cycles_flow = t3 - t2;
+  r.cycles_averaging = t4 - t3;
+  r.cycles_output = t5 - t4;
+  r.cycles_total = t5 - t0;
+  ((pxflow_gap8_result *)p->results_l2)[pair] = r;
+}
+
+static int valid(const pxflow_gap8_params *p) {
+  return p->magic == PXFLOW_GAP8_MAGIC && p->cores >= 1 && p->cores <= 8 && p->blocks >= 1 &&
+         p->search_radius >= 1 && p->search_radius <= 31 &&
+         p->width >= 2 * p->search_radius + 10 && p->height >= 2 * p->search_radius + 10;
+}
+
+int main(void) {
+  const pxflow_gap8_params p = pxflow_params;
+  if (!valid(&p)) return PXFLOW_GAP8_BAD_PARAMS;
+  flow_ctx c = {0};
+  c.width = p.width;
+  c.height = p.height;
+  c.search_radius = p.search_radius;
+  c.feature_threshold = p.feature_threshold;
+  c.sad_threshold = p.sad_threshold;
+  c.cores = p.cores;
+  c.split = p.split;
+  c.pois = make_axis(p.width, &p).count * make_axis(p.height, &p).count;
+  const uint32_t frame = pxflow_gap8_frame_l1_bytes(p.width, p.height);
+  uint8_t *l1 = pi_cl_l1_malloc(0, pxflow_gap8_l1_bytes(p.width, p.height, c.pois,
+                                                        variant_planes));
+  if (!l1) return PXFLOW_GAP8_NO_L1;
+  c.prev = l1;
+  c.next = l1 + frame;
+  for (uint32_t k = 0; k < variant_planes; ++k) c.planes[k] = l1 + (2 + k) * frame;
+  c.poi_xy = (const uint16_t *)(l1 + (2 + variant_planes) * frame);
+  c.records = (pxflow_gap8_record *)((uint8_t *)c.poi_xy + ((c.pois * 4 + 7) & ~7u));
+  pi_perf_conf(1u << PI_PERF_CYCLES);
+  pi_perf_reset();
+  pi_perf_start();
+  for (uint32_t pair = 0; pair < p.pairs; ++pair) run_pair(&p, &c, pair);
+  pi_perf_stop();
+  return 0;
+}

@@ -1,0 +1,117 @@
+/* The per-POI kernel of SPEC §3 on one cluster core, shaped like the PX4FLOW firmware's
+ * compute_flow: feature test, full integer search, half-pixel refinement. Every 4-byte SAD is
+ * sad4_acc (four Xpulp instructions). */
+#include <pmsis.h>
+
+#include "flow_kernel.h"
+#include "flow_simd.h"
+
+/* Half-pixel step (sx, sy) of direction k; k = 8 is the integer match. */
+static const int8_t kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
+static const int8_t kStepY[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+
+/* 8x8 SAD, two 4-byte halves per row, as the firmware's compute_sad_8x8. */
+static uint32_t sad8x8(const uint8_t *a, const uint8_t *b, uint32_t w) {
+  uint32_t acc = 0;
+#pragma GCC unroll 8
+  for (int r = 0; r < 8; ++r) {
+    acc = sad4_acc(acc, ld4(a), ld4(b));
+    acc = sad4_acc(acc, ld4(a + 4), ld4(b + 4));
+    a += w;
+    b += w;
+  }
+  return acc;
+}
+
+/* Four bytes of a column, packed like the firmware's col1..col4 (lanes are independent). */
+static uint32_t column4(const uint8_t *p, uint32_t w) {
+  return (uint32_t)p[0] | (uint32_t)p[w] << 8 | (uint32_t)p[2 * w] << 16 |
+         (uint32_t)p[3 * w] << 24;
+}
+
+/* The firmware's compute_diff: 3 row and 3 column 4-byte differences of the central 4x4. */
+static uint32_t feature(const uint8_t *blk, uint32_t w) {
+  const uint8_t *q = blk + 2 * w + 2;
+  uint32_t acc = sad4_acc(0, ld4(q), ld4(q + w));
+  acc = sad4_acc(acc, ld4(q + w), ld4(q + 2 * w));
+  acc = sad4_acc(acc, ld4(q + 2 * w), ld4(q + 3 * w));
+  const uint32_t c0 = column4(q, w), c1 = column4(q + 1, w);
+  const uint32_t c2 = column4(q + 2, w), c3 = column4(q + 3, w);
+  acc = sad4_acc(acc, c0, c1);
+  acc = sad4_acc(acc, c1, c2);
+  return sad4_acc(acc, c2, c3);
+}
+
+/* Raster order over dy, dx in -S..S; a strictly smaller SAD replaces (ties keep the first). */
+static uint32_t integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, uint32_t y,
+                               int *bx, int *by) {
+  const int s = (int)c->search_radius;
+  const uint32_t w = c->width;
+  uint32_t best = 0xFFFFFFFFu;
+  for (int dy = -s; dy <= s; ++dy) {
+    const uint8_t *row = c->next + (y + dy) * w + x;
+    for (int dx = -s; dx <= s; ++dx) {
+      const uint32_t sad = sad8x8(blk, row + dx, w);
+      if (sad < best) {
+        best = sad;
+        *bx = dx;
+        *by = dy;
+      }
+    }
+  }
+  return best;
+}
+
+/* The half-pixel vote from (best, dir 8): k = 0..7 in order, strictly smaller replaces. */
+static void select_direction(pxflow_gap8_record *rec, uint32_t best, const uint32_t sub[8]) {
+  int dir = 8;
+  for (int k = 0; k < 8; ++k) {
+    rec->sub[k] = (uint16_t)sub[k];
+    if (sub[k] < best) {
+      best = sub[k];
+      dir = k;
+    }
+  }
+  rec->dir = (uint8_t)dir;
+  rec->hx = (int8_t)(2 * rec->dx + kStepX[dir]);
+  rec->hy = (int8_t)(2 * rec->dy + kStepY[dir]);
+}
+
+/* Fills the record of POI n; the master cleared it, so undefined fields stay 0. */
+static void flow_poi(const flow_ctx *c, uint32_t n) {
+  pxflow_gap8_record *rec = &c->records[n];
+  const uint32_t x = c->poi_xy[2 * n], y = c->poi_xy[2 * n + 1];
+  const uint32_t w = c->width;
+  const uint8_t *blk = c->prev + y * w + x;
+  rec->x = (uint16_t)x;
+  rec->y = (uint16_t)y;
+  rec->dir = 8;
+  rec->feature = (uint16_t)feature(blk, w);
+  if (rec->feature < c->feature_threshold) return; /* status 0 */
+  int bx = 0, by = 0;
+  const uint32_t best = integer_search(c, blk, x, y, &bx, &by);
+  rec->dx = (int8_t)bx;
+  rec->dy = (int8_t)by;
+  rec->sad = (uint16_t)best;
+  if (best >= c->sad_threshold) {
+    rec->status = 1;
+    return;
+  }
+  rec->status = 2;
+  uint32_t sub[8];
+  variant_half_sads(c, blk, x + bx, y + by, sub);
+  select_direction(rec, best, sub);
+}
+
+void flow_team_entry(void *arg) {
+  const flow_ctx *c = arg;
+  const uint32_t core = (uint32_t)pi_core_id();
+  variant_prepare(c, core);
+  if (c->split == PXFLOW_GAP8_SPLIT_CHUNKED) {
+    const uint32_t chunk = (c->pois + c->cores - 1) / c->cores;
+    const uint32_t end = (core + 1) * chunk < c->pois ? (core + 1) * chunk : c->pois;
+    for (uint32_t n = core * chunk; n < end; ++n) flow_poi(c, n);
+  } else {
+    for (uint32_t n = core; n < c->pois; n += c->cores) flow_poi(c, n);
+  }
+}
