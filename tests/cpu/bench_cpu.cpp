@@ -149,6 +149,7 @@ void run_row(benchmark::State& state, const std::string& row, int threads, const
   state.counters["frames_per_s"] =
       benchmark::Counter(static_cast<double>(frames), benchmark::Counter::kIsRate);
   state.counters["cycles_per_frame"] = per_frame;
+  state.counters["peak_frames_per_s"] = ctx.tsc_hz / per_frame;
   state.counters["bound_ratio"] = per_frame / bound;
   if (ctx.ref_cycles.count(pb.name))
     state.counters["speedup_vs_ref"] = ctx.ref_cycles[pb.name] / per_frame;
