@@ -47,11 +47,16 @@ OpenclBackend::OpenclBackend(const BackendOptions& options, const OpenclTuning& 
   kernel_.reset(clCreateKernel(program_->program.get(), kernel_name(tuning_.layout), &err));
   cl::check(err, std::string("clCreateKernel ") + kernel_name(tuning_.layout));
 
+  read_device_limits();
+}
+
+void OpenclBackend::read_device_limits() {
+  const cl_device_id device = program_->device.device;
   std::size_t kernel_max = 0;
   cl::check(clGetKernelWorkGroupInfo(kernel_.get(), device, CL_KERNEL_WORK_GROUP_SIZE,
                                      sizeof kernel_max, &kernel_max, nullptr),
             "clGetKernelWorkGroupInfo");
-  const std::size_t wanted = tuning.group_size ? tuning.group_size : kDefaultGroupSize;
+  const std::size_t wanted = tuning_.group_size ? tuning_.group_size : kDefaultGroupSize;
   group_size_ = std::min(wanted, floor_pow2(kernel_max));
 
   cl_ulong kernel_local = 0;
@@ -65,7 +70,7 @@ OpenclBackend::OpenclBackend(const BackendOptions& options, const OpenclTuning& 
   // Frames and records share global memory; leave room for other users of the device.
   limits_.chunk_bytes = static_cast<std::size_t>(std::min<cl_ulong>(max_alloc, global / 4));
   limits_.chunk_bytes = std::min(
-      limits_.chunk_bytes, tuning.max_chunk_bytes ? tuning.max_chunk_bytes : kDefaultChunkBytes);
+      limits_.chunk_bytes, tuning_.max_chunk_bytes ? tuning_.max_chunk_bytes : kDefaultChunkBytes);
 }
 
 OpenclBackend::~OpenclBackend() {

@@ -55,6 +55,7 @@ class OpenclBackend final : public Backend {
     std::size_t local_bytes = 0;  // local memory left for the kernel's dynamic arguments
   };
 
+  void read_device_limits();  // group size, local memory and buffer caps
   std::size_t pairs_per_chunk(const Params& p) const;
   std::size_t local_window_bytes(const Params& p) const;
   void reserve_buffers(std::size_t frame_bytes, std::size_t record_bytes);
