@@ -119,7 +119,7 @@ TEST_CASE("text summary and the backend list", "[cli]") {
   CHECK(help.out.find("--set") != std::string::npos);
 }
 
-TEST_CASE("--disable-isa masks CPU paths for one run", "[cli][cpu]") {
+TEST_CASE("disable-isa option masks CPU paths for one run", "[cli][cpu]") {
   const auto list = run_pxflow({"backends"});
   if (list.out.find("avx2 ") == std::string::npos) {
     WARN("no avx2 row compiled into this build: nothing to mask");
