@@ -1,0 +1,114 @@
+// The GAP8 backends beyond bit-exactness: the registry rows, the L1 limit, the device clock, the
+// work counts, the chunked split and a known answer.
+#include <catch2/catch.hpp>
+#include <cstring>
+
+#include "errors.hpp"
+#include "estimate.hpp"
+#include "gap8_backend.hpp"
+#include "gap8_test_util.hpp"
+#include "grid.hpp"
+#include "registry.hpp"
+#include "run_helpers.hpp"
+
+namespace pxflow::test {
+
+TEST_CASE("gap8 rows are registered and can run here", "[gap8]") {
+  for (const char* name : {"gap8-original", "gap8-local", "gap8-global"}) {
+    const BackendRow* row = nullptr;
+    for (const BackendRow& r : backend_rows())
+      if (r.name == name) row = &r;
+    REQUIRE(row != nullptr);
+    CHECK(row->probe() == "");
+    CHECK(row->create(BackendOptions{}) != nullptr);
+  }
+}
+
+TEST_CASE("gap8 refuses what does not fit L1, with the reason", "[gap8]") {
+  Gap8Backend original("original", {}), global("global", {});
+  CHECK(original.unsupported(profile("px4flow-64")).empty());
+  CHECK(global.unsupported(profile("px4flow-64")).empty());
+  Params vga = profile("px4flow-64");
+  vga.width = 640;
+  vga.height = 480;
+  CHECK(original.unsupported(vga).find("does not fit L1") == 0);
+  Params mid = profile("px4flow-64");
+  mid.width = mid.height = 128;  // two frames fit, five (with the planes) do not
+  CHECK(original.unsupported(mid).empty());
+  CHECK(global.unsupported(mid).find("does not fit L1") == 0);
+  std::vector<PoiRecord> out(poi_count(vga));
+  OpCounts counts;
+  std::vector<std::uint8_t> frame(640 * 480, 0);
+  const FramePair pair{{640, 480, 640, frame.data()}, {640, 480, 640, frame.data()}};
+  CHECK_THROWS_AS(original.run({&pair, 1}, vga, out, counts), BackendError);
+}
+
+TEST_CASE("gap8 reports model cycles and the paper's work counts", "[gap8][no-sanitizer]") {
+  const Params p = profile("px4flow-64");
+  const OwnedPair pair = shifted_texture_pair(64, 64, 4, 11);
+  const FramePair view = pair.view();
+  const struct {
+    const char* variant;
+    RefVariant ref;
+  } cases[] = {{"original", RefVariant::kOriginal},
+               {"local", RefVariant::kLocal},
+               {"global", RefVariant::kGlobal}};
+  for (const auto& c : cases) {
+    INFO(c.variant);
+    Gap8Backend backend(c.variant, {});
+    CHECK_FALSE(backend.last_device_time().has_value());
+    std::vector<PoiRecord> got = sentinel_records(poi_count(p));
+    OpCounts counts, ref_counts;
+    backend.run({&view, 1}, p, got, counts);
+    run_ref(c.ref, view, p, &ref_counts);
+    CHECK(counts.counted);
+    CHECK(counts.sad_ops == ref_counts.sad_ops);
+    CHECK(counts.interpolations == ref_counts.interpolations);
+    const auto time = backend.last_device_time();
+    REQUIRE(time.has_value());
+    CHECK(time->source == "gap8-model-cycles");
+    REQUIRE(time->cycles.has_value());
+    CHECK(*time->cycles > 10000);
+    CHECK(time->ns == Approx(*time->cycles * 20.0));  // 50 MHz
+    const pxflow_gap8_result& r = backend.last_stats().pairs.at(0);
+    CHECK(r.cycles_flow > r.cycles_averaging);
+    CHECK(r.cycles_total >= r.cycles_dma + r.cycles_flow + r.cycles_averaging);
+  }
+}
+
+TEST_CASE("gap8 chunked POI split gives the same records", "[gap8][no-sanitizer]") {
+  const Params p = profile("px4flow-head");
+  const std::vector<OwnedPair> corpus = gap8_corpus(p, 4, 77);
+  for (int cores : {3, 8}) {
+    Gap8Backend backend("local", gap8_host::RunOptions{cores, true, true});
+    for (const OwnedPair& o : corpus) {
+      const FramePair view = o.view();
+      std::vector<PoiRecord> got = sentinel_records(poi_count(p));
+      OpCounts counts;
+      backend.run({&view, 1}, p, got, counts);
+      const std::vector<PoiRecord> expected = run_ref(RefVariant::kOriginal, view, p);
+      INFO(first_difference(expected, got, o.name));
+      REQUIRE(std::memcmp(expected.data(), got.data(), got.size() * sizeof(PoiRecord)) == 0);
+    }
+  }
+}
+
+TEST_CASE("gap8 known answer: texture shifted by (+2, -1)", "[gap8][no-sanitizer]") {
+  const Params p = profile("px4flow-64");
+  OwnedPair pair{"noise/shift(2,-1)", 64, 64, std::vector<std::uint8_t>(64 * 64), {}};
+  Rng rng(5);
+  for (std::uint8_t& v : pair.prev) v = static_cast<std::uint8_t>(rng.uniform(0, 255));
+  pair.next.resize(pair.prev.size());
+  shift_into(pair.prev, pair.next, 64, 64, 2, -1, 9);
+  const FramePair view = pair.view();
+  Gap8Backend backend("global", {});
+  std::vector<PoiRecord> got = sentinel_records(poi_count(p));
+  OpCounts counts;
+  backend.run({&view, 1}, p, got, counts);
+  const pxflow_gap8_result& r = backend.last_stats().pairs.at(0);
+  CHECK(r.flow_x == 2.0f);
+  CHECK(r.flow_y == -1.0f);
+  CHECK(r.quality == 255);
+}
+
+}  // namespace pxflow::test
