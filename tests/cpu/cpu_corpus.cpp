@@ -65,6 +65,28 @@ std::vector<Group> synthetic_corpus(int seeds) {
   return groups;
 }
 
+std::vector<Group> real_groups(const std::string& name, int width, int height,
+                               const std::uint8_t* prev, const std::uint8_t* next) {
+  const int w = width, h = height;
+  std::vector<Group> groups;
+  auto whole = [&](const char* what, const Params& p) {
+    groups.push_back({name + " " + what, p, {make_case(name, w, h, w, prev, next, w)}});
+  };
+  whole("px4flow-64", sized("px4flow-64", w, h, 0, 0));
+  whole("px4flow-head", sized("px4flow-head", w, h, 0, 0));
+  whole("S=7 B=32", sized("px4flow-64", w, h, 7, 32));
+  Group crops{name + " 64x64 crops", sized("px4flow-64", 64, 64, 0, 0), {}};
+  for (int y = 0; y + 64 <= h; y += 90)
+    for (int x = 0; x + 64 <= w; x += 100) {
+      const std::size_t at = static_cast<std::size_t>(y) * w + x;
+      crops.cases.push_back(
+          make_case(name + " crop at " + std::to_string(x) + "," + std::to_string(y), 64, 64, w,
+                    prev + at, next + at, w));
+    }
+  groups.push_back(std::move(crops));
+  return groups;
+}
+
 int check_group(const std::string& who, const Group& g, const BatchRun& run) {
   const std::size_t per_pair = poi_count(g.params);
   std::vector<FramePair> pairs;

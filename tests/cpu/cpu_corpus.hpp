@@ -43,6 +43,11 @@ Case make_case(std::string name, int width, int height, std::ptrdiff_t stride,
 // exercise the multi-chunk paths. Some cases get an odd stride.
 std::vector<Group> synthetic_corpus(int seeds);
 
+// One real frame pair (packed, width x height) as groups: the whole frame with px4flow-64,
+// px4flow-head and S=7 B=32, and 64x64 crops at px4flow-64 that keep the frame's stride.
+std::vector<Group> real_groups(const std::string& name, int width, int height,
+                               const std::uint8_t* prev, const std::uint8_t* next);
+
 // Runs a whole group as one batch through `run` (output pre-filled with 0xA5) and compares
 // every record with ref-original byte for byte. Prints one line per failing case, naming
 // `who`, the group, the case and the first differing POI. Returns the number of failing cases.

@@ -2,10 +2,12 @@
 // PXFLOW_DISABLE masking every stronger one, so that the dispatcher row `cpu` must choose ISA;
 // it then checks `cpu` (all cores) and the row named ISA (one thread) against ref-original on
 // the whole corpus: synthetic pairs, hostile pairs and the real frames of opencv-doc.
+// With --dump-real DIR it writes the real frames as raw files for the NEON cross test.
 // Exit 0 when every case matches, 1 on any mismatch, 77 (CTest SKIP_RETURN_CODE) when this CPU
 // lacks ISA.
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "cpu_corpus.hpp"
@@ -19,20 +21,14 @@ namespace {
 
 constexpr int kSkip = 77;
 
-Params for_frame(const char* profile_name, int width, int height, int radius, int blocks) {
-  Params p = profile(profile_name);
-  p.width = width;
-  p.height = height;
-  if (radius > 0) p.search_radius = radius;
-  if (blocks > 0) p.blocks = blocks;
-  validate(p);
-  return p;
-}
+// The real frames of opencv-doc, or nothing (with a note) when they are not installed.
+struct RealPair {
+  std::string name;
+  Frame prev, next;
+};
 
-// The real frames at their full size (px4flow-64, px4flow-head, S=7 B=32) and as 64x64 crops
-// that keep the full frame's stride.
-std::vector<Group> real_corpus(const std::string& dir) {
-  std::vector<Group> groups;
+std::vector<RealPair> real_pairs(const std::string& dir) {
+  std::vector<RealPair> pairs;
   for (const char* name : {"rubberwhale", "basketball"}) {
     const std::string a = dir + "/" + name + "1.png", b = dir + "/" + name + "2.png";
     if (!std::filesystem::exists(a) || !std::filesystem::exists(b)) {
@@ -40,26 +36,31 @@ std::vector<Group> real_corpus(const std::string& dir) {
                   a.c_str(), name);
       continue;
     }
-    const Frame prev = load_frame(a, std::nullopt), next = load_frame(b, std::nullopt);
-    const int w = prev.width, h = prev.height;
-    auto whole = [&](const std::string& group, const Params& p) {
-      groups.push_back(
-          {group, p, {make_case(name, w, h, w, prev.pixels.data(), next.pixels.data(), w)}});
-    };
-    whole(std::string(name) + " px4flow-64", for_frame("px4flow-64", w, h, 0, 0));
-    whole(std::string(name) + " px4flow-head", for_frame("px4flow-head", w, h, 0, 0));
-    whole(std::string(name) + " S=7 B=32", for_frame("px4flow-64", w, h, 7, 32));
-    Group crops{std::string(name) + " 64x64 crops", for_frame("px4flow-64", 64, 64, 0, 0), {}};
-    for (int y = 0; y + 64 <= h; y += 90)
-      for (int x = 0; x + 64 <= w; x += 100) {
-        const std::size_t at = static_cast<std::size_t>(y) * w + x;
-        crops.cases.push_back(
-            make_case(std::string(name) + " crop at " + std::to_string(x) + "," + std::to_string(y),
-                      64, 64, w, prev.pixels.data() + at, next.pixels.data() + at, w));
-      }
-    groups.push_back(std::move(crops));
+    pairs.push_back({name, load_frame(a, std::nullopt), load_frame(b, std::nullopt)});
   }
-  return groups;
+  return pairs;
+}
+
+// --dump-real DIR: the real frames as raw files and DIR/frames.txt ("name W H prev next" per
+// line) for the NEON cross test, which runs where OpenCV is not available.
+int dump_real(const std::string& dir) {
+  const std::vector<RealPair> pairs = real_pairs(PXFLOW_OPENCV_DATA);
+  if (pairs.empty()) return kSkip;
+  std::filesystem::create_directories(dir);
+  std::ofstream list(dir + "/frames.txt");
+  for (const RealPair& rp : pairs) {
+    const std::string a = dir + "/" + rp.name + "1.raw", b = dir + "/" + rp.name + "2.raw";
+    std::ofstream(a, std::ios::binary)
+        .write(reinterpret_cast<const char*>(rp.prev.pixels.data()),
+               static_cast<std::streamsize>(rp.prev.pixels.size()));
+    std::ofstream(b, std::ios::binary)
+        .write(reinterpret_cast<const char*>(rp.next.pixels.data()),
+               static_cast<std::streamsize>(rp.next.pixels.size()));
+    list << rp.name << " " << rp.prev.width << " " << rp.prev.height << " " << a << " " << b
+         << "\n";
+  }
+  std::printf("wrote %zu real frame pairs to %s\n", pairs.size(), dir.c_str());
+  return list ? 0 : 1;
 }
 
 BatchRun backend_run(const std::string& row_name, int threads) {
@@ -85,7 +86,10 @@ int run(const std::string& isa) {
     return 1;
   }
   std::vector<Group> groups = synthetic_corpus(120);
-  for (Group& g : real_corpus(PXFLOW_OPENCV_DATA)) groups.push_back(std::move(g));
+  for (const RealPair& rp : real_pairs(PXFLOW_OPENCV_DATA))
+    for (Group& g : real_groups(rp.name, rp.prev.width, rp.prev.height, rp.prev.pixels.data(),
+                                rp.next.pixels.data()))
+      groups.push_back(std::move(g));
   int failed = 0, total = 0;
   for (const Group& g : groups) {
     total += 2 * static_cast<int>(g.cases.size());
@@ -101,8 +105,10 @@ int run(const std::string& isa) {
 }  // namespace pxflow::cpu_test
 
 int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--dump-real")
+    return pxflow::cpu_test::dump_real(argv[2]);
   if (argc != 2) {
-    std::fprintf(stderr, "usage: cpu_path_check ISA\n");
+    std::fprintf(stderr, "usage: cpu_path_check ISA | cpu_path_check --dump-real DIR\n");
     return 2;
   }
   try {

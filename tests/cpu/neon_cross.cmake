@@ -50,7 +50,13 @@ add_custom_command(
   VERBATIM)
 add_custom_target(neon_cross_check ALL DEPENDS ${neon_cross_binary})
 
+# The real frames reach the AArch64 program as raw files written by the host's path check.
+set(real_raw ${CMAKE_CURRENT_BINARY_DIR}/real_raw)
+add_test(NAME cpu_real_frames_raw COMMAND cpu_path_check --dump-real ${real_raw})
+set_tests_properties(cpu_real_frames_raw PROPERTIES
+  SKIP_RETURN_CODE 77 FIXTURES_SETUP cpu_real_raw LABELS "cpu;cross")
 add_test(NAME cpu_neon_cross
-         COMMAND ${PXFLOW_QEMU_AARCH64} -L ${PXFLOW_AARCH64_SYSROOT} ${neon_cross_binary})
-set_tests_properties(cpu_neon_cross PROPERTIES LABELS "cpu;cross")
+         COMMAND ${PXFLOW_QEMU_AARCH64} -L ${PXFLOW_AARCH64_SYSROOT} ${neon_cross_binary}
+                 ${real_raw}/frames.txt)
+set_tests_properties(cpu_neon_cross PROPERTIES LABELS "cpu;cross" FIXTURES_REQUIRED cpu_real_raw)
 message(STATUS "pxflow: NEON cross test on (${PXFLOW_AARCH64_CXX}, ${PXFLOW_QEMU_AARCH64})")
