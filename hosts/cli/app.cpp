@@ -27,6 +27,9 @@ int run_pxflow(int argc, char** argv) {
   std::vector<cli::Command> commands = {cli::add_flow_command(app), cli::add_check_command(app),
                                         cli::add_bench_command(app), cli::add_report_command(app),
                                         cli::add_backends_command(app)};
+#ifdef PXFLOW_WITH_GAP8
+  commands.push_back(cli::add_gap8_command(app));
+#endif
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for (const auto& c : commands) known |= c.app->get_name() == argv[1];

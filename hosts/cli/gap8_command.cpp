@@ -1,0 +1,95 @@
+// pxflow gap8: the GAP8 kernel's variants on 1..8 simulated cores, beside the ISCAS 2022
+// paper's tables (hosts/gap8/gap8_study.hpp does the work).
+#include <cstdio>
+#include <fstream>
+
+#include "commands.hpp"
+#include "errors.hpp"
+#include "frame_io.hpp"
+#include "gap8_study.hpp"
+
+namespace pxflow::cli {
+namespace {
+
+struct Gap8Options {
+  ProblemOptions problem;
+  std::string variant = "all";
+  std::string cores = "1,8";
+  double mhz = 50;
+  std::string json_path;
+  bool no_contention = false;
+  bool chunked = false;
+  std::vector<std::string> frames;  // PREV NEXT, or none for the default pair
+};
+
+// "1,8", "1-8" or a mix ("1,2,4-8"): core counts in 1..8.
+std::vector<int> parse_cores(const std::string& text) {
+  std::vector<int> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    const std::size_t dash = item.find('-');
+    const int lo = parse_int(item.substr(0, dash), "--cores", 1, 8);
+    const int hi = dash == std::string::npos ? lo : parse_int(item.substr(dash + 1), "--cores", 1, 8);
+    if (hi < lo) throw InputError("--cores: empty range " + item);
+    for (int c = lo; c <= hi; ++c)
+      if (std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::vector<std::string> parse_variants(const std::string& v) {
+  if (v == "all") return {"original", "local", "global"};
+  if (v == "original" || v == "local" || v == "global") return {v};
+  throw InputError("--variant must be original, local, global or all, not '" + v + "'");
+}
+
+int run_gap8(const Gap8Options& o) {
+  gap8_study::Options options;
+  options.variants = parse_variants(o.variant);
+  options.cores = parse_cores(o.cores);
+  if (!(o.mhz > 0 && o.mhz <= 1000)) throw InputError("--mhz must be in (0, 1000]");
+  options.mhz = o.mhz;
+  options.contention = !o.no_contention;
+  options.chunked = o.chunked;
+  gap8_study::NamedFrames frames;
+  if (o.frames.empty()) {
+    frames = gap8_study::default_pair(o.problem.resolve(std::pair{64, 64}));
+  } else {
+    if (o.frames.size() != 2) throw InputError("give both PREV and NEXT, or neither");
+    frames = {o.frames[0] + " -> " + o.frames[1], load_frame(o.frames[0], std::nullopt),
+              load_frame(o.frames[1], std::nullopt)};
+    if (frames.prev.width != frames.next.width || frames.prev.height != frames.next.height)
+      throw InputError("PREV and NEXT differ in size");
+  }
+  const Params p = o.problem.resolve(std::pair{frames.prev.width, frames.prev.height});
+  const FramePair pair{frames.prev.view(), frames.next.view()};
+  const gap8_study::Study study = gap8_study::run_study(pair, frames.name, p, options);
+  gap8_study::print_tables(study);
+  if (!o.json_path.empty()) {
+    std::ofstream out(o.json_path);
+    if (!(out << gap8_study::to_json(study))) throw InputError("cannot write " + o.json_path);
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_gap8_command(CLI::App& app) {
+  auto o = std::make_shared<Gap8Options>();
+  CLI::App* sub = app.add_subcommand(
+      "gap8", "The GAP8 kernel on the cluster model beside the ISCAS 2022 paper's tables");
+  o->problem.add_to(*sub);
+  sub->add_option("--variant", o->variant, "original, local, global or all")->capture_default_str();
+  sub->add_option("--cores", o->cores, "Core counts, e.g. 1,8 or 1-8")->capture_default_str();
+  sub->add_option("--mhz", o->mhz, "Cluster clock for fps and latency")->capture_default_str();
+  sub->add_option("--json", o->json_path, "Also write the figures as JSON to this file");
+  sub->add_flag("--no-contention", o->no_contention, "Do not model TCDM bank conflicts");
+  sub->add_flag("--chunked", o->chunked, "Split POIs in contiguous chunks, not round robin");
+  sub->add_option("frames", o->frames, "PREV NEXT (default: a real pair, all 64 POIs accepted)");
+  return {sub, [o] { return run_gap8(*o); }};
+}
+
+}  // namespace pxflow::cli

@@ -1,0 +1,176 @@
+// `pxflow gap8` output: the paper's Tables I-III with the model beside them, then the figures
+// the paper does not have (every core count, fps, latency, energy, counters per core), and JSON.
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "gap8_study.hpp"
+
+namespace pxflow::gap8_study {
+namespace {
+
+constexpr double kPaperPowerW = 0.025;  // the paper's GAP8 figure at 50 MHz
+
+std::string diff(double model, std::optional<double> paper) {
+  if (!paper || *paper == 0) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%+.1f%%", (model - *paper) / *paper * 100.0);
+  return buf;
+}
+
+std::string num(std::optional<double> v, const char* fmt = "%.1fk", double scale = 1000.0) {
+  if (!v) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, fmt, *v / scale);
+  return buf;
+}
+
+void row(const char* label, const std::string& variant, double model, std::optional<double> paper,
+         const char* fmt = "%.1fk", double scale = 1000.0) {
+  std::printf("  %-28s %-9s %12s %12s %9s\n", label, variant.c_str(), num(model, fmt, scale).c_str(),
+              num(paper, fmt, scale).c_str(), diff(model, paper).c_str());
+}
+
+void header(const char* title) {
+  std::printf("\n%s\n  %-28s %-9s %12s %12s %9s\n", title, "", "variant", "model", "paper", "diff");
+}
+
+double per_core_sum(const Measure& m, int event) {
+  double s = 0;
+  for (const auto& c : m.cores) s += double(c[event]);
+  return s;
+}
+
+}  // namespace
+
+void print_tables(const Study& s) {
+  std::printf("pxflow gap8: %s; %.0f MHz; TCDM contention %s; POIs split %s\n",
+              s.pair_name.c_str(), s.options.mhz, s.options.contention ? "on" : "off",
+              s.options.chunked ? "in chunks" : "round robin");
+  header("Table I: interpolations and instructions per frame (instructions: 1 core, whole run)");
+  for (const auto& [v, by] : s.results) {
+    const auto p1 = paper(v, 1);
+    const Measure& m = by.at(1);
+    row("interpolations", v, m.interpolations, p1 ? p1->interpolations : std::nullopt, "%.0f", 1);
+    row("instructions", v, m.instructions, p1 ? p1->instructions : std::nullopt);
+    row("4-byte SAD ops", v, m.sad_ops, p1 ? p1->sad_ops : std::nullopt, "%.0f", 1);
+  }
+  header("Table II: cycles per frame (core 0) and speed-up");
+  for (const auto& [v, by] : s.results) {
+    for (const auto& [cores, m] : by) {
+      const auto pp = paper(v, cores);
+      const std::string label = "cycles, " + std::to_string(cores) + " core(s)";
+      row(label.c_str(), v, m.cycles, pp ? pp->cycles : std::nullopt);
+      if (cores == 1) continue;
+      const std::string sl = "speed-up, " + std::to_string(cores) + " cores";
+      row(sl.c_str(), v, speedup(s, v, cores), pp ? pp->speedup : std::nullopt, "%.2fx", 1);
+    }
+  }
+  header("Table III: cycles per phase (1 core), ideal 8-core flow, Amdahl's limit");
+  for (const auto& [v, by] : s.results) {
+    const Measure& m = by.at(1);
+    const auto p1 = paper(v, 1);
+    const auto pp = p1 ? p1->phases : std::nullopt;
+    row("initialisation (in DMA)", v, m.phases.init, pp ? std::optional(pp->init) : std::nullopt);
+    row("DMA copy", v, m.phases.dma, pp ? std::optional(pp->dma) : std::nullopt);
+    row("flow estimation", v, m.phases.flow, pp ? std::optional(pp->flow) : std::nullopt);
+    row("averaging", v, m.phases.averaging, pp ? std::optional(pp->averaging) : std::nullopt);
+    row("records to L2 (not in paper)", v, m.phases.output, std::nullopt);
+    const auto p8 = paper(v, 8);
+    row("flow, 8 cores ideal", v, m.phases.flow / 8,
+        pp ? std::optional(pp->flow / 8) : std::nullopt);
+    if (by.count(8)) {
+      row("flow, 8 cores actual", v, by.at(8).phases.flow,
+          p8 && p8->phases ? std::optional(p8->phases->flow) : std::nullopt);
+      row("Amdahl's limit, 8 cores", v, amdahl_limit(s, v, 8),
+          p8 ? p8->amdahl_limit : std::nullopt, "%.3fx", 1);
+      row("actual speed-up, 8 cores", v, speedup(s, v, 8), p8 ? p8->speedup : std::nullopt,
+          "%.2fx", 1);
+    }
+  }
+  std::printf("\nEvery core count (fps, latency at %.0f MHz; energy at the paper's 25 mW)\n",
+              s.options.mhz);
+  std::printf("  %-9s %5s %10s %8s %9s %9s %8s %8s %10s %9s\n", "variant", "cores", "cycles",
+              "fps", "latency", "energy", "speedup", "amdahl", "tcdm_cont", "ld_stall");
+  for (const auto& [v, by] : s.results)
+    for (const auto& [cores, m] : by) {
+      const double seconds = m.cycles / (s.options.mhz * 1e6);
+      std::printf("  %-9s %5d %10.0f %8.1f %7.3fms %7.1fuJ %7.2fx %7.2fx %10.0f %9.0f\n",
+                  v.c_str(), cores, m.cycles, fps(s, m.cycles), seconds * 1e3,
+                  seconds * kPaperPowerW * 1e6, speedup(s, v, cores), amdahl_limit(s, v, cores),
+                  per_core_sum(m, GAP8_EVT_TCDM_CONT), per_core_sum(m, GAP8_EVT_LD_STALL));
+    }
+  std::printf("\nPer core at the largest core count: IPC (instructions / active cycles), "
+              "load stalls, TCDM contention\n");
+  for (const auto& [v, by] : s.results) {
+    const Measure& m = by.rbegin()->second;
+    for (std::size_t c = 0; c < m.cores.size(); ++c) {
+      const auto& t = m.cores[c];
+      const double active = double(t[GAP8_EVT_ACTIVE_CYCLES]);
+      std::printf("  %-9s core %zu: IPC %.3f, instructions %llu, ld_stall %llu, tcdm_cont %llu\n",
+                  v.c_str(), c, active > 0 ? double(t[GAP8_EVT_INSTR]) / active : 0.0,
+                  (unsigned long long)t[GAP8_EVT_INSTR], (unsigned long long)t[GAP8_EVT_LD_STALL],
+                  (unsigned long long)t[GAP8_EVT_TCDM_CONT]);
+    }
+  }
+}
+
+std::string to_json(const Study& s) {
+  using nlohmann::json;
+  json variants = json::object();
+  for (const auto& [v, by] : s.results) {
+    json per = json::object();
+    for (const auto& [cores, m] : by) {
+      auto phases = [](const Phases& p) {
+        return json{{"init", p.init}, {"dma", p.dma}, {"flow", p.flow}, {"averaging", p.averaging},
+                    {"output", p.output}};
+      };
+      json e{{"cycles", m.cycles},
+             {"instructions", m.instructions},
+             {"interpolations", m.interpolations},
+             {"sad_ops", m.sad_ops},
+             {"phases", phases(m.phases)},
+             {"speedup", speedup(s, v, cores)},
+             {"amdahl_limit", amdahl_limit(s, v, cores)},
+             {"fps", fps(s, m.cycles)},
+             {"accepted_pois", m.accepted}};
+      json cores_json = json::array();
+      for (const auto& t : m.cores) {
+        const double active = double(t[GAP8_EVT_ACTIVE_CYCLES]);
+        cores_json.push_back({{"instructions", t[GAP8_EVT_INSTR]},
+                              {"active_cycles", t[GAP8_EVT_ACTIVE_CYCLES]},
+                              {"ipc", active > 0 ? double(t[GAP8_EVT_INSTR]) / active : 0.0},
+                              {"ld_stall", t[GAP8_EVT_LD_STALL]},
+                              {"tcdm_cont", t[GAP8_EVT_TCDM_CONT]}});
+      }
+      e["per_core"] = cores_json;
+      if (const auto p = paper(v, cores)) {
+        json pj = json::object();
+        auto put = [&](const char* key, std::optional<double> x) {
+          if (x) pj[key] = *x;
+        };
+        put("cycles", p->cycles);
+        put("instructions", p->instructions);
+        put("interpolations", p->interpolations);
+        put("sad_ops", p->sad_ops);
+        put("speedup", p->speedup);
+        put("amdahl_limit", p->amdahl_limit);
+        put("fps", p->fps);
+        if (p->phases) {
+          pj["phases"] = {{"init", p->phases->init}, {"dma", p->phases->dma},
+                          {"flow", p->phases->flow}, {"averaging", p->phases->averaging}};
+        }
+        e["paper"] = pj;
+      }
+      per[std::to_string(cores)] = e;
+    }
+    variants[v] = per;
+  }
+  json out{{"pair", s.pair_name},
+           {"mhz", s.options.mhz},
+           {"contention", s.options.contention},
+           {"split", s.options.chunked ? "chunked" : "round-robin"},
+           {"variants", variants}};
+  return out.dump(2) + "\n";
+}
+
+}  // namespace pxflow::gap8_study
