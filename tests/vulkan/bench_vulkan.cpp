@@ -4,7 +4,7 @@
 // time per frame pair (all threads, lavapipe's included), so that a loaded machine does not
 // make the comparison meaningless.
 //
-//   vulkan_bench [--cpu NAME] [--min-time SECONDS]
+//   vulkan_bench [--cpu NAME] [--min-time SECONDS] [--only LABEL-PREFIX] [--batches N,N,...]
 //
 // NAME defaults to the registry row `cpu` (the CPU SIMD dispatcher on all cores) when it is
 // compiled in, else `ref-original` split over all cores by this program.
@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <thread>
@@ -98,9 +99,17 @@ int main(int argc, char** argv) {
   for (const auto& row : backend_rows())
     if (row.name == "cpu" && row.probe().empty()) cpu_name = "cpu";
   double min_time = 1.0;
+  std::string only;
+  std::vector<int> batches = {1, 256, 4096};
   for (int i = 1; i + 1 < argc; i += 2) {
     if (std::strcmp(argv[i], "--cpu") == 0) cpu_name = argv[i + 1];
     if (std::strcmp(argv[i], "--min-time") == 0) min_time = std::stod(argv[i + 1]);
+    if (std::strcmp(argv[i], "--only") == 0) only = argv[i + 1];
+    if (std::strcmp(argv[i], "--batches") == 0) {
+      batches.clear();
+      for (const char* c = argv[i + 1]; *c; c += (*c == ','))
+        batches.push_back(std::atoi(c)), c += std::strspn(c, "0123456789");
+    }
   }
   try {
     auto vulkan = find_backend("vulkan").create({});
@@ -114,6 +123,7 @@ int main(int argc, char** argv) {
     std::printf("%-26s %6s  %-8s %12s %12s %12s %10s\n", "problem", "batch", "backend",
                 "wall us/pair", "cpu us/pair", "pairs/s", "vs cpu");
     for (const Point& pt : points) {
+      if (pt.label.rfind(only, 0) != 0) continue;
       std::vector<OwnedPair> owned;
       std::vector<PoiRecord> expected(kDistinctPairs * poi_count(pt.params));
       OpCounts counts;
@@ -124,7 +134,7 @@ int main(int argc, char** argv) {
                        std::span(expected).subspan(n * poi_count(pt.params), poi_count(pt.params)),
                        counts);
       }
-      for (int batch : {1, 256, 4096}) {
+      for (int batch : batches) {
         std::vector<FramePair> views;
         for (int n = 0; n < batch; ++n) views.push_back(owned[n % kDistinctPairs].view());
         bool cpu_ok = false, vk_ok = false;
