@@ -1,6 +1,7 @@
 // The CPU registry rows: one per compiled ISA (swar, sse2, sse41, avx2, avx512bw / neon) and
 // `cpu`, the run-time dispatcher that takes the strongest ISA that can run here. Every row runs
 // the frame pairs of a batch on a thread pool (BackendOptions::threads, 0 = all cores).
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -21,20 +22,36 @@ class CpuBackend final : public Backend {
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
            OpCounts& counts) override {
     const std::size_t per_pair = poi_count(p);
-    std::vector<OpCounts> pair_counts(pairs.size());  // summed in pair order: deterministic
+    const auto rows = static_cast<int>(grid_axis(p.height, p).size());
+    const int bands = bands_per_pair(pairs.size(), rows);
+    // Each item is one band of grid rows of one pair; its records have their own place and its
+    // counts are summed in item order, so the bytes do not depend on who ran it.
+    std::vector<OpCounts> item_counts(pairs.size() * static_cast<std::size_t>(bands));
     try {
-      pool_.for_each(pairs.size(), [&](std::size_t n) {
-        cpu::run_flow(kernel_, pairs[n], p, out.subspan(n * per_pair, per_pair), pair_counts[n]);
+      pool_.for_each(item_counts.size(), [&](std::size_t item) {
+        const std::size_t n = item / static_cast<std::size_t>(bands);
+        const int band = static_cast<int>(item % static_cast<std::size_t>(bands));
+        cpu::run_flow_rows(kernel_, pairs[n], p, band * rows / bands, (band + 1) * rows / bands,
+                           out.subspan(n * per_pair, per_pair), item_counts[item]);
       });
     } catch (const BackendError&) {
       throw;
     } catch (const std::exception& e) {
       throw BackendError(std::string(kernel_.name) + ": " + e.what());
     }
-    for (const OpCounts& c : pair_counts) counts += c;
+    for (const OpCounts& c : item_counts) counts += c;
   }
 
  private:
+  // Few large frames would leave cores idle (and one late-waking worker costs a whole frame):
+  // split each pair into bands of grid rows until there are about four items per worker.
+  int bands_per_pair(std::size_t pairs, int grid_rows) const {
+    if (pool_.size() == 1 || pairs == 0) return 1;
+    const auto wanted =
+        static_cast<int>((4 * static_cast<std::size_t>(pool_.size()) + pairs - 1) / pairs);
+    return std::max(1, std::min(wanted, grid_rows));
+  }
+
   const cpu::IsaKernel& kernel_;
   cpu::ThreadPool pool_;
 };

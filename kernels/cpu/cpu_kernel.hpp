@@ -77,6 +77,11 @@ const IsaKernel& neon_kernel();
 void run_flow(const IsaKernel& k, const FramePair& pair, const Params& p, std::span<PoiRecord> out,
               OpCounts& counts);
 
+// The POIs of grid rows first_row .. end_row-1 only (`out` still holds the whole pair's
+// records; only those rows' are written): lets the host split one frame over several cores.
+void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, int first_row,
+                   int end_row, std::span<PoiRecord> out, OpCounts& counts);
+
 // The first smallest entry of a SAD table in raster order: rows 0..rows-1 of `cols` entries,
 // `stride` entries apart. Shared by the kernels that fill a table and scan it with scalar code.
 BlockMatch first_minimum(const std::uint16_t* table, int rows, int cols, std::ptrdiff_t stride,

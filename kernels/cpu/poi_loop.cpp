@@ -109,8 +109,8 @@ void run_poi(const PoiContext& ctx, int x, int y, PoiRecord& rec) {
 
 }  // namespace
 
-void run_flow(const IsaKernel& k, const FramePair& pair, const Params& p, std::span<PoiRecord> out,
-              OpCounts& counts) {
+void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, int first_row,
+                   int end_row, std::span<PoiRecord> out, OpCounts& counts) {
   OpCounts* charged = k.counts_ops ? &counts : nullptr;
   if (charged) counts.counted = true;
   if (k.row_bytes(p.search_radius) > kMaxRowBytes)
@@ -119,9 +119,16 @@ void run_flow(const IsaKernel& k, const FramePair& pair, const Params& p, std::s
   const PoiContext ctx{k, pair, p, k.row_bytes(p.search_radius), charged, copy};
   const std::vector<int> xs = grid_axis(p.width, p);
   const std::vector<int> ys = grid_axis(p.height, p);
-  std::size_t n = 0;
-  for (int y : ys)
-    for (int x : xs) run_poi(ctx, x, y, out[n++]);
+  for (int row = first_row; row < end_row; ++row) {
+    std::size_t n = static_cast<std::size_t>(row) * xs.size();
+    for (int x : xs) run_poi(ctx, x, ys[static_cast<std::size_t>(row)], out[n++]);
+  }
+}
+
+void run_flow(const IsaKernel& k, const FramePair& pair, const Params& p, std::span<PoiRecord> out,
+              OpCounts& counts) {
+  const auto rows = static_cast<int>(grid_axis(p.height, p).size());
+  run_flow_rows(k, pair, p, 0, rows, out, counts);
 }
 
 BlockMatch first_minimum(const std::uint16_t* table, int rows, int cols, std::ptrdiff_t stride,

@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
   big.blocks = 32;
   static std::vector<Problem> problems;
   problems.push_back(make_problem("px4flow-64", profile("px4flow-64"), 64));
-  problems.push_back(make_problem("640x480_S7_B32", big, 4));
+  problems.push_back(make_problem("640x480_S7_B32", big, 8));
   for (const Problem& pb : problems)
     std::printf(
         "problem  %s: %zu POIs, %.0f SAD bytes per frame, bound %.0f TSC cycles per frame\n",

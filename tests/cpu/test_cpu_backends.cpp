@@ -81,6 +81,32 @@ TEST_CASE("a batch gives the same bytes whatever the thread count", "[cpu][threa
   }
 }
 
+TEST_CASE("small batches are split into bands of grid rows, same bytes", "[cpu][threads]") {
+  Params p = profile("px4flow-64");
+  p.width = 160;
+  p.height = 120;
+  p.search_radius = 7;
+  p.blocks = 16;
+  validate(p);
+  const std::vector<OwnedPair> owned = {random_pair(160, 120, 7, 3), random_pair(160, 120, 7, 4)};
+  for (std::size_t batch : {1u, 2u}) {
+    std::vector<FramePair> pairs;
+    for (std::size_t n = 0; n < batch; ++n) pairs.push_back(owned[n].view());
+    std::vector<PoiRecord> ref(batch * poi_count(p));
+    OpCounts ref_counts;
+    for (std::size_t n = 0; n < batch; ++n)
+      reference_flow(RefVariant::kOriginal, pairs[n], p,
+                     std::span(ref).subspan(n * poi_count(p), poi_count(p)), ref_counts);
+    for (int threads : {1, 2, 3, 7}) {
+      INFO("batch " << batch << ", " << threads << " threads");
+      OpCounts counts;
+      CHECK(same_bytes(ref, run_row("swar", threads, pairs, p, counts)));
+      CHECK(counts.sad_ops == ref_counts.sad_ops);
+      CHECK(same_bytes(ref, run_row("cpu", threads, pairs, p, counts)));
+    }
+  }
+}
+
 TEST_CASE("a backend object runs many batches on its pool", "[cpu][threads]") {
   const Params p = profile("px4flow-head");
   auto backend = find_backend("cpu").create(BackendOptions{2, {}});
