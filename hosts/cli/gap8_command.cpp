@@ -1,7 +1,9 @@
 // pxflow gap8: the GAP8 kernel's variants on 1..8 simulated cores, beside the ISCAS 2022
 // paper's tables (hosts/gap8/gap8_study.hpp does the work).
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 
 #include "commands.hpp"
 #include "errors.hpp"
@@ -31,7 +33,8 @@ std::vector<int> parse_cores(const std::string& text) {
     const std::string item = text.substr(start, comma - start);
     const std::size_t dash = item.find('-');
     const int lo = parse_int(item.substr(0, dash), "--cores", 1, 8);
-    const int hi = dash == std::string::npos ? lo : parse_int(item.substr(dash + 1), "--cores", 1, 8);
+    const int hi =
+        dash == std::string::npos ? lo : parse_int(item.substr(dash + 1), "--cores", 1, 8);
     if (hi < lo) throw InputError("--cores: empty range " + item);
     for (int c = lo; c <= hi; ++c)
       if (std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);

@@ -31,8 +31,8 @@ void check_estimate(std::span<const PoiRecord> records, const Params& p,
 Gap8Backend::Gap8Backend(std::string_view variant, gap8_host::RunOptions options)
     : variant_(variant), runner_(variant), options_(options) {}
 
-void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p,
-                      std::span<PoiRecord> out, OpCounts& counts) {
+void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+                      OpCounts& counts) {
   last_time_.reset();
   const std::size_t pois = poi_count(p);
   if (out.size() != pairs.size() * pois) throw BackendError("gap8: output size mismatch");
@@ -45,8 +45,8 @@ void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p,
   last_stats_ = std::move(stats);
 }
 
-OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> records,
-                     const Params& p, std::size_t pairs) {
+OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> records, const Params& p,
+                     std::size_t pairs) {
   OpCounts c;
   c.counted = true;
   const std::uint64_t candidates = (2 * p.search_radius + 1) * (2 * p.search_radius + 1);

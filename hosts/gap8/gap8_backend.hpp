@@ -35,7 +35,7 @@ inline constexpr double kGap8ClockHz = 50e6;
 
 // Work of one batch as docs/counting.md charges it, derived from the records (the kernel does
 // exactly this work): SAD operations, and the variant's interpolations.
-OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> records,
-                     const Params& p, std::size_t pairs);
+OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> records, const Params& p,
+                     std::size_t pairs);
 
 }  // namespace pxflow

@@ -79,8 +79,8 @@ std::string FlowRunner::unsupported(const Params& p) const {
   const std::uint64_t frame = std::uint64_t(p.width) * p.height;
   const std::string what = planes_ ? "frames, planes and records" : "frames and records";
   if (frame > GAP8_L1_SIZE) return "does not fit L1: a frame alone is larger than the 64 KiB TCDM";
-  const std::uint32_t need = align_up(pxflow_gap8_l1_bytes(
-      p.width, p.height, static_cast<std::uint32_t>(poi_count(p)), planes_));
+  const std::uint32_t need = align_up(
+      pxflow_gap8_l1_bytes(p.width, p.height, static_cast<std::uint32_t>(poi_count(p)), planes_));
   if (need > l1_heap_bytes_)
     return "does not fit L1: " + what + " need " + std::to_string(need) + " bytes, the L1 heap " +
            "beside 8 core stacks has " + std::to_string(l1_heap_bytes_);

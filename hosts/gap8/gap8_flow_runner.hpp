@@ -17,16 +17,16 @@
 namespace pxflow::gap8_host {
 
 struct RunOptions {
-  int cores = 8;            // cluster size and team size, 1..8
-  bool contention = true;   // TCDM bank conflicts modelled
-  bool chunked = false;     // POIs split in contiguous chunks instead of round robin
+  int cores = 8;           // cluster size and team size, 1..8
+  bool contention = true;  // TCDM bank conflicts modelled
+  bool chunked = false;    // POIs split in contiguous chunks instead of round robin
 };
 
 // What one batch cost on the model, and what the kernel reported per pair.
 struct BatchStats {
-  std::uint64_t cycles = 0;                      // cluster cycles, every run of the batch
-  std::vector<pxflow_gap8_result> pairs;         // per pair: estimate and cycle breakdown
-  std::vector<gap8::EventTotals> cores;          // per core: counters summed over the runs
+  std::uint64_t cycles = 0;               // cluster cycles, every run of the batch
+  std::vector<pxflow_gap8_result> pairs;  // per pair: estimate and cycle breakdown
+  std::vector<gap8::EventTotals> cores;   // per core: counters summed over the runs
 };
 
 class FlowRunner {
@@ -44,16 +44,15 @@ class FlowRunner {
                  const RunOptions& options) const;
 
  private:
-  std::size_t run_chunk(std::span<const FramePair> pairs, const Params& p,
-                        std::span<PoiRecord> out, const RunOptions& options,
-                        BatchStats& stats) const;
+  std::size_t run_chunk(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+                        const RunOptions& options, BatchStats& stats) const;
 
   std::vector<std::uint8_t> l2_image_;  // L2 bytes [L2 base, L2 base + size) after loading
   std::uint32_t entry_ = 0;
   std::uint32_t params_addr_ = 0;
-  std::uint32_t io_base_ = 0;       // first free L2 byte after the image's .bss
+  std::uint32_t io_base_ = 0;  // first free L2 byte after the image's .bss
   std::uint32_t l1_heap_bytes_ = 0;
-  std::uint32_t planes_ = 0;        // full-frame planes of the variant in L1
+  std::uint32_t planes_ = 0;  // full-frame planes of the variant in L1
 };
 
 }  // namespace pxflow::gap8_host

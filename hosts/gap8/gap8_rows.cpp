@@ -8,8 +8,7 @@ namespace pxflow {
 namespace {
 
 BackendRow gap8_row(const std::string& variant) {
-  return {"gap8-" + variant,
-          "nothing (the GAP8 cluster cycle model is built in; 8 cores, 50 MHz)",
+  return {"gap8-" + variant, "nothing (the GAP8 cluster cycle model is built in; 8 cores, 50 MHz)",
           [variant]() -> std::string {
             return gap8_kernel_elf(variant).empty() ? "no embedded GAP8 kernel ELF" : "";
           },

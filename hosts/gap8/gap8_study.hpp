@@ -18,7 +18,7 @@ struct Phases {
 
 // One variant on one core count, on one frame pair.
 struct Measure {
-  double cycles = 0;  // on core 0, DMA start to records back in L2 (the paper's primary core)
+  double cycles = 0;        // on core 0, DMA start to records back in L2 (the paper's primary core)
   double instructions = 0;  // every core, the whole run
   double interpolations = 0, sad_ops = 0;
   int accepted = 0;

@@ -26,8 +26,9 @@ std::string num(std::optional<double> v, const char* fmt = "%.1fk", double scale
 
 void row(const char* label, const std::string& variant, double model, std::optional<double> paper,
          const char* fmt = "%.1fk", double scale = 1000.0) {
-  std::printf("  %-28s %-9s %12s %12s %9s\n", label, variant.c_str(), num(model, fmt, scale).c_str(),
-              num(paper, fmt, scale).c_str(), diff(model, paper).c_str());
+  std::printf("  %-28s %-9s %12s %12s %9s\n", label, variant.c_str(),
+              num(model, fmt, scale).c_str(), num(paper, fmt, scale).c_str(),
+              diff(model, paper).c_str());
 }
 
 void header(const char* title) {
@@ -50,8 +51,8 @@ double per_core_sum(const Measure& m, int event) {
 }  // namespace
 
 void print_tables(const Study& s) {
-  std::printf("pxflow gap8: %s; %.0f MHz; TCDM contention %s; POIs split %s\n",
-              s.pair_name.c_str(), s.options.mhz, s.options.contention ? "on" : "off",
+  std::printf("pxflow gap8: %s; %.0f MHz; TCDM contention %s; POIs split %s\n", s.pair_name.c_str(),
+              s.options.mhz, s.options.contention ? "on" : "off",
               s.options.chunked ? "in chunks" : "round robin");
   header("Table I: interpolations and instructions per frame (instructions: 1 core, whole run)");
   for (const auto& [v, by] : in_order(s)) {
@@ -88,26 +89,27 @@ void print_tables(const Study& s) {
     if (by.count(8)) {
       row("flow, 8 cores actual", v, by.at(8).phases.flow,
           p8 && p8->phases ? std::optional(p8->phases->flow) : std::nullopt);
-      row("Amdahl's limit, 8 cores", v, amdahl_limit(s, v, 8),
-          p8 ? p8->amdahl_limit : std::nullopt, "%.3fx", 1);
-      row("actual speed-up, 8 cores", v, speedup(s, v, 8), p8 ? p8->speedup : std::nullopt,
-          "%.2fx", 1);
+      row("Amdahl's limit, 8 cores", v, amdahl_limit(s, v, 8), p8 ? p8->amdahl_limit : std::nullopt,
+          "%.3fx", 1);
+      row("actual speed-up, 8 cores", v, speedup(s, v, 8), p8 ? p8->speedup : std::nullopt, "%.2fx",
+          1);
     }
   }
   std::printf("\nEvery core count (fps, latency at %.0f MHz; energy at the paper's 25 mW)\n",
               s.options.mhz);
-  std::printf("  %-9s %5s %10s %8s %9s %9s %8s %8s %10s %9s\n", "variant", "cores", "cycles",
-              "fps", "latency", "energy", "speedup", "amdahl", "tcdm_cont", "ld_stall");
+  std::printf("  %-9s %5s %10s %8s %9s %9s %8s %8s %10s %9s\n", "variant", "cores", "cycles", "fps",
+              "latency", "energy", "speedup", "amdahl", "tcdm_cont", "ld_stall");
   for (const auto& [v, by] : in_order(s))
     for (const auto& [cores, m] : by) {
       const double seconds = m.cycles / (s.options.mhz * 1e6);
-      std::printf("  %-9s %5d %10.0f %8.1f %7.3fms %7.1fuJ %7.2fx %7.2fx %10.0f %9.0f\n",
-                  v.c_str(), cores, m.cycles, fps(s, m.cycles), seconds * 1e3,
-                  seconds * kPaperPowerW * 1e6, speedup(s, v, cores), amdahl_limit(s, v, cores),
+      std::printf("  %-9s %5d %10.0f %8.1f %7.3fms %7.1fuJ %7.2fx %7.2fx %10.0f %9.0f\n", v.c_str(),
+                  cores, m.cycles, fps(s, m.cycles), seconds * 1e3, seconds * kPaperPowerW * 1e6,
+                  speedup(s, v, cores), amdahl_limit(s, v, cores),
                   per_core_sum(m, GAP8_EVT_TCDM_CONT), per_core_sum(m, GAP8_EVT_LD_STALL));
     }
-  std::printf("\nBeyond the paper: a one-cycle SAD instruction (as the Cortex-M4's USADA8) would save 3 "
-              "of the 4 single-cycle Xpulp instructions of every 4-byte SAD\n");
+  std::printf(
+      "\nBeyond the paper: a one-cycle SAD instruction (as the Cortex-M4's USADA8) would save 3 "
+      "of the 4 single-cycle Xpulp instructions of every 4-byte SAD\n");
   for (const auto& [v, by] : in_order(s))
     for (const auto& [cores, m] : by) {
       if (cores != 1 && cores != by.rbegin()->first) continue;
@@ -117,8 +119,9 @@ void print_tables(const Study& s) {
                   v.c_str(), cores, m.cycles / 1000, (m.cycles - saved) / 1000,
                   saved / m.cycles * 100);
     }
-  std::printf("\nPer core at the largest core count: IPC (instructions / active cycles), "
-              "load stalls, TCDM contention\n");
+  std::printf(
+      "\nPer core at the largest core count: IPC (instructions / active cycles), "
+      "load stalls, TCDM contention\n");
   for (const auto& [v, by] : in_order(s)) {
     const Measure& m = by.rbegin()->second;
     for (std::size_t c = 0; c < m.cores.size(); ++c) {
@@ -139,7 +142,10 @@ std::string to_json(const Study& s) {
     json per = json::object();
     for (const auto& [cores, m] : by) {
       auto phases = [](const Phases& p) {
-        return json{{"init", p.init}, {"dma", p.dma}, {"flow", p.flow}, {"averaging", p.averaging},
+        return json{{"init", p.init},
+                    {"dma", p.dma},
+                    {"flow", p.flow},
+                    {"averaging", p.averaging},
                     {"output", p.output}};
       };
       json e{{"cycles", m.cycles},
@@ -174,8 +180,10 @@ std::string to_json(const Study& s) {
         put("amdahl_limit", p->amdahl_limit);
         put("fps", p->fps);
         if (p->phases) {
-          pj["phases"] = {{"init", p->phases->init}, {"dma", p->phases->dma},
-                          {"flow", p->phases->flow}, {"averaging", p->phases->averaging}};
+          pj["phases"] = {{"init", p->phases->init},
+                          {"dma", p->phases->dma},
+                          {"flow", p->phases->flow},
+                          {"averaging", p->phases->averaging}};
         }
         e["paper"] = pj;
       }

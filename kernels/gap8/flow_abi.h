@@ -23,9 +23,9 @@ typedef struct {
   uint32_t magic;
   uint32_t width, height, search_radius, blocks;
   uint32_t feature_threshold, sad_threshold, hist_filter, min_count;
-  uint32_t pairs; /* frame pairs in this run */
-  uint32_t cores; /* team size of the flow phase, 1..8 */
-  uint32_t split; /* PXFLOW_GAP8_SPLIT_* */
+  uint32_t pairs;      /* frame pairs in this run */
+  uint32_t cores;      /* team size of the flow phase, 1..8 */
+  uint32_t split;      /* PXFLOW_GAP8_SPLIT_* */
   uint32_t frames_l2;  /* pair p: prev at frames_l2 + 2*p*W*H, next W*H bytes later */
   uint32_t records_l2; /* pair p: its POI records at records_l2 + p*pois*32 */
   uint32_t results_l2; /* pair p: pxflow_gap8_result at results_l2 + p*sizeof(result) */

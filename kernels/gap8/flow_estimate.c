@@ -19,8 +19,8 @@ static float filtered_flow(const uint16_t *hist, int nbins, int s) {
   return (value / weight - (float)(2 * s + 1)) / 2.0f;
 }
 
-void flow_estimate(const pxflow_gap8_record *records, uint32_t pois,
-                   const pxflow_gap8_params *p, pxflow_gap8_result *out) {
+void flow_estimate(const pxflow_gap8_record *records, uint32_t pois, const pxflow_gap8_params *p,
+                   pxflow_gap8_result *out) {
   const int s = (int)p->search_radius;
   const int nbins = 2 * (2 * s + 1) + 1;
   uint16_t histx[PXFLOW_GAP8_MAX_BINS], histy[PXFLOW_GAP8_MAX_BINS];

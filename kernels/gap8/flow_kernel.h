@@ -13,9 +13,9 @@ typedef struct {
   uint32_t feature_threshold, sad_threshold;
   uint32_t cores, split;
   uint32_t pois;
-  const uint8_t *prev, *next; /* L1 */
-  uint8_t *planes[3];         /* L1: h, g, d of the whole next frame (global variant only) */
-  const uint16_t *poi_xy;     /* L1: x, y of each POI in grid order */
+  const uint8_t *prev, *next;  /* L1 */
+  uint8_t *planes[3];          /* L1: h, g, d of the whole next frame (global variant only) */
+  const uint16_t *poi_xy;      /* L1: x, y of each POI in grid order */
   pxflow_gap8_record *records; /* L1 */
 } flow_ctx;
 
@@ -35,7 +35,7 @@ void variant_half_sads(const flow_ctx *c, const uint8_t *blk, uint32_t mx, uint3
 void flow_team_entry(void *ctx);
 
 /* Histograms and the frame estimate of SPEC §5 (HF on or off; no gyro), soft-float. */
-void flow_estimate(const pxflow_gap8_record *records, uint32_t pois,
-                   const pxflow_gap8_params *p, pxflow_gap8_result *out);
+void flow_estimate(const pxflow_gap8_record *records, uint32_t pois, const pxflow_gap8_params *p,
+                   pxflow_gap8_result *out);
 
 #endif

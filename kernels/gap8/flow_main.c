@@ -77,8 +77,8 @@ static void run_pair(const pxflow_gap8_params *p, flow_ctx *c, uint32_t pair) {
 
 static int valid(const pxflow_gap8_params *p) {
   return p->magic == PXFLOW_GAP8_MAGIC && p->cores >= 1 && p->cores <= 8 && p->blocks >= 1 &&
-         p->search_radius >= 1 && p->search_radius <= 31 &&
-         p->width >= 2 * p->search_radius + 10 && p->height >= 2 * p->search_radius + 10;
+         p->search_radius >= 1 && p->search_radius <= 31 && p->width >= 2 * p->search_radius + 10 &&
+         p->height >= 2 * p->search_radius + 10;
 }
 
 int main(void) {
@@ -94,8 +94,7 @@ int main(void) {
   c.split = p.split;
   c.pois = make_axis(p.width, &p).count * make_axis(p.height, &p).count;
   const uint32_t frame = pxflow_gap8_frame_l1_bytes(p.width, p.height);
-  uint8_t *l1 = pi_cl_l1_malloc(0, pxflow_gap8_l1_bytes(p.width, p.height, c.pois,
-                                                        variant_planes));
+  uint8_t *l1 = pi_cl_l1_malloc(0, pxflow_gap8_l1_bytes(p.width, p.height, c.pois, variant_planes));
   if (!l1) return PXFLOW_GAP8_NO_L1;
   c.prev = l1;
   c.next = l1 + frame;

@@ -25,8 +25,7 @@ static uint32_t sad8x8(const uint8_t *a, const uint8_t *b, uint32_t w) {
 
 /* Four bytes of a column, packed like the firmware's col1..col4 (lanes are independent). */
 static uint32_t column4(const uint8_t *p, uint32_t w) {
-  return (uint32_t)p[0] | (uint32_t)p[w] << 8 | (uint32_t)p[2 * w] << 16 |
-         (uint32_t)p[3 * w] << 24;
+  return (uint32_t)p[0] | (uint32_t)p[w] << 8 | (uint32_t)p[2 * w] << 16 | (uint32_t)p[3 * w] << 24;
 }
 
 /* The firmware's compute_diff: 3 row and 3 column 4-byte differences of the central 4x4. */

@@ -21,14 +21,14 @@ void variant_half_sads(const flow_ctx *c, const uint8_t *blk, uint32_t mx, uint3
     for (int half = 0; half < 8; half += 4) {
       const uint8_t *p0 = match + r * w + half; /* P(c, r) for the four pixels */
       const uint8_t *up = p0 - w, *dn = p0 + w;
-      const uint32_t s0 = avg4(ld4(p0), ld4(p0 + 1));  /* h(c, r) */
-      const uint32_t s1 = avg4(ld4(dn), ld4(dn + 1));  /* h(c, r+1) */
-      const uint32_t s2 = avg4(ld4(p0), ld4(dn));      /* g(c, r) */
-      const uint32_t s3 = avg4(ld4(dn), ld4(dn - 1));  /* h(c-1, r+1) */
-      const uint32_t s4 = avg4(ld4(p0), ld4(p0 - 1));  /* h(c-1, r) */
-      const uint32_t s5 = avg4(ld4(up), ld4(up - 1));  /* h(c-1, r-1) */
-      const uint32_t s6 = avg4(ld4(p0), ld4(up));      /* g(c, r-1) */
-      const uint32_t s7 = avg4(ld4(up), ld4(up + 1));  /* h(c, r-1) */
+      const uint32_t s0 = avg4(ld4(p0), ld4(p0 + 1)); /* h(c, r) */
+      const uint32_t s1 = avg4(ld4(dn), ld4(dn + 1)); /* h(c, r+1) */
+      const uint32_t s2 = avg4(ld4(p0), ld4(dn));     /* g(c, r) */
+      const uint32_t s3 = avg4(ld4(dn), ld4(dn - 1)); /* h(c-1, r+1) */
+      const uint32_t s4 = avg4(ld4(p0), ld4(p0 - 1)); /* h(c-1, r) */
+      const uint32_t s5 = avg4(ld4(up), ld4(up - 1)); /* h(c-1, r-1) */
+      const uint32_t s6 = avg4(ld4(p0), ld4(up));     /* g(c, r-1) */
+      const uint32_t s7 = avg4(ld4(up), ld4(up + 1)); /* h(c, r-1) */
       const uint32_t a = ld4(blk + r * w + half);
       acc[0] = sad4_acc(acc[0], a, s0);
       acc[1] = sad4_acc(acc[1], a, avg4(s0, s1)); /* d(c, r) */

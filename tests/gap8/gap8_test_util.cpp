@@ -29,7 +29,8 @@ std::vector<OwnedPair> gap8_corpus(const Params& p, int n_random, std::uint64_t 
   std::vector<OwnedPair> out;
   for (int i = 0; i < n_random; ++i)
     out.push_back(random_pair(p.width, p.height, p.search_radius, seed + i));
-  for (OwnedPair& h : hostile_pairs(p.width, p.height, p.search_radius)) out.push_back(std::move(h));
+  for (OwnedPair& h : hostile_pairs(p.width, p.height, p.search_radius))
+    out.push_back(std::move(h));
   for (OwnedPair& r : gap8_real_pairs(p.width, p.height)) out.push_back(std::move(r));
   return out;
 }
