@@ -26,6 +26,7 @@ int run_pxflow(int argc, char** argv) {
 #endif
   std::vector<cli::Command> commands = {cli::add_flow_command(app), cli::add_check_command(app),
                                         cli::add_bench_command(app), cli::add_report_command(app),
+                                        cli::add_accuracy_command(app),
                                         cli::add_backends_command(app)};
 #ifdef PXFLOW_WITH_GAP8
   commands.push_back(cli::add_gap8_command(app));

@@ -1,7 +1,9 @@
 // pxflow flow: one frame pair through one backend, the estimate as text or JSON.
+#include <filesystem>
 #include <iostream>
 
 #include "commands.hpp"
+#include "draw_flow.hpp"
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "frame_io.hpp"
@@ -18,6 +20,7 @@ struct FlowOptions {
   std::string backend = "ref-original";
   BackendOptions backend_options;
   bool json = false;
+  std::string draw;  // PNG path, empty = no picture
   std::string prev_path, next_path;
 };
 
@@ -48,6 +51,7 @@ void print_summary(const FlowOptions& o, const Params& p, const FrameResult& r,
 
 int run_flow(const FlowOptions& o) {
   const BackendRow& row = find_backend(o.backend);  // unknown names fail before any work
+  if (!o.draw.empty()) check_draw_path(o.draw);
   std::optional<FrameSize> raw_size;
   if (!o.size.empty()) raw_size = parse_frame_size(o.size);
   const Frame prev = load_frame(o.prev_path, raw_size);
@@ -70,6 +74,11 @@ int run_flow(const FlowOptions& o) {
   OpCounts counts;
   backend->run({&pair, 1}, p, records, counts);
   const FrameResult result = estimate_flow(records, p);
+  if (!o.draw.empty()) {
+    auto file = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+    draw_flow(o.draw, prev.view(), p, records, result,
+              {file(o.prev_path) + " -> " + file(o.next_path), o.backend, o.problem.profile});
+  }
   if (o.json)
     std::cout << flow_result_json(result, records, counts).dump() << "\n";
   else
@@ -90,6 +99,7 @@ Command add_flow_command(CLI::App& app) {
       ->check(CLI::Range(0, 1024));
   sub->add_option("--device", o->backend_options.device, "Device index or name substring (GPU backends)");
   sub->add_flag("--json", o->json, "Print one JSON object: flow, bits, histograms, counts, records");
+  sub->add_option("--draw", o->draw, "Also draw the POIs, their vectors and the frame flow into FILE (.png)");
   sub->add_option("PREV", o->prev_path, "First frame (image file or .raw)")->required();
   sub->add_option("NEXT", o->next_path, "Second frame (same size)")->required();
   return {sub, [o] { return run_flow(*o); }};

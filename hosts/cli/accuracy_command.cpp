@@ -1,0 +1,51 @@
+// pxflow accuracy: pxflow's frame flow against the true motion of synthetic pairs and against DIS
+// on real video, side by side with OpenCV's Lucas-Kanade and DIS flow (hosts/accuracy/).
+#include <iostream>
+
+#include "accuracy_run.hpp"
+#include "commands.hpp"
+#include "registry.hpp"
+
+namespace pxflow::cli {
+namespace {
+
+// `cpu` (the best CPU kernel) when this build has it, else the reference.
+std::string default_backend() {
+  for (const auto& row : backend_rows())
+    if (row.name == "cpu") return "cpu";
+  return "ref-original";
+}
+
+int run_accuracy_command(accuracy::AccuracyOptions o) {
+  find_backend(o.backend);  // unknown names fail before any work
+  o.backend_options.threads = o.threads;
+  const auto report = accuracy::run_accuracy(o);
+  std::cout << accuracy::format_accuracy(report, o);
+  return 0;
+}
+
+}  // namespace
+
+Command add_accuracy_command(CLI::App& app) {
+  auto o = std::make_shared<accuracy::AccuracyOptions>();
+  o->backend = default_backend();
+  CLI::App* sub = app.add_subcommand(
+      "accuracy", "pxflow vs OpenCV's Lucas-Kanade and DIS flow: error against known motion, time per frame");
+  sub->add_option("--backend", o->backend, "Backend for pxflow's flow (see `pxflow backends`)")
+      ->capture_default_str();
+  sub->add_option("--pairs", o->pairs, "Synthetic pairs at 64x64 (a quarter as many at 320x240)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  sub->add_option("--video-pairs", o->video_pairs, "Real frame pairs per video (vtest.avi, tree.avi); 0 = none")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 40));
+  sub->add_option("--seed", o->seed, "Seed of the synthetic motions")->capture_default_str();
+  sub->add_option("--threads", o->threads, "Threads for OpenCV and the backend alike")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1024));
+  sub->add_option("--data-dir", o->data_dir, "Where opencv-doc's images and videos are")->capture_default_str();
+  sub->add_flag("--by-kind", o->by_kind, "Also one block of rows per kind of motion");
+  return {sub, [o] { return run_accuracy_command(*o); }};
+}
+
+}  // namespace pxflow::cli
