@@ -108,7 +108,7 @@ std::vector<SetRows> truth_sets(const std::string& set, const std::string& setti
 
 // Real consecutive frames: agreement of pxflow and LK with DIS; DIS's own row has no error.
 SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
-  const auto pairs = video_pairs(o.data_dir + "/" + video, o.video_pairs, 20);
+  const auto pairs = video_pairs(o.data_dir + "/" + video, o.video_pairs);
   Params p = profile("px4flow-64");
   p.width = pairs.front().prev.cols, p.height = pairs.front().prev.rows;
   p.search_radius = 7, p.blocks = 32;  // the full-size setting of pxflow check's real frames

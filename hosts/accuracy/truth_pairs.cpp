@@ -1,5 +1,6 @@
 #include "truth_pairs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -154,11 +155,16 @@ std::vector<TruthPair> make_truth_pairs(const std::vector<SourceImage>& images, 
   return out;
 }
 
-std::vector<VideoPair> video_pairs(const std::string& path, int count, int step) {
+std::vector<VideoPair> video_pairs(const std::string& path, int count) {
   if (!std::filesystem::exists(path))
     throw InputError(path + ": no such file (Debian's opencv-doc; bash ci/install-deps.sh installs it)");
   cv::VideoCapture cap(path);
   if (!cap.isOpened()) throw InputError(path + ": cannot open the video");
+  // Count the frames by reading them (the container's own count can be wrong), then reopen.
+  int frames = 0;
+  while (cap.grab()) ++frames;
+  cap.open(path);
+  const int step = std::max(2, frames / std::max(1, count));
   const std::string name = std::filesystem::path(path).filename().string();
   std::vector<VideoPair> out;
   cv::Mat frame, gray, previous;

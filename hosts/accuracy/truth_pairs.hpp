@@ -44,7 +44,8 @@ struct VideoPair {
   std::string name;  // e.g. "vtest.avi#40"
   cv::Mat prev, next;
 };
-// `count` pairs of consecutive frames: frames (k*step, k*step+1) for k = 0, 1, ...; step >= 2.
-std::vector<VideoPair> video_pairs(const std::string& path, int count, int step);
+// `count` pairs of consecutive frames spread over the video: frames (k*step, k*step+1) for
+// k = 0, 1, ..., step = frame count / count (at least 2).
+std::vector<VideoPair> video_pairs(const std::string& path, int count);
 
 }  // namespace pxflow::accuracy
