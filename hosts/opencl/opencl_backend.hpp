@@ -3,6 +3,7 @@
 // one frame buffer and run with one launch, split into chunks only where the device's limits
 // (max allocation, global memory) demand it. Work decomposition and measurements: docs/opencl.md.
 #pragma once
+#include <optional>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -45,6 +46,11 @@ class OpenclBackend final : public Backend {
   std::string unsupported(const Params& p) const override;
 
   const OpenclTiming& last_timing() const { return timing_; }
+  // Kernel time of the last run by OpenCL event profiling (transfers excluded), for the bench.
+  std::optional<DeviceTime> last_device_time() const override {
+    if (timing_.launches == 0) return std::nullopt;
+    return DeviceTime{"opencl-event-profiling", timing_.kernel_seconds * 1e9, std::nullopt};
+  }
   const std::string& device_name() const { return program_->device.name; }
   std::size_t group_size() const { return group_size_; }
   OpenclLayout layout() const { return tuning_.layout; }  // never kAuto

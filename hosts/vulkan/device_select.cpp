@@ -1,5 +1,7 @@
 #include "device_select.hpp"
 
+#include "errors.hpp"
+
 #include <algorithm>
 #include <cctype>
 
@@ -86,15 +88,16 @@ std::size_t select_device(const std::vector<DeviceCandidate>& devices, std::stri
     const std::size_t index =
         request.size() > 9 ? devices.size() : std::stoul(std::string(request));
     if (index >= devices.size())
-      fail("device index " + std::string(request) +
-           " is out of range (devices: " + describe_devices(devices) + ")");
+      // A --device that names nothing is the user's input, not a driver failure: exit 2.
+      throw InputError("vulkan: device index " + std::string(request) +
+                       " is out of range (devices: " + describe_devices(devices) + ")");
     return checked(devices, index, request);
   }
   for (std::size_t i = 0; i < devices.size(); ++i)
     if (lower(devices[i].name).find(lower(request)) != std::string::npos)
       return checked(devices, i, request);
-  fail("no Vulkan device name contains '" + std::string(request) +
-       "' (devices: " + describe_devices(devices) + ")");
+  throw InputError("vulkan: no Vulkan device name contains '" + std::string(request) +
+                   "' (devices: " + describe_devices(devices) + ")");
 }
 
 }  // namespace pxflow::vk
