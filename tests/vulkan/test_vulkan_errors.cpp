@@ -47,7 +47,9 @@ TEST_CASE("vulkan: a bad --device gives one clear error", "[vulkan]") {
   REQUIRE(row.probe() == "");
   CHECK_THROWS_WITH(row.create({.threads = 0, .device = "99"}),
                     Contains("vulkan: device index 99 is out of range"));
-  CHECK_THROWS_AS(row.create({.threads = 0, .device = "no-such-device"}), BackendError);
+  // A device that names nothing is the user's input (exit 2 in the CLI), as for OpenCL.
+  CHECK_THROWS_AS(row.create({.threads = 0, .device = "99"}), InputError);
+  CHECK_THROWS_AS(row.create({.threads = 0, .device = "no-such-device"}), InputError);
   CHECK(row.create({.threads = 0, .device = "0"}) != nullptr);
   CHECK(row.create({.threads = 0, .device = "llvmpipe"}) != nullptr);
 }
