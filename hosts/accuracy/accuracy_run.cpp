@@ -1,10 +1,11 @@
+#include "accuracy_run.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <opencv2/core/utility.hpp>
 
-#include "accuracy_run.hpp"
 #include "check_corpus.hpp"
 #include "estimators.hpp"
 #include "params.hpp"
@@ -34,7 +35,8 @@ double median(std::vector<double> v) {
 }
 
 MethodRow summarise(const std::string& method, const Samples& s, bool has_error) {
-  MethodRow row{method, static_cast<int>(s.micros.size()), s.valid, has_error, 0, 0, median(s.micros)};
+  MethodRow row{method,          static_cast<int>(s.micros.size()), s.valid, has_error, 0, 0,
+                median(s.micros)};
   if (has_error) {
     double sum = 0;
     for (double e : s.errors) sum += e;
@@ -62,7 +64,9 @@ struct Methods {
   DisEstimator dis;
   std::string px_name;
   Methods(const AccuracyOptions& o, const Params& p)
-      : px(o.backend, o.backend_options, p), lk(px.poi_centres(), p), px_name("pxflow (" + o.backend + ")") {}
+      : px(o.backend, o.backend_options, p),
+        lk(px.poi_centres(), p),
+        px_name("pxflow (" + o.backend + ")") {}
 };
 
 cv::Point2d mean_point(const std::vector<cv::Point2f>& pts) {
@@ -87,7 +91,8 @@ std::vector<SetRows> truth_sets(const std::string& set, const std::string& setti
     const FlowEstimate px = timed(m.px, t.prev, t.next, all[0]);
     const FlowEstimate lk = timed(m.lk, t.prev, t.next, all[1]);
     const FlowEstimate dis = timed(m.dis, t.prev, t.next, all[2]);
-    const double errors[3] = {cv::norm(px.flow - at_pois), cv::norm(lk.flow - at_pois), cv::norm(dis.flow - at_centre)};
+    const double errors[3] = {cv::norm(px.flow - at_pois), cv::norm(lk.flow - at_pois),
+                              cv::norm(dis.flow - at_centre)};
     for (int k = 0; k < 3; ++k) all[k].errors.push_back(errors[k]);
     if (!o.by_kind) continue;
     Samples* kind = by_kind[t.kind];
@@ -100,7 +105,8 @@ std::vector<SetRows> truth_sets(const std::string& set, const std::string& setti
   std::vector<SetRows> out;
   for (const auto& [kind, s] : by_kind) {
     SetRows rows{kind.empty() ? set : set + ", " + kind, setting, "true motion", {}};
-    rows.rows = {summarise(m.px_name, s[0], true), summarise("LK", s[1], true), summarise("DIS", s[2], true)};
+    rows.rows = {summarise(m.px_name, s[0], true), summarise("LK", s[1], true),
+                 summarise("DIS", s[2], true)};
     out.insert(kind.empty() ? out.begin() : out.end(), std::move(rows));
   }
   return out;
@@ -123,9 +129,11 @@ SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
     s[1].errors.push_back(cv::norm(lk.flow - dis.flow));
   }
   const std::string size = std::to_string(p.width) + "x" + std::to_string(p.height);
-  return {video + " " + size + " (real, consecutive frames)", "px4flow-64 S=7 B=32",
+  return {video + " " + size + " (real, consecutive frames)",
+          "px4flow-64 S=7 B=32",
           "DIS (agreement, not ground truth)",
-          {summarise(m.px_name, s[0], true), summarise("LK", s[1], true), summarise("DIS", s[2], false)}};
+          {summarise(m.px_name, s[0], true), summarise("LK", s[1], true),
+           summarise("DIS", s[2], false)}};
 }
 
 }  // namespace
@@ -139,9 +147,11 @@ AccuracyReport run_accuracy(const AccuracyOptions& o) {
     for (auto& s : sets) r.sets.push_back(std::move(s));
   };
   const auto camera = make_truth_pairs(images, Geometry::kCamera64, o.pairs, o.seed * 100000);
-  add(truth_sets("synthetic, camera 64x64 (4x4 binned)", "px4flow-64", profile("px4flow-64"), camera, o));
+  add(truth_sets("synthetic, camera 64x64 (4x4 binned)", "px4flow-64", profile("px4flow-64"),
+                 camera, o));
   const auto [window_setting, window_params] = check_settings()[2];  // 320x240 S=7 B=16
-  const auto window = make_truth_pairs(images, Geometry::kWindow320, std::max(1, o.pairs / 4), o.seed * 100000 + 50000);
+  const auto window = make_truth_pairs(images, Geometry::kWindow320, std::max(1, o.pairs / 4),
+                                       o.seed * 100000 + 50000);
   add(truth_sets("synthetic, 320x240 window", window_setting, window_params, window, o));
   if (o.video_pairs > 0)
     for (const char* video : {"vtest.avi", "tree.avi"}) r.sets.push_back(agreement_set(video, o));

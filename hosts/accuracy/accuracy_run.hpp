@@ -13,20 +13,20 @@ namespace pxflow::accuracy {
 struct AccuracyOptions {
   std::string backend;  // a registry name
   BackendOptions backend_options;
-  int threads = 1;        // OpenCV's threads and the backend's, for a like-for-like clock
-  int pairs = 200;        // synthetic pairs at 64x64; a quarter of that (at least 1) at 320x240
-  int video_pairs = 6;    // per video (vtest.avi, tree.avi); 0 leaves the videos out
+  int threads = 1;      // OpenCV's threads and the backend's, for a like-for-like clock
+  int pairs = 200;      // synthetic pairs at 64x64; a quarter of that (at least 1) at 320x240
+  int video_pairs = 6;  // per video (vtest.avi, tree.avi); 0 leaves the videos out
   std::uint64_t seed = 1;
   std::string data_dir = "/usr/share/doc/opencv-doc/examples/data";
-  bool by_kind = false;   // also one block of rows per kind of motion
+  bool by_kind = false;  // also one block of rows per kind of motion
 };
 
 // One row of the table.
 struct MethodRow {
   std::string method;  // "pxflow (cpu)", "LK", "DIS"
   int frames = 0;
-  int valid = 0;                   // frames with a flow (see FlowEstimate::valid)
-  bool has_error = true;           // false for DIS where DIS is the reference
+  int valid = 0;                         // frames with a flow (see FlowEstimate::valid)
+  bool has_error = true;                 // false for DIS where DIS is the reference
   double mean_error = 0, p95_error = 0;  // pixels, Euclidean
   double median_us = 0;                  // time per frame, steady_clock
 };

@@ -20,10 +20,16 @@ std::string pad(std::string s, std::size_t width) {
   return s;
 }
 
-std::string table_row(const std::vector<std::string>& cells, const std::vector<std::size_t>& widths) {
+std::string table_row(const std::vector<std::string>& cells,
+                      const std::vector<std::size_t>& widths) {
   std::string line = "|";
-  for (std::size_t i = 0; i < cells.size(); ++i) line += " " + pad(cells[i], widths[i]) + " |";
-  return line + "\n";
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    line += ' ';
+    line += pad(cells[i], widths[i]);
+    line += " |";
+  }
+  line += '\n';
+  return line;
 }
 
 }  // namespace
@@ -34,16 +40,19 @@ std::string format_accuracy(const AccuracyReport& r, const AccuracyOptions& o) {
   std::string out = "pxflow accuracy: backend " + o.backend + ", seed " + std::to_string(o.seed) +
                     ", " + std::to_string(o.threads) + " thread(s) for OpenCV and the backend\n";
   out += "synthetic pairs from " + images + " (opencv-doc)\n";
-  out += "error = |estimated frame flow - reference| in pixels (Euclidean); time = median per frame, "
-         "std::chrono::steady_clock, the three methods timed pair by pair in this run\n\n";
-  const std::vector<std::string> head = {"pairs", "pxflow setting", "against", "method", "frames",
-                                         "with flow", "mean error px", "p95 error px", "median µs/frame"};
+  out +=
+      "error = |estimated frame flow - reference| in pixels (Euclidean); time = median per frame, "
+      "std::chrono::steady_clock, the three methods timed pair by pair in this run\n\n";
+  const std::vector<std::string> head = {"pairs",         "pxflow setting", "against",
+                                         "method",        "frames",         "with flow",
+                                         "mean error px", "p95 error px",   "median µs/frame"};
   std::vector<std::vector<std::string>> rows;
   for (const auto& set : r.sets)
     for (const auto& m : set.rows)
-      rows.push_back({set.set, set.setting, set.against, m.method, std::to_string(m.frames),
-                      std::to_string(m.valid), m.has_error ? format("%.3f", m.mean_error) : "(reference)",
-                      m.has_error ? format("%.3f", m.p95_error) : "(reference)", format("%.0f", m.median_us)});
+      rows.push_back(
+          {set.set, set.setting, set.against, m.method, std::to_string(m.frames),
+           std::to_string(m.valid), m.has_error ? format("%.3f", m.mean_error) : "(reference)",
+           m.has_error ? format("%.3f", m.p95_error) : "(reference)", format("%.0f", m.median_us)});
   std::vector<std::size_t> widths(head.size());
   for (std::size_t i = 0; i < head.size(); ++i) {
     widths[i] = head[i].size();

@@ -72,7 +72,8 @@ FlowEstimate LucasKanadeEstimator::estimate(const cv::Mat& prev, const cv::Mat& 
   return {{sx / xs.size(), sy / ys.size()}, true};
 }
 
-DisEstimator::DisEstimator() : dis_(cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST)) {}
+DisEstimator::DisEstimator()
+    : dis_(cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST)) {}
 
 FlowEstimate DisEstimator::estimate(const cv::Mat& prev, const cv::Mat& next) {
   dis_->calc(prev, next, field_);

@@ -107,12 +107,14 @@ TruthPair make_pair(const SourceImage& img, const Kind& kind, Geometry g, std::u
   // The sensor sees the scene move by f times the motion in binned pixels.
   const cv::Matx23d full_motion = affine(fcx, fcy, angle, scale, f * tx, f * ty);
   cv::Mat moved;
-  cv::warpAffine(img.gray, moved, cv::Mat(full_motion), img.gray.size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
+  cv::warpAffine(img.gray, moved, cv::Mat(full_motion), img.gray.size(), cv::INTER_LINEAR,
+                 cv::BORDER_REFLECT);
 
   TruthPair t{kind.name + std::string("/") + img.name + "/seed=" + std::to_string(seed), kind.name,
               capture(img.gray, pl), capture(moved, pl), affine(cx, cy, angle, scale, tx, ty)};
   if (kind.blur_sigma > 0) cv::GaussianBlur(t.next, t.next, cv::Size(0, 0), kind.blur_sigma);
-  if (kind.brightness) t.next.convertTo(t.next, CV_8U, uniform(rng, 0.8, 1.2), uniform(rng, -20, 20));
+  if (kind.brightness)
+    t.next.convertTo(t.next, CV_8U, uniform(rng, 0.8, 1.2), uniform(rng, -20, 20));
   if (kind.noise_sigma > 0) {
     add_noise(t.prev, kind.noise_sigma, seed * 2);
     add_noise(t.next, kind.noise_sigma, seed * 2 + 1);
@@ -133,7 +135,8 @@ std::vector<SourceImage> load_source_images(const std::string& data_dir) {
   for (const char* name : kImages) {
     const std::string path = data_dir + "/" + name;
     if (!std::filesystem::exists(path))
-      throw InputError(path + ": no such file (Debian's opencv-doc; bash ci/install-deps.sh installs it)");
+      throw InputError(path +
+                       ": no such file (Debian's opencv-doc; bash ci/install-deps.sh installs it)");
     const Frame f = load_frame(path, std::nullopt);
     if (f.width < 336 || f.height < 256)
       throw InputError(path + ": " + std::to_string(f.width) + "x" + std::to_string(f.height) +
@@ -150,14 +153,16 @@ std::vector<TruthPair> make_truth_pairs(const std::vector<SourceImage>& images, 
   for (int n = 0; n < count; ++n) {
     const auto i = static_cast<std::size_t>(n);
     // Kinds cycle fastest, images change every pass, so each image meets every kind.
-    out.push_back(make_pair(images[(i / kinds) % images.size()], kKinds[i % kinds], g, first_seed + i));
+    out.push_back(
+        make_pair(images[(i / kinds) % images.size()], kKinds[i % kinds], g, first_seed + i));
   }
   return out;
 }
 
 std::vector<VideoPair> video_pairs(const std::string& path, int count) {
   if (!std::filesystem::exists(path))
-    throw InputError(path + ": no such file (Debian's opencv-doc; bash ci/install-deps.sh installs it)");
+    throw InputError(path +
+                     ": no such file (Debian's opencv-doc; bash ci/install-deps.sh installs it)");
   cv::VideoCapture cap(path);
   if (!cap.isOpened()) throw InputError(path + ": cannot open the video");
   // Count the frames by reading them (the container's own count can be wrong), then reopen.
@@ -170,7 +175,8 @@ std::vector<VideoPair> video_pairs(const std::string& path, int count) {
   cv::Mat frame, gray, previous;
   for (int n = 0; static_cast<int>(out.size()) < count && cap.read(frame); ++n) {
     cv::cvtColor(frame, gray, cv::COLOR_BGR2GRAY);
-    if (n % step == 1 && !previous.empty()) out.push_back({name + "#" + std::to_string(n - 1), previous, gray.clone()});
+    if (n % step == 1 && !previous.empty())
+      out.push_back({name + "#" + std::to_string(n - 1), previous, gray.clone()});
     if (n % step == 0) previous = gray.clone();
   }
   if (out.size() < static_cast<std::size_t>(count))

@@ -30,20 +30,23 @@ Command add_accuracy_command(CLI::App& app) {
   auto o = std::make_shared<accuracy::AccuracyOptions>();
   o->backend = default_backend();
   CLI::App* sub = app.add_subcommand(
-      "accuracy", "pxflow vs OpenCV's Lucas-Kanade and DIS flow: error against known motion, time per frame");
+      "accuracy",
+      "pxflow vs OpenCV's Lucas-Kanade and DIS flow: error against known motion, time per frame");
   sub->add_option("--backend", o->backend, "Backend for pxflow's flow (see `pxflow backends`)")
       ->capture_default_str();
   sub->add_option("--pairs", o->pairs, "Synthetic pairs at 64x64 (a quarter as many at 320x240)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
-  sub->add_option("--video-pairs", o->video_pairs, "Real frame pairs per video (vtest.avi, tree.avi); 0 = none")
+  sub->add_option("--video-pairs", o->video_pairs,
+                  "Real frame pairs per video (vtest.avi, tree.avi); 0 = none")
       ->capture_default_str()
       ->check(CLI::Range(0, 40));
   sub->add_option("--seed", o->seed, "Seed of the synthetic motions")->capture_default_str();
   sub->add_option("--threads", o->threads, "Threads for OpenCV and the backend alike")
       ->capture_default_str()
       ->check(CLI::Range(1, 1024));
-  sub->add_option("--data-dir", o->data_dir, "Where opencv-doc's images and videos are")->capture_default_str();
+  sub->add_option("--data-dir", o->data_dir, "Where opencv-doc's images and videos are")
+      ->capture_default_str();
   sub->add_flag("--by-kind", o->by_kind, "Also one block of rows per kind of motion");
   return {sub, [o] { return run_accuracy_command(*o); }};
 }

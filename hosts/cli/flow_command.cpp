@@ -75,9 +75,11 @@ int run_flow(const FlowOptions& o) {
   backend->run({&pair, 1}, p, records, counts);
   const FrameResult result = estimate_flow(records, p);
   if (!o.draw.empty()) {
-    auto file = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
-    draw_flow(o.draw, prev.view(), p, records, result,
-              {file(o.prev_path) + " -> " + file(o.next_path), o.backend, o.problem.profile});
+    const auto file = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+    std::string frames = file(o.prev_path);
+    frames += " -> ";
+    frames += file(o.next_path);
+    draw_flow(o.draw, prev.view(), p, records, result, {frames, o.backend, o.problem.profile});
   }
   if (o.json)
     std::cout << flow_result_json(result, records, counts).dump() << "\n";

@@ -21,6 +21,7 @@ struct DrawCaption {
 
 // Writes the picture as PNG; throws InputError when it cannot be written.
 void draw_flow(const std::string& path, const FrameView& prev, const Params& p,
-               std::span<const PoiRecord> records, const FrameResult& result, const DrawCaption& caption);
+               std::span<const PoiRecord> records, const FrameResult& result,
+               const DrawCaption& caption);
 
 }  // namespace pxflow

@@ -2,7 +2,6 @@
 // synthetic sets hold the pairs asked for (from at least 3 real images), the video sets say they
 // are agreement and not ground truth, errors are sane, and bad input is one line with exit 2.
 #include <catch2/catch.hpp>
-
 #include <map>
 #include <sstream>
 
@@ -45,14 +44,17 @@ void require_bad_input(const std::vector<std::string>& args, const std::string& 
 
 }  // namespace
 
-TEST_CASE("pxflow accuracy prints pxflow, LK and DIS for 200 synthetic pairs and real video", "[accuracy][cli]") {
-  const auto r = run_pxflow({"accuracy", "--pairs", "200", "--backend", "ref-original"});  // 6 video pairs
+TEST_CASE("pxflow accuracy prints pxflow, LK and DIS for 200 synthetic pairs and real video",
+          "[accuracy][cli]") {
+  const auto r =
+      run_pxflow({"accuracy", "--pairs", "200", "--backend", "ref-original"});  // 6 video pairs
   INFO("stderr: " << r.err << "stdout: " << r.out);
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.find("rubberwhale1.png, basketball1.png, baboon.jpg") != std::string::npos);
   CHECK(r.out.find("steady_clock") != std::string::npos);
 
-  // set -> method -> row; columns: pairs, setting, against, method, frames, with flow, mean, p95, µs
+  // set -> method -> row; columns: pairs, setting, against, method, frames, with flow, mean, p95,
+  // µs
   std::map<std::string, std::map<std::string, std::vector<std::string>>> sets;
   for (const auto& row : table(r.out)) {
     REQUIRE(row.size() == 9);
@@ -96,8 +98,8 @@ TEST_CASE("pxflow accuracy --by-kind adds a block per kind of motion", "[accurac
   const auto r = run_pxflow({"accuracy", "--pairs", "14", "--video-pairs", "0", "--by-kind"});
   INFO("stderr: " << r.err);
   REQUIRE(r.exit_code == 0);
-  for (const char* kind : {"translate+noise", "translate+blur", "translate+brightness", "rotate+translate",
-                           "zoom+translate", "all-ills"})
+  for (const char* kind : {"translate+noise", "translate+blur", "translate+brightness",
+                           "rotate+translate", "zoom+translate", "all-ills"})
     CHECK(r.out.find(std::string("64x64 (4x4 binned), ") + kind) != std::string::npos);
   // Pure sub-pixel translations: pxflow's half-pixel steps and LK are both well inside a pixel.
   int checked = 0;
@@ -111,10 +113,12 @@ TEST_CASE("pxflow accuracy --by-kind adds a block per kind of motion", "[accurac
 }
 
 TEST_CASE("bad input to pxflow accuracy: one line, exit 2", "[accuracy][cli][errors]") {
-  require_bad_input({"accuracy", "--data-dir", "/nonexistent/data"}, "/nonexistent/data/rubberwhale1.png: no such file");
+  require_bad_input({"accuracy", "--data-dir", "/nonexistent/data"},
+                    "/nonexistent/data/rubberwhale1.png: no such file");
   require_bad_input({"accuracy", "--pairs", "0"}, "--pairs");
   require_bad_input({"accuracy", "--pairs", "many"}, "--pairs");
-  require_bad_input({"accuracy", "--backend", "no-such-backend"}, "unknown backend 'no-such-backend'");
+  require_bad_input({"accuracy", "--backend", "no-such-backend"},
+                    "unknown backend 'no-such-backend'");
   require_bad_input({"accuracy", "--threads", "0"}, "--threads");
   require_bad_input({"accuracy", "--video-pairs", "-1"}, "--video-pairs");
 }

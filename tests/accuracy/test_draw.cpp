@@ -1,7 +1,6 @@
 // `pxflow flow --draw FILE`: a PNG that decodes at the expected size with the status colours in
 // it, at 64x64 (enlarged 10x) and at full size; bad --draw paths are one line with exit 2.
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
@@ -18,7 +17,8 @@ const std::string kData = "/usr/share/doc/opencv-doc/examples/data";
 int count_colour(const cv::Mat& img, cv::Vec3b colour) {
   int n = 0;
   for (int y = 0; y < img.rows; ++y)
-    for (int x = 0; x < img.cols; ++x) n += cv::norm(img.at<cv::Vec3b>(y, x), colour, cv::NORM_L1) < 30;
+    for (int x = 0; x < img.cols; ++x)
+      n += cv::norm(img.at<cv::Vec3b>(y, x), colour, cv::NORM_L1) < 30;
   return n;
 }
 
@@ -28,7 +28,8 @@ TEST_CASE("flow --draw writes a PNG of the expected size with vectors in it", "[
   pxflow::test::TempDir dir;
   // A 64x64 camera pair with known motion, as pxflow accuracy makes them.
   const auto images = pxflow::accuracy::load_source_images(kData);
-  const auto pair = pxflow::accuracy::make_truth_pairs(images, pxflow::accuracy::Geometry::kCamera64, 1, 3)[0];
+  const auto pair =
+      pxflow::accuracy::make_truth_pairs(images, pxflow::accuracy::Geometry::kCamera64, 1, 3)[0];
   REQUIRE(cv::imwrite(dir.path("a.png"), pair.prev));
   REQUIRE(cv::imwrite(dir.path("b.png"), pair.next));
 
@@ -37,8 +38,14 @@ TEST_CASE("flow --draw writes a PNG of the expected size with vectors in it", "[
     cv::Size expected;
   };
   const Case cases[] = {
-      {dir.path("a.png"), dir.path("b.png"), dir.path("small.png"), {640, 640 + 84}},  // 64x64 x10, caption below
-      {kData + "/rubberwhale1.png", kData + "/rubberwhale2.png", dir.path("full.png"), {640, 388 + 84}},
+      {dir.path("a.png"),
+       dir.path("b.png"),
+       dir.path("small.png"),
+       {640, 640 + 84}},  // 64x64 x10, caption below
+      {kData + "/rubberwhale1.png",
+       kData + "/rubberwhale2.png",
+       dir.path("full.png"),
+       {640, 388 + 84}},
   };
   for (const Case& c : cases) {
     INFO(c.prev);
@@ -49,8 +56,8 @@ TEST_CASE("flow --draw writes a PNG of the expected size with vectors in it", "[
     const cv::Mat img = cv::imread(c.out, cv::IMREAD_COLOR);
     REQUIRE(!img.empty());
     CHECK(img.size() == c.expected);
-    CHECK(count_colour(img, {90, 230, 90}) > 20);   // accepted vectors
-    CHECK(count_colour(img, {255, 230, 0}) > 20);   // the frame flow arrow
+    CHECK(count_colour(img, {90, 230, 90}) > 20);  // accepted vectors
+    CHECK(count_colour(img, {255, 230, 0}) > 20);  // the frame flow arrow
   }
 }
 

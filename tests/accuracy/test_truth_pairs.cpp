@@ -2,7 +2,6 @@
 // both geometries (including the binning and the centre of rotation), and the averaging that LK
 // shares with pxflow's estimate.
 #include <catch2/catch.hpp>
-
 #include <opencv2/imgproc.hpp>
 
 #include "estimators.hpp"
@@ -18,7 +17,8 @@ const std::string kData = "/usr/share/doc/opencv-doc/examples/data";
 // a perfect explanation whatever the brightness change, about 1 for an unrelated image.
 double residual(const TruthPair& t, const cv::Matx23d& motion) {
   cv::Mat moved, score;
-  cv::warpAffine(t.prev, moved, cv::Mat(motion), t.prev.size(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  cv::warpAffine(t.prev, moved, cv::Mat(motion), t.prev.size(), cv::INTER_LINEAR,
+                 cv::BORDER_REPLICATE);
   const int m = t.prev.cols / 8;
   const cv::Rect inner(m, m, t.prev.cols - 2 * m, t.prev.rows - 2 * m);
   cv::matchTemplate(moved(inner), t.next(inner), score, cv::TM_CCOEFF_NORMED);
@@ -40,7 +40,8 @@ TEST_CASE("the claimed motion explains each pair, a sign flip does not", "[accur
   const auto images = load_source_images(kData);
   REQUIRE(images.size() >= 3);
   for (Geometry g : {Geometry::kCamera64, Geometry::kWindow320}) {
-    // 7 kinds in turn: the first 7 pairs cover translate, noise, blur, brightness, rotate, zoom, all.
+    // 7 kinds in turn: the first 7 pairs cover translate, noise, blur, brightness, rotate, zoom,
+    // all.
     const auto pairs = make_truth_pairs(images, g, 7, 11);
     for (const TruthPair& t : pairs) {
       INFO(t.name);
@@ -51,7 +52,8 @@ TEST_CASE("the claimed motion explains each pair, a sign flip does not", "[accur
   }
 }
 
-TEST_CASE("pairs are reproducible from their seed and sized as the geometry says", "[accuracy][truth]") {
+TEST_CASE("pairs are reproducible from their seed and sized as the geometry says",
+          "[accuracy][truth]") {
   const auto images = load_source_images(kData);
   const auto a = make_truth_pairs(images, Geometry::kCamera64, 3, 5);
   const auto b = make_truth_pairs(images, Geometry::kCamera64, 3, 5);
