@@ -57,7 +57,7 @@ OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> record
     if (r.status == kAccepted) ++accepted;
   }
   c.sad_ops += 128 * accepted;
-  if (variant == "original") c.interpolations = 768 * accepted;
+  if (variant == "original" || variant == "fast") c.interpolations = 768 * accepted;
   if (variant == "local") c.interpolations = 300 * accepted;
   if (variant == "global")
     c.interpolations = std::uint64_t{3} * p.width * p.height * static_cast<std::uint64_t>(pairs);

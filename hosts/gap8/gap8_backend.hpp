@@ -33,6 +33,9 @@ class Gap8Backend : public Backend {
 // The model's clock (the paper's operating point): cycles to nanoseconds.
 inline constexpr double kGap8ClockHz = 50e6;
 
+// Besides the rows, the variant "fast" (original with prev's block held in registers during the
+// search) is available to pxflow gap8 and the tests.
+
 // Work of one batch as docs/counting.md charges it, derived from the records (the kernel does
 // exactly this work): SAD operations, and the variant's interpolations.
 OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> records, const Params& p,

@@ -31,6 +31,11 @@ void variant_prepare(const flow_ctx *c, uint32_t core);
 void variant_half_sads(const flow_ctx *c, const uint8_t *blk, uint32_t mx, uint32_t my,
                        uint32_t sub[8]);
 
+/* SPEC §3 step 2: raster order over dy, dx in -S..S, strictly smaller SAD replaces. Returns the
+ * best SAD and its displacement (flow_search.c, or flow_search_fast.c in the fast variant). */
+uint32_t flow_integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, uint32_t y, int *bx,
+                             int *by);
+
 /* The team's entry point: every POI of this core, as flow_poi.c computes it. */
 void flow_team_entry(void *ctx);
 

@@ -10,19 +10,6 @@
 static const int8_t kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
 static const int8_t kStepY[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
 
-/* 8x8 SAD, two 4-byte halves per row, as the firmware's compute_sad_8x8. */
-static uint32_t sad8x8(const uint8_t *a, const uint8_t *b, uint32_t w) {
-  uint32_t acc = 0;
-#pragma GCC unroll 8
-  for (int r = 0; r < 8; ++r) {
-    acc = sad4_acc(acc, ld4(a), ld4(b));
-    acc = sad4_acc(acc, ld4(a + 4), ld4(b + 4));
-    a += w;
-    b += w;
-  }
-  return acc;
-}
-
 /* Four bytes of a column, packed like the firmware's col1..col4 (lanes are independent). */
 static uint32_t column4(const uint8_t *p, uint32_t w) {
   return (uint32_t)p[0] | (uint32_t)p[w] << 8 | (uint32_t)p[2 * w] << 16 | (uint32_t)p[3 * w] << 24;
@@ -39,26 +26,6 @@ static uint32_t feature(const uint8_t *blk, uint32_t w) {
   acc = sad4_acc(acc, c0, c1);
   acc = sad4_acc(acc, c1, c2);
   return sad4_acc(acc, c2, c3);
-}
-
-/* Raster order over dy, dx in -S..S; a strictly smaller SAD replaces (ties keep the first). */
-static uint32_t integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, uint32_t y,
-                               int *bx, int *by) {
-  const int s = (int)c->search_radius;
-  const uint32_t w = c->width;
-  uint32_t best = 0xFFFFFFFFu;
-  for (int dy = -s; dy <= s; ++dy) {
-    const uint8_t *row = c->next + (y + dy) * w + x;
-    for (int dx = -s; dx <= s; ++dx) {
-      const uint32_t sad = sad8x8(blk, row + dx, w);
-      if (sad < best) {
-        best = sad;
-        *bx = dx;
-        *by = dy;
-      }
-    }
-  }
-  return best;
 }
 
 /* The half-pixel vote from (best, dir 8): k = 0..7 in order, strictly smaller replaces. */
@@ -88,7 +55,7 @@ static void flow_poi(const flow_ctx *c, uint32_t n) {
   rec->feature = (uint16_t)feature(blk, w);
   if (rec->feature < c->feature_threshold) return; /* status 0 */
   int bx = 0, by = 0;
-  const uint32_t best = integer_search(c, blk, x, y, &bx, &by);
+  const uint32_t best = flow_integer_search(c, blk, x, y, &bx, &by);
   rec->dx = (int8_t)bx;
   rec->dy = (int8_t)by;
   rec->sad = (uint16_t)best;

@@ -34,7 +34,7 @@ void check_exact(const std::string& variant, int cores, const Params& p, int n_r
 
 TEST_CASE("gap8 variants are bit-exact at px4flow-64 on 1 and 8 cores", "[gap8][no-sanitizer]") {
   const Params p = profile("px4flow-64");
-  for (const char* variant : {"original", "local", "global"}) {
+  for (const char* variant : {"original", "local", "global", "fast"}) {
     for (int cores : {1, 8}) {
       INFO(variant << " on " << cores << " cores");
       check_exact(variant, cores, p, 6, 1000 + cores);
@@ -61,7 +61,7 @@ TEST_CASE("gap8 is bit-exact on a larger frame that fits L1, odd width included"
   p.blocks = 6;
   p.hist_filter = false;
   validate(p);
-  for (const char* variant : {"original", "local", "global"}) {
+  for (const char* variant : {"original", "local", "global", "fast"}) {
     INFO(variant);
     check_exact(variant, 8, p, 3, 3000);
   }
