@@ -1,13 +1,20 @@
 // pxflow report: runs (or reads) check and bench results and writes the report files.
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
+#include "accuracy_run.hpp"
 #include "bench.hpp"
 #include "check.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "list_option.hpp"
 #include "report.hpp"
+#include "truth_pairs.hpp"
+#include "draw_flow.hpp"
+#include "estimate.hpp"
+#include "grid.hpp"
+#include "registry.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -15,8 +22,59 @@ namespace {
 struct ReportArgs {
   std::string out_dir, check_json, bench_json, backends;
   std::uint64_t seed = 1;
-  bool quick = false;
+  bool quick = false, no_accuracy = false;
 };
+
+// The backend a user would run: the best CPU path when built in, else the reference.
+std::string everyday_backend() {
+  for (const auto& row : backend_rows())
+    if (row.name == "cpu" && row.probe().empty()) return "cpu";
+  return "ref-original";
+}
+
+void add_accuracy(ReportInputs& in, const ReportArgs& a) {
+  accuracy::AccuracyOptions o;
+  o.backend = everyday_backend();
+  if (a.quick) o.pairs = 40, o.video_pairs = 2;
+  in.accuracy_command = "pxflow accuracy --backend " + o.backend + (a.quick ? " --pairs 40 --video-pairs 2" : "");
+  std::cout << "== " << in.accuracy_command << "\n";
+  const auto report = accuracy::run_accuracy(o);
+  in.accuracy.push_back({"pairs", "pxflow setting", "against", "method", "frames", "with flow", "mean error px",
+                         "p95 error px", "median us/frame"});
+  auto fixed = [](double v, const char* f) {
+    char b[32];
+    std::snprintf(b, sizeof b, f, v);
+    return std::string(b);
+  };
+  for (const auto& set : report.sets)
+    for (const auto& r : set.rows)
+      in.accuracy.push_back({set.set, set.setting, set.against, r.method, std::to_string(r.frames), std::to_string(r.valid),
+                             r.has_error ? fixed(r.mean_error, "%.3f") : "(reference)",
+                             r.has_error ? fixed(r.p95_error, "%.3f") : "(reference)", fixed(r.median_us, "%.0f")});
+}
+
+// Flow pictures of the real sequences: first two frames of each video at full size.
+void add_pictures(ReportInputs& in, const ReportArgs& a) {
+  const std::string backend = everyday_backend();
+  auto b = find_backend(backend).create({});
+  for (const char* video : {"vtest.avi", "tree.avi"}) {
+    const auto pairs = accuracy::video_pairs(std::string(CorpusOptions{}.data_dir) + "/" + video, 1);
+    if (pairs.empty()) continue;
+    const auto& vp = pairs.front();
+    Params p = profile("px4flow-64");
+    p.width = vp.prev.cols, p.height = vp.prev.rows, p.search_radius = 7, p.blocks = 32;
+    validate(p);
+    const FramePair pair{{p.width, p.height, static_cast<std::ptrdiff_t>(vp.prev.step), vp.prev.data},
+                         {p.width, p.height, static_cast<std::ptrdiff_t>(vp.next.step), vp.next.data}};
+    std::vector<PoiRecord> records(poi_count(p));
+    OpCounts counts;
+    b->run({&pair, 1}, p, records, counts);
+    const std::string file = std::string("flow-") + video + ".png";
+    draw_flow(a.out_dir + "/" + file, pair.prev, p, records, estimate_flow(records, p),
+              {vp.name, backend, "px4flow-64 S=7 B=32"});
+    in.pictures.push_back({vp.name + ": POIs and vectors by status (" + backend + ", S=7, B=32), frame flow in cyan", file});
+  }
+}
 
 Json read_json(const std::string& path) {
   std::ifstream in(path);
@@ -60,6 +118,11 @@ int run_report(const ReportArgs& a) {
     std::cout << "== " << in.bench_command << "\n";
     in.bench = bench_json(run_bench(o, std::cout));
   }
+  if (!a.no_accuracy) {
+    add_accuracy(in, a);
+    std::filesystem::create_directories(a.out_dir);
+    add_pictures(in, a);
+  }
   write_report(a.out_dir, in);
   std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json, results.csv\n";
   return in.check.value("failed", 0) == 0 ? 0 : 1;
@@ -75,7 +138,8 @@ Command add_report_command(CLI::App& app) {
   sub->add_option("--bench-json", a->bench_json, "Use this `pxflow bench --json` file instead of running the bench");
   sub->add_option("--backends", a->backends, "Comma-separated backends (default: all)");
   sub->add_option("--seed", a->seed, "Seed of the check's random pairs")->capture_default_str();
-  sub->add_flag("--quick", a->quick, "A shorter bench (batch <= 256, no radius or thread sweeps)");
+  sub->add_flag("--quick", a->quick, "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
+  sub->add_flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");
   return {sub, [a] { return run_report(*a); }};
 }
 

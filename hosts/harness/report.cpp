@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -22,6 +23,7 @@ struct Section {
   std::vector<std::string> header;
   std::vector<std::vector<std::string>> rows;
   std::string svg;  // HTML only
+  std::vector<ReportInputs::Picture> pictures;
 };
 
 std::string first_line_of(const std::string& path, const std::string& key) {
@@ -59,12 +61,40 @@ Section conformance(const Json& check, const std::string& cmd) {
   Section s{"Conformance", "Every backend against `ref-original`, records byte for byte and flow by bits, on " +
                                std::to_string(check.value("cases", 0)) + " cases (" + std::to_string(check.value("pairs", 0)) +
                                " frame pairs), seed " + std::to_string(check.value("seed", 0)) + ". Command: `" + cmd + "`.",
-            {"backend", "result", "cases passed", "cases failed", "n/a", "pairs", "note"}, {}, ""};
+            {"backend", "result", "cases passed", "cases failed", "n/a", "pairs", "note"}, {}, "", {}};
   for (const auto& b : check["backends"])
     s.rows.push_back({b["name"], b["state"], std::to_string(b["passed"].get<long>()), std::to_string(b["failed"].get<long>()),
                       std::to_string(b["not_applicable"].get<long>()), std::to_string(b["pairs"].get<long>()), b["reason"]});
   s.text += " Totals: " + std::to_string(check.value("passed", 0)) + " passed, " + std::to_string(check.value("failed", 0)) +
             " failed, " + std::to_string(check.value("skipped", 0)) + " skipped.";
+  return s;
+}
+
+std::string base64(const std::string& bytes) {
+  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = (unsigned char)bytes[i] << 16 | (unsigned char)bytes[i + 1] << 8 | (unsigned char)bytes[i + 2];
+    out += {k[v >> 18], k[(v >> 12) & 63], k[(v >> 6) & 63], k[v & 63]};
+  }
+  if (i < bytes.size()) {
+    const unsigned v = (unsigned char)bytes[i] << 16 | (i + 1 < bytes.size() ? (unsigned char)bytes[i + 1] << 8 : 0);
+    out += {k[v >> 18], k[(v >> 12) & 63], i + 1 < bytes.size() ? k[(v >> 6) & 63] : '=', '='};
+  }
+  return out;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+Section accuracy_section(const ReportInputs& in) {
+  Section s{"Accuracy", "Frame flow against known motion (synthetic pairs) and agreement with OpenCV's DIS on real "
+                        "video, beside OpenCV's pyramidal Lucas-Kanade and DIS, timed in the same run. Command: `" +
+                            in.accuracy_command + "`; method details in docs/accuracy.md.",
+            in.accuracy.front(), {in.accuracy.begin() + 1, in.accuracy.end()}, "", in.pictures};
   return s;
 }
 
@@ -78,7 +108,7 @@ Section throughput(const Json& bench, const std::string& cmd) {
   if (!pick)
     for (const auto& r : bench["rows"])
       if (timed(r)) { pick = &r; break; }
-  Section s{"Throughput", "", {"backend", "clock", "ns/frame (median)", "min..max", "frames/s", "ns/POI", "cycles/frame", "vs ref-original"}, {}, ""};
+  Section s{"Throughput", "", {"backend", "clock", "ns/frame (median)", "min..max", "frames/s", "ns/POI", "cycles/frame", "vs ref-original"}, {}, "", {}};
   if (!pick) return s.text = "No timed rows.", s;
   auto same_point = [&](const Json& r) {
     return timed(r) && r["sweep"] == (*pick)["sweep"] && r["batch"] == (*pick)["batch"] && r["width"] == (*pick)["width"] &&
@@ -120,7 +150,7 @@ Section scaling(const Json& bench, const std::string& sweep, const std::string& 
     se.points.push_back({x, y});
     cells[r["backend"]][x] = num(y);
   }
-  Section s{title, "", {"backend"}, {}, ""};
+  Section s{title, "", {"backend"}, {}, "", {}};
   if (cells.empty()) return s.text = "Not measured in this run.", s;
   for (const auto& [_, name] : columns) s.header.push_back((by_batch ? "batch " : "") + name);
   for (const auto& [backend, row] : cells) {
@@ -142,6 +172,7 @@ std::string render_md(const std::vector<Section>& secs, const std::string& intro
   o << "# pxflow report\n\n" << intro << "\n";
   for (const auto& s : secs) {
     o << "\n## " << s.title << "\n\n" << s.text << "\n";
+    for (const auto& p : s.pictures) o << "\n![" << p.caption << "](" << p.file << ")\n";
     if (s.rows.empty()) continue;
     o << "\n|";
     for (const auto& h : s.header) o << " " << h << " |";
@@ -156,7 +187,8 @@ std::string render_md(const std::vector<Section>& secs, const std::string& intro
   return o.str();
 }
 
-std::string render_html(const std::vector<Section>& secs, const std::string& intro) {
+std::string render_html(const std::vector<Section>& secs, const std::string& intro,
+                        const std::filesystem::path& dir) {
   std::ostringstream o;
   o << "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>pxflow report</title><style>"
        "body{font-family:sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;color:#222}"
@@ -166,6 +198,9 @@ std::string render_html(const std::vector<Section>& secs, const std::string& int
     << html_escape(intro) << "</p>";
   for (const auto& s : secs) {
     o << "<h2>" << html_escape(s.title) << "</h2><p>" << html_escape(s.text) << "</p>" << s.svg;
+    for (const auto& p : s.pictures)  // inlined, so the page stays one self-contained file
+      o << "<figure><img alt='" << html_escape(p.caption) << "' style='max-width:100%' src='data:image/png;base64,"
+        << base64(slurp(dir / p.file)) << "'><figcaption>" << html_escape(p.caption) << "</figcaption></figure>";
     if (s.rows.empty()) continue;
     o << "<table><tr>";
     for (const auto& h : s.header) o << "<th>" << html_escape(h) << "</th>";
@@ -224,9 +259,10 @@ void write_report(const std::string& out_dir, const ReportInputs& in) {
     secs.push_back(scaling(in.bench, "batch", "Scaling with batch size"));
     secs.push_back(scaling(in.bench, "size", "Scaling with frame size"));
   }
+  if (!in.accuracy.empty()) secs.push_back(accuracy_section(in));
   const std::filesystem::path dir(out_dir);
   write_file(dir / "report.md", render_md(secs, intro));
-  write_file(dir / "report.html", render_html(secs, intro));
+  write_file(dir / "report.html", render_html(secs, intro, dir));
   write_file(dir / "results.json", Json{{"machine", m}, {"commands", {{"check", in.check_command}, {"bench", in.bench_command}, {"report", in.report_command}}},
                                         {"check", in.check}, {"bench", in.bench}}.dump(2) + "\n");
   write_file(dir / "results.csv", csv(in.bench));

@@ -2,6 +2,7 @@
 // (inline SVG charts), results.json and results.csv. Every figure names its command and machine.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "result_json.hpp"
 
@@ -11,6 +12,14 @@ struct ReportInputs {
   Json check;  // check_json(), or null
   Json bench;  // bench_json(), or null
   std::string check_command, bench_command, report_command;
+  // Accuracy against ground truth and OpenCV: header row first; empty when not run.
+  std::vector<std::vector<std::string>> accuracy;
+  std::string accuracy_command;
+  // Flow pictures already written into the output folder (file name relative to it).
+  struct Picture {
+    std::string caption, file;
+  };
+  std::vector<Picture> pictures;
 };
 
 // Writes the four files into out_dir (created if needed); throws InputError when it cannot.
