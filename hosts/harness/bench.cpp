@@ -11,6 +11,9 @@
 #endif
 
 #include "grid.hpp"
+#ifdef PXFLOW_HAS_PSADBW_CEILING
+#include "psadbw_ceiling.hpp"
+#endif
 #include "registry.hpp"
 #include "synthetic.hpp"
 
@@ -184,6 +187,28 @@ class Bench {
   std::map<std::pair<std::string, int>, std::unique_ptr<Backend>> cache_;
 };
 
+// How far each TSC row is from the SAD work's bound: cycles per frame over the cycles the
+// widest psadbw would need for the bytes SPEC §6 compares per frame.
+void add_bound_ratios(BenchReport& r, std::ostream& out) {
+#ifdef PXFLOW_HAS_PSADBW_CEILING
+  const cpu::Ceiling c = cpu::measure_ceiling();
+  if (c.bytes_per_cycle <= 0) return;
+  r.ceiling_width = c.width;
+  r.ceiling_bytes_per_cycle = c.bytes_per_cycle;
+  out << "ceiling: back-to-back psadbw " << c.width << " on L1 data, " << c.bytes_per_cycle << " bytes per TSC cycle\n";
+  for (auto& row : r.rows) {
+    if (row.cycles_per_frame <= 0 || row.source.find("tsc") == std::string::npos) continue;
+    row.bound_ratio = row.cycles_per_frame / (cpu::sad_bytes_per_frame(row.pois_per_frame, row.search_radius) / c.bytes_per_cycle);
+    char line[160];
+    std::snprintf(line, sizeof line, "  %-14s %dx%d S=%d batch=%d threads=%d: %.2fx the bound\n", row.backend.c_str(),
+                  row.width, row.height, row.search_radius, row.batch, row.threads, row.bound_ratio);
+    out << line;
+  }
+#else
+  (void)r, (void)out;
+#endif
+}
+
 // Speed-up of every timed row over ref-original at the same point, measured by the same clock.
 void add_speedups(BenchReport& r) {
   for (auto& row : r.rows) {
@@ -234,6 +259,7 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
     for (const BackendRow* row : rows) bench.measure(*row, pt, in, expected, report);
   }
   add_speedups(report);
+  add_bound_ratios(report, out);
   for (const auto& s : report.skipped) out << "skipped " << s << "\n";
   return report;
 }
@@ -249,9 +275,13 @@ Json bench_json(const BenchReport& r) {
            {"frames_per_s", b.frames_per_s}, {"ns_per_poi", b.ns_per_poi}};
     if (b.cycles_per_frame > 0) j["cycles_per_frame"] = b.cycles_per_frame;
     if (b.speedup_vs_reference > 0) j["speedup_vs_ref_original"] = b.speedup_vs_reference;
+    if (b.bound_ratio > 0) j["bound_ratio"] = b.bound_ratio;
     rows.push_back(std::move(j));
   }
-  return Json{{"rows", rows}, {"skipped", r.skipped}};
+  Json j{{"rows", rows}, {"skipped", r.skipped}};
+  if (r.ceiling_bytes_per_cycle > 0)
+    j["ceiling"] = {{"psadbw_width", r.ceiling_width}, {"bytes_per_tsc_cycle", r.ceiling_bytes_per_cycle}};
+  return j;
 }
 
 }  // namespace pxflow

@@ -36,10 +36,13 @@ struct BenchRow {
   double median_ns_per_frame = 0, min_ns_per_frame = 0, max_ns_per_frame = 0;
   double frames_per_s = 0, ns_per_poi = 0;
   double cycles_per_frame = 0;  // 0 when the source has no cycle clock
+  double bound_ratio = 0;  // TSC cycles per frame / the psadbw bound (docs/cpu-simd.md); 0: none
   double speedup_vs_reference = 0;  // vs ref-original, same point and source; 0 when not measured
 };
 
 struct BenchReport {
+  std::string ceiling_width;           // widest psadbw measured ("xmm", "ymm", "zmm"), or empty
+  double ceiling_bytes_per_cycle = 0;  // its bytes compared per TSC cycle
   std::vector<BenchRow> rows;
   std::vector<std::string> skipped;  // "backend: reason" lines
 };

@@ -108,7 +108,7 @@ Section throughput(const Json& bench, const std::string& cmd) {
   if (!pick)
     for (const auto& r : bench["rows"])
       if (timed(r)) { pick = &r; break; }
-  Section s{"Throughput", "", {"backend", "clock", "ns/frame (median)", "min..max", "frames/s", "ns/POI", "cycles/frame", "vs ref-original"}, {}, "", {}};
+  Section s{"Throughput", "", {"backend", "clock", "ns/frame (median)", "min..max", "frames/s", "ns/POI", "cycles/frame", "x bound", "vs ref-original"}, {}, "", {}};
   if (!pick) return s.text = "No timed rows.", s;
   auto same_point = [&](const Json& r) {
     return timed(r) && r["sweep"] == (*pick)["sweep"] && r["batch"] == (*pick)["batch"] && r["width"] == (*pick)["width"] &&
@@ -120,6 +120,7 @@ Section throughput(const Json& bench, const std::string& cmd) {
     s.rows.push_back({r["backend"], r["source"], num(r["median_ns_per_frame"], "%.0f"),
                       num(r["min_ns_per_frame"], "%.0f") + ".." + num(r["max_ns_per_frame"], "%.0f"),
                       num(r["frames_per_s"]), num(r["ns_per_poi"]), r.contains("cycles_per_frame") ? num(r["cycles_per_frame"], "%.0f") : "-",
+                      r.contains("bound_ratio") ? num(r["bound_ratio"], "%.2f") : "-",
                       r.contains("speedup_vs_ref_original") ? num(r["speedup_vs_ref_original"], "%.2fx") : "-"});
     if (r["source"].get<std::string>().rfind("host", 0) == 0) bars.push_back({r["backend"], r["frames_per_s"]});
   }
@@ -219,7 +220,7 @@ std::string render_html(const std::vector<Section>& secs, const std::string& int
 std::string csv(const Json& bench) {
   const char* cols[] = {"backend", "sweep", "profile", "width", "height", "search_radius", "batch", "threads", "source",
                         "repeats", "median_ns_per_frame", "min_ns_per_frame", "max_ns_per_frame", "frames_per_s",
-                        "ns_per_poi", "cycles_per_frame", "speedup_vs_ref_original", "note"};
+                        "ns_per_poi", "cycles_per_frame", "bound_ratio", "speedup_vs_ref_original", "note"};
   std::ostringstream o;
   for (std::size_t i = 0; i < std::size(cols); ++i) o << (i ? "," : "") << cols[i];
   o << "\n";

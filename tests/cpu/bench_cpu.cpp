@@ -15,7 +15,7 @@
 #include <map>
 #include <thread>
 
-#include "bench_ceiling.hpp"
+#include "psadbw_ceiling.hpp"
 #include "grid.hpp"
 #include "isa_mask.hpp"
 #include "kernel.hpp"
@@ -35,43 +35,12 @@ double tsc_per_second() {
   return static_cast<double>(c1 - c0) / s;
 }
 
-// Bytes psadbw-compared per TSC cycle by the widest psadbw this CPU has.
-struct Ceiling {
-  const char* width = "xmm";
-  double bytes_per_cycle = 0;
-};
+using cpu::Ceiling;
 
 Ceiling measure_ceiling() {
-  alignas(64) static std::uint8_t data[768];
-  for (int i = 0; i < 768; ++i) data[i] = static_cast<std::uint8_t>(i * 37);
-  struct Width {
-    const char* name;
-    int bytes;
-    std::uint64_t (*run)(const std::uint8_t*, std::int64_t);
-    const char* isa;
-  };
-  const Width widths[] = {{"xmm", 16, psadbw_xmm, "sse2"},
-                          {"ymm", 32, psadbw_ymm, "avx2"},
-                          {"zmm", 64, psadbw_zmm, "avx512bw"}};
-  Ceiling best;
-  for (const Width& w : widths) {
-    if (!cpu::isa_unavailable(w.isa).empty()) continue;
-    constexpr std::int64_t kRounds = 20'000;
-    volatile std::uint64_t sink = w.run(data, 100 * kRounds);  // warm up (and clock up)
-    double best_rate = 0;
-    for (int trial = 0; trial < 200; ++trial) {  // the fastest trial: others share this machine
-      const std::uint64_t c0 = __rdtsc();
-      sink = w.run(data, kRounds);
-      const std::uint64_t c1 = __rdtsc();
-      const double rate = 12.0 * w.bytes * kRounds / static_cast<double>(c1 - c0);
-      if (rate > best_rate) best_rate = rate;
-    }
-    (void)sink;
-    std::printf("ceiling  psadbw %s: %.1f bytes per TSC cycle (%.2f instructions per cycle)\n",
-                w.name, best_rate, best_rate / w.bytes);
-    best = {w.name, best_rate};
-  }
-  return best;
+  const Ceiling c = cpu::measure_ceiling();
+  std::printf("ceiling  psadbw %s: %.1f bytes per TSC cycle\n", c.width, c.bytes_per_cycle);
+  return c;
 }
 
 struct Problem {

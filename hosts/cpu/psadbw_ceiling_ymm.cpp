@@ -3,9 +3,9 @@
 // only psadbw throughput limits the loop.
 #include <immintrin.h>
 
-#include "bench_ceiling.hpp"
+#include "psadbw_ceiling.hpp"
 
-namespace pxflow::cpu_bench {
+namespace pxflow::cpu {
 
 std::uint64_t psadbw_ymm(const std::uint8_t* data, std::int64_t rounds) {
   __m256i x[12];
@@ -23,4 +23,4 @@ std::uint64_t psadbw_ymm(const std::uint8_t* data, std::int64_t rounds) {
   return sum;
 }
 
-}  // namespace pxflow::cpu_bench
+}  // namespace pxflow::cpu
