@@ -19,18 +19,6 @@ int32_t ImmJ(uint32_t w) {
                     21);
 }
 
-// Fills the register fields every format shares and the default source mask (rs1 and rs2).
-Decoded Base(uint32_t w, Op op) {
-  Decoded d;
-  d.op = op;
-  d.raw = w;
-  d.rd = Bits(w, 11, 7);
-  d.rs1 = Bits(w, 19, 15);
-  d.rs2 = Bits(w, 24, 20);
-  d.src_mask = RegBit(d.rs1) | RegBit(d.rs2);
-  return d;
-}
-
 Decoded WithImm(Decoded d, int32_t imm, bool reads_rs2) {
   d.imm = imm;
   if (!reads_rs2) d.src_mask = RegBit(d.rs1);

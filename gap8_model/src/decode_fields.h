@@ -3,6 +3,8 @@
 
 #include <cstdint>
 
+#include "gap8/decoded.h"
+
 namespace gap8 {
 
 // Bits hi..lo of x, right-aligned.
@@ -18,5 +20,17 @@ constexpr int32_t SignExtend(uint32_t x, int width) {
 }
 
 inline uint32_t RegBit(uint32_t reg) { return reg == 0 ? 0u : (1u << reg); }
+
+// Fills the register fields every 32-bit format shares and the default source mask (rs1, rs2).
+inline Decoded Base(uint32_t w, Op op) {
+  Decoded d;
+  d.op = op;
+  d.raw = w;
+  d.rd = Bits(w, 11, 7);
+  d.rs1 = Bits(w, 19, 15);
+  d.rs2 = Bits(w, 24, 20);
+  d.src_mask = RegBit(d.rs1) | RegBit(d.rs2);
+  return d;
+}
 
 }  // namespace gap8

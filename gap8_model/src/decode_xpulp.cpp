@@ -6,17 +6,6 @@
 namespace gap8 {
 namespace {
 
-Decoded Make(uint32_t w, Op op) {
-  Decoded d;
-  d.op = op;
-  d.raw = w;
-  d.rd = Bits(w, 11, 7);
-  d.rs1 = Bits(w, 19, 15);
-  d.rs2 = Bits(w, 24, 20);
-  d.src_mask = RegBit(d.rs1) | RegBit(d.rs2);
-  return d;
-}
-
 Decoded Illegal(uint32_t w) {
   Decoded d;
   d.op = Op::kIllegal;
@@ -62,7 +51,7 @@ Decoded DecodeXpulpSimd(uint32_t w) {
   const Op op = SimdOp(Bits(w, 31, 26));
   if (op == Op::kIllegal) return Illegal(w);
   if (op == Op::kPvAbsB && (f3 != 1 || Bits(w, 25, 25) != 0)) return Illegal(w);
-  Decoded d = Make(w, op);
+  Decoded d = Base(w, op);
   d.scalar = (f3 == 5);
   if (op == Op::kPvAbsB) d.src_mask = RegBit(d.rs1);
   if (op == Op::kPvSdotupB || op == Op::kPvSdotuspB) d.src_mask |= RegBit(d.rd);  // accumulator
@@ -75,7 +64,7 @@ Decoded DecodeHwLoop(uint32_t w) {
                                  Op::kLpSetup,  Op::kLpSetupi, Op::kIllegal, Op::kIllegal};
   const uint32_t f3 = Bits(w, 14, 12);
   if (kOps[f3] == Op::kIllegal) return Illegal(w);
-  Decoded d = Make(w, kOps[f3]);
+  Decoded d = Base(w, kOps[f3]);
   d.loop = Bits(w, 7, 7);
   d.rd = 0;
   d.rs2 = 0;
