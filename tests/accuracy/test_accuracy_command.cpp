@@ -5,8 +5,10 @@
 #include <map>
 #include <sstream>
 
+#include "bad_input.hpp"
 #include "run_program.hpp"
 
+using pxflow::test::require_bad_input;
 using pxflow::test::run_pxflow;
 
 namespace {
@@ -31,15 +33,6 @@ std::vector<std::vector<std::string>> table(const std::string& out) {
     if (line.rfind("| ", 0) == 0 && line.rfind("| pairs ", 0) != 0 && line.rfind("| -", 0) != 0)
       rows.push_back(cells(line));
   return rows;
-}
-
-void require_bad_input(const std::vector<std::string>& args, const std::string& needle) {
-  const auto r = run_pxflow(args);
-  INFO("stderr: " << r.err << "stdout: " << r.out);
-  CHECK(r.exit_code == 2);
-  CHECK(r.err_lines() == 1);
-  CHECK(r.err.find(needle) != std::string::npos);
-  CHECK(r.out.empty());
 }
 
 }  // namespace

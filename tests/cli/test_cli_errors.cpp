@@ -6,10 +6,12 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "bad_input.hpp"
 #include "run_program.hpp"
 #include "synthetic.hpp"
 
 using namespace pxflow;
+using test::require_bad_input;
 using test::run_pxflow;
 
 namespace {
@@ -18,16 +20,6 @@ void write_png(const std::string& path, int w, int h, int type = CV_8UC1) {
   cv::Mat m(h, w, type);
   cv::randu(m, 0, type == CV_32FC1 ? 1.0 : 255.0);
   REQUIRE(cv::imwrite(path, m));
-}
-
-// Every bad-input run: exit 2, exactly one stderr line containing `needle`, empty stdout.
-void require_bad_input(const std::vector<std::string>& args, const std::string& needle) {
-  const auto r = run_pxflow(args);
-  INFO("stderr: " << r.err << "stdout: " << r.out);
-  CHECK(r.exit_code == 2);
-  CHECK(r.err_lines() == 1);
-  CHECK(r.err.find(needle) != std::string::npos);
-  CHECK(r.out.empty());
 }
 
 struct Files {
