@@ -53,7 +53,7 @@ class CpuBackend final : public Backend {
   }
 
   const cpu::IsaKernel& kernel_;
-  cpu::ThreadPool pool_;
+  ThreadPool pool_;
 };
 
 // The kernel of a compiled ISA. Called only for an ISA that can run here: the accessor itself

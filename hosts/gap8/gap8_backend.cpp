@@ -28,15 +28,15 @@ void check_estimate(std::span<const PoiRecord> records, const Params& p,
 
 }  // namespace
 
-Gap8Backend::Gap8Backend(std::string_view variant, gap8_host::RunOptions options)
-    : variant_(variant), runner_(variant), options_(options) {}
+Gap8Backend::Gap8Backend(std::string_view variant, gap8_host::RunOptions options, int host_threads)
+    : variant_(variant), runner_(variant), options_(options), pool_(host_threads) {}
 
 void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
                       OpCounts& counts) {
   last_time_.reset();
   const std::size_t pois = poi_count(p);
   if (out.size() != pairs.size() * pois) throw BackendError("gap8: output size mismatch");
-  gap8_host::BatchStats stats = runner_.run(pairs, p, out, options_);
+  gap8_host::BatchStats stats = runner_.run(pairs, p, out, options_, &pool_);
   for (std::size_t i = 0; i < pairs.size(); ++i)
     check_estimate(out.subspan(i * pois, pois), p, stats.pairs[i], i);
   counts += gap8_counts(variant_, out, p, pairs.size());

@@ -1,5 +1,6 @@
 // The GAP8 backends (`gap8-original`, `gap8-local`, `gap8-global`): the kernel of kernels/gap8
-// on the cluster model, all 8 cores, TCDM contention on. Besides the records, each run checks
+// on the cluster model, all 8 cores, TCDM contention on. `host_threads` host workers simulate
+// the batch's cluster runs side by side (0 = every core); the results do not depend on it. Besides the records, each run checks
 // the kernel's own soft-float estimate against estimate_flow() of its records.
 #pragma once
 #include <optional>
@@ -12,7 +13,7 @@ namespace pxflow {
 
 class Gap8Backend : public Backend {
  public:
-  Gap8Backend(std::string_view variant, gap8_host::RunOptions options);
+  Gap8Backend(std::string_view variant, gap8_host::RunOptions options, int host_threads = 1);
 
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
            OpCounts& counts) override;
@@ -26,6 +27,7 @@ class Gap8Backend : public Backend {
   std::string variant_;
   gap8_host::FlowRunner runner_;
   gap8_host::RunOptions options_;
+  ThreadPool pool_;
   gap8_host::BatchStats last_stats_;
   std::optional<DeviceTime> last_time_;
 };

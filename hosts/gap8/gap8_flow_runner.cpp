@@ -88,26 +88,44 @@ std::string FlowRunner::unsupported(const Params& p) const {
   return {};
 }
 
+std::size_t FlowRunner::pairs_per_chunk(const Params& p) const {
+  return (GAP8_L2_BASE + GAP8_L2_SIZE - io_base_) / pair_io_bytes(p);
+}
+
 BatchStats FlowRunner::run(std::span<const FramePair> pairs, const Params& p,
-                           std::span<PoiRecord> out, const RunOptions& options) const {
+                           std::span<PoiRecord> out, const RunOptions& options,
+                           ThreadPool* pool) const {
   if (const std::string why = unsupported(p); !why.empty()) throw BackendError("gap8: " + why);
   if (options.cores < 1 || options.cores > 8) throw BackendError("gap8: cores must be 1..8");
+  const std::size_t pois = poi_count(p);
+  const std::size_t per_chunk = pairs_per_chunk(p);
+  const std::size_t chunks = (pairs.size() + per_chunk - 1) / per_chunk;
+  std::vector<BatchStats> parts(chunks);
+  auto one = [&](std::size_t c) {
+    const std::size_t first = c * per_chunk, n = std::min(per_chunk, pairs.size() - first);
+    parts[c].cores.assign(options.cores, gap8::EventTotals{});
+    run_chunk(pairs.subspan(first, n), p, out.subspan(first * pois, n * pois), options, parts[c]);
+  };
+  if (pool && chunks > 1)
+    pool->for_each(chunks, one);
+  else
+    for (std::size_t c = 0; c < chunks; ++c) one(c);
+
   BatchStats stats;
   stats.cores.assign(options.cores, gap8::EventTotals{});
-  const std::size_t pois = poi_count(p);
-  for (std::size_t done = 0; done < pairs.size();) {
-    const std::size_t n =
-        run_chunk(pairs.subspan(done), p, out.subspan(done * pois), options, stats);
-    done += n;
+  for (const BatchStats& part : parts) {
+    stats.cycles += part.cycles;
+    stats.pairs.insert(stats.pairs.end(), part.pairs.begin(), part.pairs.end());
+    for (int c = 0; c < options.cores; ++c)
+      for (std::size_t e = 0; e < part.cores[c].size(); ++e) stats.cores[c][e] += part.cores[c][e];
   }
   return stats;
 }
 
-std::size_t FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
-                                  std::span<PoiRecord> out, const RunOptions& options,
-                                  BatchStats& stats) const {
-  const std::uint32_t capacity = GAP8_L2_BASE + GAP8_L2_SIZE - io_base_;
-  const std::size_t n = std::min<std::size_t>(pairs.size(), capacity / pair_io_bytes(p));
+void FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
+                           std::span<PoiRecord> out, const RunOptions& options,
+                           BatchStats& stats) const {
+  const std::size_t n = pairs.size();
   const std::uint32_t frame = static_cast<std::uint32_t>(p.width * p.height);
   const std::uint32_t pois = static_cast<std::uint32_t>(poi_count(p));
   const std::uint32_t rec_bytes = pois * static_cast<std::uint32_t>(sizeof(PoiRecord));
@@ -160,7 +178,6 @@ std::size_t FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params
     const gap8::EventTotals t = cluster.core(c).Totals();
     for (std::size_t e = 0; e < t.size(); ++e) stats.cores[c][e] += t[e];
   }
-  return n;
 }
 
 }  // namespace pxflow::gap8_host

@@ -13,6 +13,7 @@
 #include "gap8/perf.h"
 #include "params.hpp"
 #include "record.hpp"
+#include "thread_pool.hpp"
 
 namespace pxflow::gap8_host {
 
@@ -39,13 +40,18 @@ class FlowRunner {
   std::string unsupported(const Params& p) const;
 
   // Writes poi_count(p) records per pair into `out`. Throws BackendError on a fault, a non-zero
-  // exit status or an unsupported problem.
+  // exit status or an unsupported problem. A batch larger than L2 holds runs as several
+  // independent cluster runs ("chunks"); with a pool they are simulated side by side on the
+  // host. Records, results and cycle totals do not depend on the pool: each chunk is its own
+  // fresh cluster, and the totals are summed in chunk order.
   BatchStats run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
-                 const RunOptions& options) const;
+                 const RunOptions& options, ThreadPool* pool = nullptr) const;
 
  private:
-  std::size_t run_chunk(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
-                        const RunOptions& options, BatchStats& stats) const;
+  // Pairs per cluster run: as many as L2 holds beside the image.
+  std::size_t pairs_per_chunk(const Params& p) const;
+  void run_chunk(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+                 const RunOptions& options, BatchStats& stats) const;
 
   std::vector<std::uint8_t> l2_image_;  // L2 bytes [L2 base, L2 base + size) after loading
   std::uint32_t entry_ = 0;

@@ -12,8 +12,8 @@ BackendRow gap8_row(const std::string& variant) {
           [variant]() -> std::string {
             return gap8_kernel_elf(variant).empty() ? "no embedded GAP8 kernel ELF" : "";
           },
-          [variant](const BackendOptions&) -> std::unique_ptr<Backend> {
-            return std::make_unique<Gap8Backend>(variant, gap8_host::RunOptions{});
+          [variant](const BackendOptions& o) -> std::unique_ptr<Backend> {
+            return std::make_unique<Gap8Backend>(variant, gap8_host::RunOptions{}, o.threads);
           }};
 }
 

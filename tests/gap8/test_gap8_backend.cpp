@@ -112,3 +112,42 @@ TEST_CASE("gap8 known answer: texture shifted by (+2, -1)", "[gap8][no-sanitizer
 }
 
 }  // namespace pxflow::test
+
+namespace pxflow::test {
+
+TEST_CASE("gap8 batch of several cluster runs: same bytes and cycles on 1 and 2 host threads",
+          "[gap8][no-sanitizer]") {
+  // 100 pairs at 64x64 need three cluster runs (L2 holds about 45); with two host workers they
+  // are simulated side by side and merged in order.
+  const Params p = profile("px4flow-64");
+  std::vector<OwnedPair> owned;
+  for (int i = 0; i < 100; ++i) owned.push_back(random_pair(p.width, p.height, p.search_radius, 2026 + i));
+  std::vector<FramePair> views;
+  for (const OwnedPair& o : owned) views.push_back(o.view());
+  std::vector<PoiRecord> expected;
+  for (const FramePair& v : views)
+    for (const PoiRecord& r : run_ref(RefVariant::kOriginal, v, p)) expected.push_back(r);
+
+  std::vector<std::vector<PoiRecord>> got;
+  std::vector<std::uint64_t> cycles;
+  std::vector<std::vector<pxflow_gap8_result>> results;
+  for (int threads : {1, 2}) {
+    Gap8Backend backend("original", {}, threads);
+    got.push_back(sentinel_records(views.size() * poi_count(p)));
+    OpCounts counts;
+    backend.run(views, p, got.back(), counts);
+    cycles.push_back(backend.last_stats().cycles);
+    results.push_back(backend.last_stats().pairs);
+  }
+  for (const auto& g : got) {
+    INFO(first_difference(expected, g, "100 random pairs"));
+    REQUIRE(std::memcmp(expected.data(), g.data(), g.size() * sizeof(PoiRecord)) == 0);
+  }
+  CHECK(cycles[0] == cycles[1]);
+  REQUIRE(results[0].size() == views.size());
+  REQUIRE(results[1].size() == views.size());
+  CHECK(std::memcmp(results[0].data(), results[1].data(),
+                    results[0].size() * sizeof(pxflow_gap8_result)) == 0);
+}
+
+}  // namespace pxflow::test

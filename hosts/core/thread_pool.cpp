@@ -1,6 +1,6 @@
 #include "thread_pool.hpp"
 
-namespace pxflow::cpu {
+namespace pxflow {
 
 ThreadPool::ThreadPool(int threads) {
   const unsigned cores = std::thread::hardware_concurrency();
@@ -70,4 +70,4 @@ void ThreadPool::worker_loop() {
   }
 }
 
-}  // namespace pxflow::cpu
+}  // namespace pxflow

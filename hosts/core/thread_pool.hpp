@@ -1,4 +1,5 @@
-// A small fixed pool for the CPU backends: spreads the frame pairs of a batch over workers.
+// A small fixed pool for the host-side backends (CPU kernels, the GAP8 model): spreads the
+// items of a batch (frame pairs, model runs) over workers.
 // Each item is written by exactly one worker into its own place, so the output bytes do not
 // depend on the thread count or on scheduling.
 #pragma once
@@ -10,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-namespace pxflow::cpu {
+namespace pxflow {
 
 class ThreadPool {
  public:
@@ -41,4 +42,4 @@ class ThreadPool {
   std::exception_ptr error_;
 };
 
-}  // namespace pxflow::cpu
+}  // namespace pxflow
