@@ -58,7 +58,7 @@ Command add_check_command(CLI::App& app) {
   sub->add_option("--data", a->data_dir, "Folder of the real frames (opencv-doc)")->capture_default_str();
   sub->add_flag("--generated-only", a->generated_only, "Skip the real frames (random, hostile, threshold cases only)");
   sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
-  sub->add_option("--threads", a->backend_options.threads, "CPU worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  sub->add_option("--threads", a->backend_options.threads, "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)")->check(CLI::Range(0, 1024));
   sub->add_option("--device", a->backend_options.device, "Device index or name substring (GPU backends)");
   return {sub, [a] { return run_check_command(*a); }};
 }

@@ -101,7 +101,7 @@ Command add_flow_command(CLI::App& app) {
   sub->add_option("--size", o->size, "Frame size of .raw inputs, WIDTHxHEIGHT (e.g. 64x64)");
   sub->add_option("--backend", o->backend, "Backend to run (see `pxflow backends`)")
       ->capture_default_str();
-  sub->add_option("--threads", o->backend_options.threads, "CPU worker threads (0 = all cores)")
+  sub->add_option("--threads", o->backend_options.threads, "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)")
       ->check(CLI::Range(0, 1024));
   sub->add_option("--device", o->backend_options.device, "Device index or name substring (GPU backends)");
   sub->add_flag("--json", o->json, "Print one JSON object: flow, bits, histograms, counts, records");

@@ -16,7 +16,7 @@ namespace pxflow {
 
 // Run-time choices a user can make for a backend; each backend reads what applies to it.
 struct BackendOptions {
-  int threads = 0;     // CPU worker threads; 0 = all cores
+  int threads = 0;     // host worker threads (CPU backends, GAP8 model); 0 = all cores
   std::string device;  // device index or name substring (OpenCL, Vulkan); empty = default
 };
 
