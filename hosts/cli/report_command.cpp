@@ -15,6 +15,9 @@
 #include "estimate.hpp"
 #include "grid.hpp"
 #include "registry.hpp"
+#ifdef PXFLOW_WITH_GAP8
+#include "report_gap8.hpp"
+#endif
 
 namespace pxflow::cli {
 namespace {
@@ -22,7 +25,7 @@ namespace {
 struct ReportArgs {
   std::string out_dir, check_json, bench_json, backends;
   std::uint64_t seed = 1;
-  bool quick = false, no_accuracy = false;
+  bool quick = false, no_accuracy = false, no_gap8 = false;
 };
 
 // The backend a user would run: the best CPU path when built in, else the reference.
@@ -123,6 +126,10 @@ int run_report(const ReportArgs& a) {
     std::filesystem::create_directories(a.out_dir);
     add_pictures(in, a);
   }
+#ifdef PXFLOW_WITH_GAP8
+  // The model's tables belong to a report about the GAP8 backends: all backends, or any gap8-*.
+  if (!a.no_gap8 && (a.backends.empty() || a.backends.find("gap8-") != std::string::npos)) add_gap8_tables(in);
+#endif
   write_report(a.out_dir, in);
   std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json, results.csv\n";
   return in.check.value("failed", 0) == 0 ? 0 : 1;
@@ -140,6 +147,7 @@ Command add_report_command(CLI::App& app) {
   sub->add_option("--seed", a->seed, "Seed of the check's random pairs")->capture_default_str();
   sub->add_flag("--quick", a->quick, "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
   sub->add_flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");
+  sub->add_flag("--no-gap8", a->no_gap8, "Leave out the GAP8 model's tables beside the paper's (builds with GAP8 only)");
   return {sub, [a] { return run_report(*a); }};
 }
 

@@ -66,6 +66,18 @@ double speedup(const Study& s, const std::string& variant, int cores);
 double amdahl_limit(const Study& s, const std::string& variant, int cores);
 double fps(const Study& s, double cycles);
 
+// Tables I-III of the paper with the model beside them, one line per figure, already formatted
+// ("1027.0k", "7.40x", "+43.2%"; "-" where the paper has no figure). pxflow gap8 prints them;
+// pxflow report puts them into the report.
+struct PaperLine {
+  std::string label, variant, model, paper, diff;
+};
+struct PaperTable {
+  std::string title;
+  std::vector<PaperLine> lines;
+};
+std::vector<PaperTable> paper_tables(const Study& s);
+
 void print_tables(const Study& s);
 std::string to_json(const Study& s);  // {"variants": {"original": {"1": {...}, ...}, ...}, ...}
 

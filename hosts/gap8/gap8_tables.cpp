@@ -24,15 +24,9 @@ std::string num(std::optional<double> v, const char* fmt = "%.1fk", double scale
   return buf;
 }
 
-void row(const char* label, const std::string& variant, double model, std::optional<double> paper,
-         const char* fmt = "%.1fk", double scale = 1000.0) {
-  std::printf("  %-28s %-9s %12s %12s %9s\n", label, variant.c_str(),
-              num(model, fmt, scale).c_str(), num(paper, fmt, scale).c_str(),
-              diff(model, paper).c_str());
-}
-
-void header(const char* title) {
-  std::printf("\n%s\n  %-28s %-9s %12s %12s %9s\n", title, "", "variant", "model", "paper", "diff");
+PaperLine line(const std::string& label, const std::string& variant, double model,
+               std::optional<double> paper, const char* fmt = "%.1fk", double scale = 1000.0) {
+  return {label, variant, num(model, fmt, scale), num(paper, fmt, scale), diff(model, paper)};
 }
 
 // The variants in the order asked for (original, local, global), not the map's.
@@ -50,50 +44,68 @@ double per_core_sum(const Measure& m, int event) {
 
 }  // namespace
 
+std::vector<PaperTable> paper_tables(const Study& s) {
+  std::vector<PaperTable> out(3);
+  out[0].title = "Table I: interpolations and instructions per frame (instructions: 1 core, whole run)";
+  for (const auto& [v, by] : in_order(s)) {
+    const auto p1 = paper(v, 1);
+    const Measure& m = by.at(1);
+    out[0].lines.push_back(
+        line("interpolations", v, m.interpolations, p1 ? p1->interpolations : std::nullopt, "%.0f", 1));
+    out[0].lines.push_back(line("instructions", v, m.instructions, p1 ? p1->instructions : std::nullopt));
+    out[0].lines.push_back(
+        line("4-byte SAD ops", v, m.sad_ops, p1 ? p1->sad_ops : std::nullopt, "%.0f", 1));
+  }
+  out[1].title = "Table II: cycles per frame (core 0) and speed-up";
+  for (const auto& [v, by] : in_order(s)) {
+    for (const auto& [cores, m] : by) {
+      const auto pp = paper(v, cores);
+      out[1].lines.push_back(line("cycles, " + std::to_string(cores) + " core(s)", v, m.cycles,
+                                  pp ? pp->cycles : std::nullopt));
+      if (cores == 1) continue;
+      out[1].lines.push_back(line("speed-up, " + std::to_string(cores) + " cores", v,
+                                  speedup(s, v, cores), pp ? pp->speedup : std::nullopt, "%.2fx", 1));
+    }
+  }
+  out[2].title = "Table III: cycles per phase (1 core), ideal 8-core flow, Amdahl's limit";
+  for (const auto& [v, by] : in_order(s)) {
+    const Measure& m = by.at(1);
+    const auto p1 = paper(v, 1);
+    auto phase = [&](double Phases::*field) -> std::optional<double> {
+      if (p1 && p1->phases) return (*p1->phases).*field;
+      return std::nullopt;
+    };
+    auto& t = out[2].lines;
+    t.push_back(line("initialisation (in DMA)", v, m.phases.init, phase(&Phases::init)));
+    t.push_back(line("DMA copy", v, m.phases.dma, phase(&Phases::dma)));
+    t.push_back(line("flow estimation", v, m.phases.flow, phase(&Phases::flow)));
+    t.push_back(line("averaging", v, m.phases.averaging, phase(&Phases::averaging)));
+    t.push_back(line("records to L2 (not in paper)", v, m.phases.output, std::nullopt));
+    const auto p8 = paper(v, 8);
+    const auto flow = phase(&Phases::flow);
+    t.push_back(line("flow, 8 cores ideal", v, m.phases.flow / 8, flow ? std::optional(*flow / 8) : std::nullopt));
+    if (by.count(8)) {
+      t.push_back(line("flow, 8 cores actual", v, by.at(8).phases.flow,
+                       p8 && p8->phases ? std::optional(p8->phases->flow) : std::nullopt));
+      t.push_back(line("Amdahl's limit, 8 cores", v, amdahl_limit(s, v, 8),
+                       p8 ? p8->amdahl_limit : std::nullopt, "%.3fx", 1));
+      t.push_back(line("actual speed-up, 8 cores", v, speedup(s, v, 8), p8 ? p8->speedup : std::nullopt,
+                       "%.2fx", 1));
+    }
+  }
+  return out;
+}
+
 void print_tables(const Study& s) {
   std::printf("pxflow gap8: %s; %.0f MHz; TCDM contention %s; POIs split %s\n", s.pair_name.c_str(),
               s.options.mhz, s.options.contention ? "on" : "off",
               s.options.chunked ? "in chunks" : "round robin");
-  header("Table I: interpolations and instructions per frame (instructions: 1 core, whole run)");
-  for (const auto& [v, by] : in_order(s)) {
-    const auto p1 = paper(v, 1);
-    const Measure& m = by.at(1);
-    row("interpolations", v, m.interpolations, p1 ? p1->interpolations : std::nullopt, "%.0f", 1);
-    row("instructions", v, m.instructions, p1 ? p1->instructions : std::nullopt);
-    row("4-byte SAD ops", v, m.sad_ops, p1 ? p1->sad_ops : std::nullopt, "%.0f", 1);
-  }
-  header("Table II: cycles per frame (core 0) and speed-up");
-  for (const auto& [v, by] : in_order(s)) {
-    for (const auto& [cores, m] : by) {
-      const auto pp = paper(v, cores);
-      const std::string label = "cycles, " + std::to_string(cores) + " core(s)";
-      row(label.c_str(), v, m.cycles, pp ? pp->cycles : std::nullopt);
-      if (cores == 1) continue;
-      const std::string sl = "speed-up, " + std::to_string(cores) + " cores";
-      row(sl.c_str(), v, speedup(s, v, cores), pp ? pp->speedup : std::nullopt, "%.2fx", 1);
-    }
-  }
-  header("Table III: cycles per phase (1 core), ideal 8-core flow, Amdahl's limit");
-  for (const auto& [v, by] : in_order(s)) {
-    const Measure& m = by.at(1);
-    const auto p1 = paper(v, 1);
-    const auto pp = p1 ? p1->phases : std::nullopt;
-    row("initialisation (in DMA)", v, m.phases.init, pp ? std::optional(pp->init) : std::nullopt);
-    row("DMA copy", v, m.phases.dma, pp ? std::optional(pp->dma) : std::nullopt);
-    row("flow estimation", v, m.phases.flow, pp ? std::optional(pp->flow) : std::nullopt);
-    row("averaging", v, m.phases.averaging, pp ? std::optional(pp->averaging) : std::nullopt);
-    row("records to L2 (not in paper)", v, m.phases.output, std::nullopt);
-    const auto p8 = paper(v, 8);
-    row("flow, 8 cores ideal", v, m.phases.flow / 8,
-        pp ? std::optional(pp->flow / 8) : std::nullopt);
-    if (by.count(8)) {
-      row("flow, 8 cores actual", v, by.at(8).phases.flow,
-          p8 && p8->phases ? std::optional(p8->phases->flow) : std::nullopt);
-      row("Amdahl's limit, 8 cores", v, amdahl_limit(s, v, 8), p8 ? p8->amdahl_limit : std::nullopt,
-          "%.3fx", 1);
-      row("actual speed-up, 8 cores", v, speedup(s, v, 8), p8 ? p8->speedup : std::nullopt, "%.2fx",
-          1);
-    }
+  for (const PaperTable& t : paper_tables(s)) {
+    std::printf("\n%s\n  %-28s %-9s %12s %12s %9s\n", t.title.c_str(), "", "variant", "model",
+                "paper", "diff");
+    for (const PaperLine& l : t.lines)
+      std::printf("  %-28s %-9s %12s %12s %9s\n", l.label.c_str(), l.variant.c_str(),
+                  l.model.c_str(), l.paper.c_str(), l.diff.c_str());
   }
   std::printf("\nEvery core count (fps, latency at %.0f MHz; energy at the paper's 25 mW)\n",
               s.options.mhz);

@@ -20,6 +20,17 @@ struct ReportInputs {
     std::string caption, file;
   };
   std::vector<Picture> pictures;
+  // Sections measured outside the harness (the GAP8 model beside the paper's tables): a table
+  // each, with an optional inline SVG chart, after the harness's own sections.
+  struct Table {
+    std::string title, text;
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
+    std::string svg;
+  };
+  std::vector<Table> tables;
+  Json gap8;  // the GAP8 model's raw figures for results.json (pxflow gap8 --json), or null
+  std::string gap8_command;
 };
 
 // Writes the four files into out_dir (created if needed); throws InputError when it cannot.

@@ -1,0 +1,82 @@
+#include "report_gap8.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "errors.hpp"
+#include "gap8_study.hpp"
+#include "svg_chart.hpp"
+
+namespace pxflow::cli {
+namespace {
+
+std::string fixed(double v, const char* fmt) {
+  char b[32];
+  std::snprintf(b, sizeof b, fmt, v);
+  return b;
+}
+
+// Every core count: cycles, frame rate and latency at the clock, speed-up against Amdahl's limit.
+ReportInputs::Table core_counts(const gap8_study::Study& s) {
+  ReportInputs::Table t{"GAP8 model: every core count",
+                        "Core 0's cycles per frame at " + fixed(s.options.mhz, "%.0f") +
+                            " MHz; speed-up over 1 core against Amdahl's limit from the 1-core phases. "
+                            "Command: `" + std::string("pxflow gap8 --cores 1-8") + "`.",
+                        {"variant", "cores", "cycles", "frames/s", "latency ms", "speed-up", "Amdahl's limit"},
+                        {},
+                        ""};
+  std::vector<Series> lines;
+  Series ideal{"linear (ideal)", {}};
+  for (const std::string& v : s.options.variants) {
+    Series se{v, {}};
+    for (const auto& [cores, m] : s.results.at(v)) {
+      const double speedup = gap8_study::speedup(s, v, cores);
+      t.rows.push_back({v, std::to_string(cores), fixed(m.cycles, "%.0f"), fixed(gap8_study::fps(s, m.cycles), "%.1f"),
+                        fixed(m.cycles / (s.options.mhz * 1e3), "%.3f"), fixed(speedup, "%.2fx"),
+                        fixed(gap8_study::amdahl_limit(s, v, cores), "%.2fx")});
+      se.points.push_back({double(cores), speedup});
+      if (v == s.options.variants.front()) ideal.points.push_back({double(cores), double(cores)});
+    }
+    lines.push_back(se);
+  }
+  lines.push_back(ideal);
+  t.svg = svg_line_chart("GAP8 model: speed-up over 1 core", lines, "cluster cores", "speed-up");
+  return t;
+}
+
+}  // namespace
+
+void add_gap8_tables(ReportInputs& in) {
+  in.gap8_command = "pxflow gap8 --cores 1-8";
+  std::cout << "== " << in.gap8_command << "\n";
+  gap8_study::Options options;
+  options.variants = {"original", "local", "global"};
+  options.cores = {1, 2, 3, 4, 5, 6, 7, 8};
+  const Params p = profile("px4flow-64");
+  gap8_study::NamedFrames frames;
+  try {
+    frames = gap8_study::default_pair(p);
+  } catch (const InputError& e) {
+    in.tables.push_back({"GAP8 model beside the ISCAS 2022 paper", std::string("Not measured: ") + e.what(), {}, {}, ""});
+    return;
+  }
+  const FramePair pair{frames.prev.view(), frames.next.view()};
+  const gap8_study::Study s = gap8_study::run_study(pair, frames.name, p, options);
+  const std::string intro = "The GAP8 kernel's three variants (kernels/gap8) on our cycle model of the 8-core cluster "
+                            "(TCDM contention on, POIs round robin) on " + frames.name +
+                            ", beside the paper's figures. Command: `" + in.gap8_command +
+                            "`; where and why model and paper differ: docs/gap8-kernel.md.";
+  // The paper's tables have 1 and 8 cores; the other counts are in the last table.
+  gap8_study::Study paper_cores = s;
+  for (auto& [variant, by_cores] : paper_cores.results) std::erase_if(by_cores, [](const auto& e) { return e.first != 1 && e.first != 8; });
+  for (const gap8_study::PaperTable& pt : gap8_study::paper_tables(paper_cores)) {
+    ReportInputs::Table t{"GAP8 model: " + pt.title, in.tables.empty() || in.tables.back().title.rfind("GAP8", 0) != 0 ? intro : "Same run as above.",
+                          {"figure", "variant", "model", "paper", "diff"}, {}, ""};
+    for (const auto& l : pt.lines) t.rows.push_back({l.label, l.variant, l.model, l.paper, l.diff});
+    in.tables.push_back(std::move(t));
+  }
+  in.tables.push_back(core_counts(s));
+  in.gap8 = Json::parse(gap8_study::to_json(s));
+}
+
+}  // namespace pxflow::cli

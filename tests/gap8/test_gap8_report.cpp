@@ -1,0 +1,78 @@
+// pxflow report's GAP8 section: the paper's tables with the model beside them, a speed-up chart,
+// and the raw figures in results.json; left out for reports about other backends or on request.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "run_program.hpp"
+
+namespace pxflow::test {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Small check and bench results of ref-original, so the report runs nothing else but the model.
+void make_inputs(const TempDir& dir) {
+  REQUIRE(run_pxflow({"check", "--backends", "ref-original", "--generated-only", "--json", dir.path("c.json")}).exit_code == 0);
+  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0", "--json",
+                      dir.path("b.json")}).exit_code == 0);
+}
+
+RunResult report(const TempDir& dir, const std::string& out, std::vector<std::string> extra) {
+  std::vector<std::string> args{"report", "--out", dir.path(out), "--check-json", dir.path("c.json"),
+                                "--bench-json", dir.path("b.json"), "--no-accuracy"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return run_pxflow(args);
+}
+
+}  // namespace
+
+TEST_CASE("pxflow report shows the GAP8 model beside the paper's Tables I-III", "[gap8][report]") {
+  TempDir dir;
+  make_inputs(dir);
+  const RunResult r = report(dir, "all", {});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::string md = slurp(dir.path("all/report.md"));
+  for (const char* heading : {"## GAP8 model: Table I:", "## GAP8 model: Table II:", "## GAP8 model: Table III:",
+                              "## GAP8 model: every core count"})
+    CHECK(md.find(heading) != std::string::npos);
+  CHECK(md.find("`pxflow gap8 --cores 1-8`") != std::string::npos);
+  CHECK(md.find("| 4-byte SAD ops | original | 91520 | 91520 | +0.0% |") != std::string::npos);
+  CHECK(md.find("| cycles, 1 core(s) | original |") != std::string::npos);
+  CHECK(md.find("| cycles, 2 core(s) |") == std::string::npos);  // the paper's tables: 1 and 8 cores
+  CHECK(md.find("| local | 5 |") != std::string::npos);          // every count in the last table
+
+  const auto j = nlohmann::json::parse(slurp(dir.path("all/results.json")));
+  CHECK(j["commands"]["gap8"] == "pxflow gap8 --cores 1-8");
+  const auto& eight = j["gap8"]["variants"]["original"]["8"];
+  CHECK(eight["paper"]["cycles"] == 99000.0);
+  CHECK(eight["speedup"].get<double>() > 1.0);
+  CHECK(eight["speedup"].get<double>() <= eight["amdahl_limit"].get<double>());
+  // The table shows the figure of the JSON.
+  char cycles[32];
+  std::snprintf(cycles, sizeof cycles, "| cycles, 8 core(s) | original | %.1fk |", eight["cycles"].get<double>() / 1000);
+  CHECK(md.find(cycles) != std::string::npos);
+  const std::string html = slurp(dir.path("all/report.html"));
+  CHECK(html.find("<title>GAP8 model: speed-up over 1 core</title>") != std::string::npos);
+}
+
+TEST_CASE("pxflow report leaves the GAP8 section out for other backends or with --no-gap8", "[gap8][report]") {
+  TempDir dir;
+  make_inputs(dir);
+  for (const auto& extra : {std::vector<std::string>{"--backends", "ref-original"}, std::vector<std::string>{"--no-gap8"}}) {
+    const RunResult r = report(dir, "without", extra);
+    INFO(r.out << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(slurp(dir.path("without/report.md")).find("GAP8 model") == std::string::npos);
+    CHECK(nlohmann::json::parse(slurp(dir.path("without/results.json")))["gap8"].is_null());
+  }
+}
+
+}  // namespace pxflow::test
