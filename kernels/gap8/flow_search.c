@@ -2,18 +2,21 @@
  * SAD reloads both blocks (16 words of prev, 16 of next), as compute_sad_8x8 does. Used by the
  * paper's three variants. The 2S+1 candidates of one row of displacements are one asm block with
  * two RI5CY hardware loops (candidates outside, the 8 block rows inside) and post-increment
- * loads, as the GAP SDK's compiler would emit: no loop counters, compares or pointer updates. */
+ * loads, as the GAP SDK's compiler would emit: no loop counters, compares or pointer updates.
+ * prev's block is first copied to a word-aligned buffer (the POIs sit at odd x, so each of its
+ * words would otherwise be a misaligned, two-access load for every candidate). */
 #include "flow_kernel.h"
 #include "flow_simd.h"
 
-/* Candidates cand, cand+1, ..., cand+n-1 of next against prev's block `blk` (row stride w for
- * both frames). A SAD strictly smaller than *best replaces it; returns the candidate of
+/* Candidates cand, cand+1, ..., cand+n-1 of next (row stride w) against prev's block, packed
+ * in `blk` (16 words, row by row). A SAD strictly smaller than *best replaces it; returns the candidate of
  * the last replacement, or 0 if none. One 4-byte SAD is maxu, minu, sub, sdotup (flow_simd.h). */
-static const uint8_t *search_row(const uint8_t *blk, const uint8_t *cand, uint32_t w, uint32_t n,
+static const uint8_t *search_row(const uint32_t *blk, const uint8_t *cand, uint32_t w, uint32_t n,
                                  uint32_t *best) {
-  const uint8_t *hit = 0, *pa, *pb;
+  const uint8_t *hit = 0, *pb;
+  const uint32_t *pa;
   uint32_t b = *best, acc, a0, a1, b0, b1, t0, t1, u0, u1;
-  const uint32_t row_rest = w - 4, one = 1; /* p.lw x, 4(p!) then p.lw y, row_rest(p!) */
+  const uint32_t row_rest = w - 4, one = 1; /* next: p.lw x, 4(p!) then p.lw y, row_rest(p!) */
   __asm__ volatile(
       ".option push\n\t.option norvc\n\t.option norelax\n\t"
       "j .Lcand%=\n\t"
@@ -30,7 +33,7 @@ static const uint8_t *search_row(const uint8_t *blk, const uint8_t *cand, uint32
       ".Lrow%=: " GAP8_ASM_LP_SETUPI("0", "8", "24")
       GAP8_ASM_P_LW_POST_IMM("%[a0]", "4", "%[pa]")
       GAP8_ASM_P_LW_POST_IMM("%[b0]", "4", "%[pb]")
-      GAP8_ASM_P_LW_POST_REG("%[a1]", "%[rest]", "%[pa]")
+      GAP8_ASM_P_LW_POST_IMM("%[a1]", "4", "%[pa]")
       GAP8_ASM_P_LW_POST_REG("%[b1]", "%[rest]", "%[pb]")
       GAP8_ASM_PV_MAXU_B("%[t0]", "%[a0]", "%[b0]")
       GAP8_ASM_PV_MINU_B("%[u0]", "%[a0]", "%[b0]")
@@ -60,10 +63,16 @@ uint32_t flow_integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, 
                              int *by) {
   const int s = (int)c->search_radius;
   const uint32_t w = c->width;
+  uint32_t packed[16];
+#pragma GCC unroll 8
+  for (int r = 0; r < 8; ++r) {
+    packed[2 * r] = ld4(blk + r * w);
+    packed[2 * r + 1] = ld4(blk + r * w + 4);
+  }
   uint32_t best = 0xFFFFFFFFu;
   for (int dy = -s; dy <= s; ++dy) {
     const uint8_t *row = c->next + (y + dy) * w + x - s;
-    const uint8_t *hit = search_row(blk, row, w, (uint32_t)(2 * s + 1), &best);
+    const uint8_t *hit = search_row(packed, row, w, (uint32_t)(2 * s + 1), &best);
     if (hit) {
       *bx = (int)(hit - row) - s;
       *by = dy;
