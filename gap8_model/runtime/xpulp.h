@@ -112,8 +112,9 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
 /* Assembly-time check of a loop's hand-counted end offset (GAS cannot put a label difference
  * into .insn): label `to` must lie `bytes` after label `from`. GAS can only measure code
  * without branches or jumps between the two labels (their size is decided late). */
-#define GAP8_ASM_CHECK_DISTANCE(from, to, bytes)                            \
-  ".if (" to " - " from ") != " bytes "\n\t"                                \
+#define GAP8_ASM_CHECK_DISTANCE(from, to, bytes) \
+  ".if (" to " - " from ") != " bytes            \
+  "\n\t"                                         \
   ".error \"hand-counted code distance is wrong (hardware loop end)\"\n\t.endif\n\t"
 
 #endif

@@ -9,8 +9,9 @@
 #include "flow_simd.h"
 
 /* Candidates cand, cand+1, ..., cand+n-1 of next (row stride w) against prev's block, packed
- * in `blk` (16 words, row by row). A SAD strictly smaller than *best replaces it; returns the candidate of
- * the last replacement, or 0 if none. One 4-byte SAD is maxu, minu, sub, sdotup (flow_simd.h). */
+ * in `blk` (16 words, row by row). A SAD strictly smaller than *best replaces it; returns the
+ * candidate of the last replacement, or 0 if none. One 4-byte SAD is maxu, minu, sub, sdotup
+ * (flow_simd.h). */
 static const uint8_t *search_row(const uint32_t *blk, const uint8_t *cand, uint32_t w, uint32_t n,
                                  uint32_t *best) {
   const uint8_t *hit = 0, *pb;
