@@ -92,6 +92,8 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
 #define GAP8_ASM_P_LW_POST_IMM(rd, imm, rs1) ".insn i 0x0B, 2, " rd ", " imm "(" rs1 ")\n\t"
 /* p.lw rd, rs2(rs1!): load the word at rs1, then rs1 += rs2. */
 #define GAP8_ASM_P_LW_POST_REG(rd, rs2, rs1) ".insn r 0x0B, 7, 0x10, " rd ", " rs1 ", " rs2 "\n\t"
+/* p.sw rs2, imm(rs1!): store rs2 at rs1, then rs1 += imm (imm a literal). */
+#define GAP8_ASM_P_SW_POST_IMM(rs2, imm, rs1) ".insn s 0x2B, 2, " rs2 ", " imm "(" rs1 ")\n\t"
 /* p.lw rd, rs2(rs1): load the word at rs1 + rs2. */
 #define GAP8_ASM_P_LW_REG(rd, rs2, rs1) ".insn r 0x03, 7, 0x10, " rd ", " rs1 ", " rs2 "\n\t"
 
