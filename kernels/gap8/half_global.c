@@ -22,12 +22,10 @@ static void average_row(uint8_t *dst, const uint8_t *a, const uint8_t *b, uint32
         ".option push\n\t.option norvc\n\t.option norelax\n\t"
         /* loop 0: body of 8 instructions, the last 32 bytes (16 half-words) after lp.setup */
         ".Lstart%=: " GAP8_ASM_LP_SETUP("0", "%[n]", "16")
-        GAP8_ASM_P_LW_POST_IMM("%[a0]", "4", "%[pa]")
-        GAP8_ASM_P_LW_POST_IMM("%[b0]", "4", "%[pb]")
-        GAP8_ASM_P_LW_POST_IMM("%[a1]", "4", "%[pa]")
-        GAP8_ASM_P_LW_POST_IMM("%[b1]", "4", "%[pb]")
-        GAP8_ASM_PV_AVGU_B("%[a0]", "%[a0]", "%[b0]")
-        GAP8_ASM_PV_AVGU_B("%[a1]", "%[a1]", "%[b1]")
+        /* one line per step: the two rows' word k, their word k+1, both averages, stores */
+        GAP8_ASM_P_LW_POST_IMM("%[a0]", "4", "%[pa]") GAP8_ASM_P_LW_POST_IMM("%[b0]", "4", "%[pb]")
+        GAP8_ASM_P_LW_POST_IMM("%[a1]", "4", "%[pa]") GAP8_ASM_P_LW_POST_IMM("%[b1]", "4", "%[pb]")
+        GAP8_ASM_PV_AVGU_B("%[a0]", "%[a0]", "%[b0]") GAP8_ASM_PV_AVGU_B("%[a1]", "%[a1]", "%[b1]")
         GAP8_ASM_P_SW_POST_IMM("%[a0]", "4", "%[pd]")
         ".Lend%=: " GAP8_ASM_P_SW_POST_IMM("%[a1]", "4", "%[pd]")
         GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lend%=", "32")
