@@ -86,6 +86,8 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
 #define GAP8_ASM_PV_MINU_B(rd, a, b) ".insn r 0x57, 1, 0x14, " rd ", " a ", " b "\n\t"
 #define GAP8_ASM_PV_MAXU_B(rd, a, b) ".insn r 0x57, 1, 0x1C, " rd ", " a ", " b "\n\t"
 #define GAP8_ASM_PV_AVGU_B(rd, a, b) ".insn r 0x57, 1, 0x0C, " rd ", " a ", " b "\n\t"
+/* rd = dot(a, b's low byte in every lane) */
+#define GAP8_ASM_PV_DOTUP_SC_B(rd, a, b) ".insn r 0x57, 5, 0x40, " rd ", " a ", " b "\n\t"
 /* acc += dot(a, b's low byte in every lane) */
 #define GAP8_ASM_PV_SDOTUP_SC_B(acc, a, b) ".insn r 0x57, 5, 0x50, " acc ", " a ", " b "\n\t"
 /* p.lw rd, imm(rs1!): load the word at rs1, then rs1 += imm (imm a literal, e.g. "4"). */
