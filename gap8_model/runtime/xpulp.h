@@ -99,6 +99,16 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
 /* p.lw rd, rs2(rs1): load the word at rs1 + rs2. */
 #define GAP8_ASM_P_LW_REG(rd, rs2, rs1) ".insn r 0x03, 7, 0x10, " rd ", " rs1 ", " rs2 "\n\t"
 
+/* Brackets for an asm block with hardware loops. RI5CY wants a loop's first instruction word-
+ * aligned and no compressed instruction in its body: BEGIN aligns (with the surrounding code's
+ * options, so that the linker keeps the alignment) and turns compressed instructions and linker
+ * relaxation off, so that every instruction up to END is 4 bytes and hand-counted offsets hold.
+ * Whatever follows BEGIN up to a loop's set-up must then be a whole number of words (it is: every
+ * instruction is 4 bytes), and the set-up must sit 4 bytes before the body (lp.setup, lp.setupi)
+ * or the body start be given to lp.starti. */
+#define GAP8_ASM_HWLOOP_BEGIN ".balign 4\n\t.option push\n\t.option norvc\n\t.option norelax\n\t"
+#define GAP8_ASM_HWLOOP_END ".option pop"
+
 /* Hardware loops (opcode 0x7B; loop 0 is the inner one and has priority). The end is the
  * address of the loop's LAST instruction, given as an offset in half-words from the set-up
  * instruction; that last instruction must not be a branch or jump. `loop` is 0 or 1, the other

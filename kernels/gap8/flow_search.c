@@ -19,7 +19,7 @@ static const uint8_t *search_row(const uint32_t *blk, const uint8_t *cand, uint3
   uint32_t b = *best, acc, a0, a1, b0, b1, t0, t1, u0, u1;
   const uint32_t row_rest = w - 4, one = 1; /* next: p.lw x, 4(p!) then p.lw y, row_rest(p!) */
   __asm__ volatile(
-      ".option push\n\t.option norvc\n\t.option norelax\n\t"
+      GAP8_ASM_HWLOOP_BEGIN
       "j .Lcand%=\n\t"
       /* a new best (rare: out of the loop's straight path) */
       ".Lbetter%=: mv %[b], %[acc]\n\t"
@@ -49,7 +49,7 @@ static const uint8_t *search_row(const uint32_t *blk, const uint8_t *cand, uint3
       ".Lcand_end%=: addi %[cand], %[cand], 1\n\t"
       GAP8_ASM_CHECK_DISTANCE(".Lrow%=", ".Lrow_end%=", "48")
       GAP8_ASM_CHECK_DISTANCE(".Lcand%=", ".Lrow_end%=", "64") /* + bltu + addi = 72 */
-      ".option pop"
+      GAP8_ASM_HWLOOP_END
       : [b] "+r"(b), [hit] "+r"(hit), [cand] "+r"(cand), [pa] "=&r"(pa), [pb] "=&r"(pb),
         [acc] "=&r"(acc), [a0] "=&r"(a0), [a1] "=&r"(a1), [b0] "=&r"(b0), [b1] "=&r"(b1),
         [t0] "=&r"(t0), [t1] "=&r"(t1), [u0] "=&r"(u0), [u1] "=&r"(u1)

@@ -40,7 +40,7 @@ static const uint8_t *search_row_held(const uint32_t p[16], const uint8_t *cand,
   const uint32_t rest = w - 4, back = 8 * w - 1, one = 1; /* back: to the next candidate */
   /* clang-format off */
   __asm__ volatile(
-      ".option push\n\t.option norvc\n\t.option norelax\n\t"
+      GAP8_ASM_HWLOOP_BEGIN
       "j .Lcand%=\n\t"
       /* a new best (rare: out of the loop's straight path) */
       ".Lbetter%=: mv %[b], %[acc]\n\t"
@@ -57,7 +57,7 @@ static const uint8_t *search_row_held(const uint32_t p[16], const uint8_t *cand,
       ".insn b 0x63, 6, %[acc], %[b], .Lbetter%=\n\t"
       ".Lcand_end%=: sub %[pb], %[pb], %[back]\n\t"
       GAP8_ASM_CHECK_DISTANCE(".Lcand%=", ".Lrows_end%=", "324")
-      ".option pop"
+      GAP8_ASM_HWLOOP_END
       : [b] "+r"(b), [hit] "+r"(hit), [pb] "+r"(cand), [acc] "=&r"(acc), [v0] "=&r"(v0),
         [v1] "=&r"(v1), [t] "=&r"(t)
       : [p0] "r"(p[0]), [p1] "r"(p[1]), [p2] "r"(p[2]), [p3] "r"(p[3]), [p4] "r"(p[4]),

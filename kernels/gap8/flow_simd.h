@@ -48,13 +48,15 @@ static inline uint32_t sad4_acc(uint32_t acc, uint32_t a, uint32_t b) {
  * accumulators cleared, then hardware loop 0 over the 8 block rows, whose body is `first` then
  * `second` (the row's two 4-pixel groups). The body starts 12 bytes after lp.starti; `endi` is
  * its last instruction's offset from lp.endi in half-words (a literal), checked at assembly. */
-#define HALF_ROWS_ASM(first, second, endi)                                                   \
-  ".option push\n\t.option norvc\n\t.option norelax\n\t" HALF_ACC_CLEAR_ASM                  \
-  ".Lstart%=: " GAP8_ASM_LP_STARTI("0", "6") GAP8_ASM_LP_ENDI("0", endi) GAP8_ASM_LP_COUNTI( \
-      "0", "8") ".Lbody%=: " first second                                                    \
-                ".Lafter%=:\n\t" GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lbody%=", "12")      \
-                    GAP8_ASM_CHECK_DISTANCE(                                                 \
-                        ".Lstart%=", ".Lafter%=", "2 * " endi " + 8") ".option pop"
+/* clang-format off */
+#define HALF_ROWS_ASM(first, second, endi)                                      \
+  GAP8_ASM_HWLOOP_BEGIN HALF_ACC_CLEAR_ASM                                      \
+  ".Lstart%=: " GAP8_ASM_LP_STARTI("0", "6") GAP8_ASM_LP_ENDI("0", endi)        \
+  GAP8_ASM_LP_COUNTI("0", "8") ".Lbody%=: " first second ".Lafter%=:\n\t"       \
+  GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lbody%=", "12")                        \
+  GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lafter%=", "2 * " endi " + 8")         \
+  GAP8_ASM_HWLOOP_END
+/* clang-format on */
 
 /* UHADD8: per byte floor((a + b) / 2). pv.avgu.b is the floor average (never round up). */
 static inline uint32_t avg4(uint32_t a, uint32_t b) { return gap8_pv_avgu_b(a, b); }

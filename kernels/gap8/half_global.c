@@ -19,7 +19,7 @@ static void average_row(uint8_t *dst, const uint8_t *a, const uint8_t *b, uint32
     uint32_t a0, a1, b0, b1;
     /* clang-format off */
     __asm__ volatile(
-        ".option push\n\t.option norvc\n\t.option norelax\n\t"
+        GAP8_ASM_HWLOOP_BEGIN
         /* loop 0: body of 8 instructions, the last 32 bytes (16 half-words) after lp.setup */
         ".Lstart%=: " GAP8_ASM_LP_SETUP("0", "%[n]", "16")
         /* one line per step: the two rows' word k, their word k+1, both averages, stores */
@@ -29,7 +29,7 @@ static void average_row(uint8_t *dst, const uint8_t *a, const uint8_t *b, uint32
         GAP8_ASM_P_SW_POST_IMM("%[a0]", "4", "%[pd]")
         ".Lend%=: " GAP8_ASM_P_SW_POST_IMM("%[a1]", "4", "%[pd]")
         GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lend%=", "32")
-        ".option pop"
+        GAP8_ASM_HWLOOP_END
         : [pa] "+r"(a), [pb] "+r"(b), [pd] "+r"(dst), [a0] "=&r"(a0), [a1] "=&r"(a1),
           [b0] "=&r"(b0), [b1] "=&r"(b1)
         : [n] "r"(pairs)

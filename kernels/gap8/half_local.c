@@ -27,7 +27,7 @@ static void build_planes(uint8_t *planes, const uint8_t *p, uint32_t w) {
   uint32_t a0, a1, a2, b0, b1, b2, c0, c1, c2, h0, h1, h2;
   /* clang-format off */
   __asm__ volatile(
-      ".option push\n\t.option norvc\n\t.option norelax\n\t"
+      GAP8_ASM_HWLOOP_BEGIN
       /* loop 0: body of 30 instructions, the last 120 bytes (60 half-words) after lp.setup */
       ".Lstart%=: " GAP8_ASM_LP_SETUP("0", "%[rows]", "60")
       "lw %[b0], 1(%[p])\n\t"   "lw %[b1], 5(%[p])\n\t"   "lw %[b2], 9(%[p])\n\t"
@@ -51,7 +51,7 @@ static void build_planes(uint8_t *planes, const uint8_t *p, uint32_t w) {
       "mv %[h0], %[b0]\n\t" "mv %[h1], %[b1]\n\t"
       ".Lend%=: mv %[h2], %[b2]\n\t"
       GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lend%=", "120")
-      ".option pop"
+      GAP8_ASM_HWLOOP_END
       : [p] "+r"(p), [pn] "+r"(pn), [ph] "+r"(planes), [a0] "=&r"(a0), [a1] "=&r"(a1),
         [a2] "=&r"(a2), [b0] "=&r"(b0), [b1] "=&r"(b1), [b2] "=&r"(b2), [c0] "=&r"(c0),
         [c1] "=&r"(c1), [c2] "=&r"(c2), [h0] "=&r"(h0), [h1] "=&r"(h1), [h2] "=&r"(h2)
