@@ -1,35 +1,94 @@
 /* The integer search of the "fast" variant (beyond the paper): prev's 8x8 block is loaded once
  * per POI into 16 registers and reused by all (2S+1)^2 candidates, so each candidate loads only
- * next's 16 words: half the loads of flow_search.c, same SADs in the same order (bit-exact). */
+ * next's 16 words: half the loads of flow_search.c, same SADs in the same order (bit-exact).
+ * The 2S+1 candidates of one row of displacements are one asm block: a hardware loop over the
+ * candidates, the 8 block rows unrolled in its body (the 16 words of prev are 16 registers, which
+ * no loop can index), next read with post-increment loads. */
 #include "flow_kernel.h"
 #include "flow_simd.h"
 
+/* clang-format off */
+/* acc += USAD8(prev, v); v is overwritten. */
+#define HELD_SAD(prev, v) SAD4_ACC_ASM("%[acc]", prev, v, "%[t]", v, "%[one]")
+
+/* Block row r: next's two words (the second load steps to the next row), two SADs against
+ * prev's words lo and hi. The loads' values are used two instructions later at the earliest. */
+#define HELD_ROW(lo, hi)                                \
+  GAP8_ASM_P_LW_POST_IMM("%[v0]", "4", "%[pb]")         \
+  GAP8_ASM_P_LW_POST_REG("%[v1]", "%[rest]", "%[pb]")   \
+  HELD_SAD("%[p" #lo "]", "%[v0]")                      \
+  HELD_SAD("%[p" #hi "]", "%[v1]")
+
+/* Row 0 starts the sum: pv.dotup.sc.b writes acc instead of adding to it (no acc = 0). */
+#define HELD_FIRST_ROW                                  \
+  GAP8_ASM_P_LW_POST_IMM("%[v0]", "4", "%[pb]")         \
+  GAP8_ASM_P_LW_POST_REG("%[v1]", "%[rest]", "%[pb]")   \
+  GAP8_ASM_PV_MAXU_B("%[t]", "%[p0]", "%[v0]")          \
+  GAP8_ASM_PV_MINU_B("%[v0]", "%[p0]", "%[v0]")         \
+  GAP8_ASM_PV_SUB_B("%[t]", "%[t]", "%[v0]")            \
+  GAP8_ASM_PV_DOTUP_SC_B("%[acc]", "%[t]", "%[one]")    \
+  HELD_SAD("%[p1]", "%[v1]")
+/* clang-format on */
+
+/* Candidates cand, cand+1, ..., cand+n-1 of next (row stride w) against prev's block held in
+ * p[0..15]. A SAD strictly smaller than *best replaces it; returns the candidate of the last
+ * replacement, or 0 if none. */
+static const uint8_t *search_row_held(const uint32_t p[16], const uint8_t *cand, uint32_t w,
+                                      uint32_t n, uint32_t *best) {
+  const uint8_t *hit = 0; /* cand + 8 * w of the best, as the loop sees it */
+  uint32_t b = *best, acc, v0, v1, t;
+  const uint32_t rest = w - 4, back = 8 * w - 1, one = 1; /* back: to the next candidate */
+  /* clang-format off */
+  __asm__ volatile(
+      GAP8_ASM_HWLOOP_BEGIN
+      "j .Lcand%=\n\t"
+      /* a new best (rare: out of the loop's straight path) */
+      ".Lbetter%=: mv %[b], %[acc]\n\t"
+      "mv %[hit], %[pb]\n\t"
+      "j .Lcand_end%=\n\t"
+      /* loop 1 over the n candidates: 82 instructions after lp.setup; the 80 of the rows, then
+       * bltu and the step back: the last 328 bytes (164 half-words) after lp.setup */
+      ".Lcand%=: " GAP8_ASM_LP_SETUP("1", "%[n]", "164")
+      HELD_FIRST_ROW
+      HELD_ROW(2, 3) HELD_ROW(4, 5) HELD_ROW(6, 7) HELD_ROW(8, 9)
+      HELD_ROW(10, 11) HELD_ROW(12, 13) HELD_ROW(14, 15)
+      ".Lrows_end%=:\n\t"
+      /* bltu acc, b, .Lbetter (rare: taken only on a new best); .insn: always 4 bytes */
+      ".insn b 0x63, 6, %[acc], %[b], .Lbetter%=\n\t"
+      ".Lcand_end%=: sub %[pb], %[pb], %[back]\n\t"
+      GAP8_ASM_CHECK_DISTANCE(".Lcand%=", ".Lrows_end%=", "324")
+      GAP8_ASM_HWLOOP_END
+      : [b] "+r"(b), [hit] "+r"(hit), [pb] "+r"(cand), [acc] "=&r"(acc), [v0] "=&r"(v0),
+        [v1] "=&r"(v1), [t] "=&r"(t)
+      : [p0] "r"(p[0]), [p1] "r"(p[1]), [p2] "r"(p[2]), [p3] "r"(p[3]), [p4] "r"(p[4]),
+        [p5] "r"(p[5]), [p6] "r"(p[6]), [p7] "r"(p[7]), [p8] "r"(p[8]), [p9] "r"(p[9]),
+        [p10] "r"(p[10]), [p11] "r"(p[11]), [p12] "r"(p[12]), [p13] "r"(p[13]),
+        [p14] "r"(p[14]), [p15] "r"(p[15]), [n] "r"(n), [rest] "r"(rest), [back] "r"(back),
+        [one] "r"(one)
+      : "memory");
+  /* clang-format on */
+  *best = b;
+  return hit ? hit - 8 * w : 0;
+}
+
+/* Raster order over dy, dx in -S..S; a strictly smaller SAD replaces (ties keep the first). */
 uint32_t flow_integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, uint32_t y, int *bx,
                              int *by) {
   const int s = (int)c->search_radius;
   const uint32_t w = c->width;
-  uint32_t a[16]; /* constant indices after unrolling: kept in registers */
+  uint32_t p[16];
 #pragma GCC unroll 8
   for (int r = 0; r < 8; ++r) {
-    a[2 * r] = ld4(blk + r * w);
-    a[2 * r + 1] = ld4(blk + r * w + 4);
+    p[2 * r] = ld4(blk + r * w);
+    p[2 * r + 1] = ld4(blk + r * w + 4);
   }
   uint32_t best = 0xFFFFFFFFu;
   for (int dy = -s; dy <= s; ++dy) {
     const uint8_t *row = c->next + (y + dy) * w + x - s;
-    for (int dx = -s; dx <= s; ++dx, ++row) {
-      uint32_t sad = 0;
-      const uint8_t *b = row;
-#pragma GCC unroll 8
-      for (int r = 0; r < 8; ++r, b += w) {
-        sad = sad4_acc(sad, a[2 * r], ld4(b));
-        sad = sad4_acc(sad, a[2 * r + 1], ld4(b + 4));
-      }
-      if (sad < best) {
-        best = sad;
-        *bx = dx;
-        *by = dy;
-      }
+    const uint8_t *hit = search_row_held(p, row, w, (uint32_t)(2 * s + 1), &best);
+    if (hit) {
+      *bx = (int)(hit - row) - s;
+      *by = dy;
     }
   }
   return best;

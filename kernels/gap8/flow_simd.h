@@ -27,6 +27,37 @@ static inline uint32_t sad4_acc(uint32_t acc, uint32_t a, uint32_t b) {
   return gap8_pv_sdotup_sc_b(acc, diff, 1u);
 }
 
+/* sad4_acc as assembler text, for asm blocks: acc += USAD8(a, b) with t and u as scratch (u may
+ * be b itself when b is not needed afterwards); `one` holds 1. Operands are strings ("%[t]"). */
+#define SAD4_ACC_ASM(acc, a, b, t, u, one) \
+  GAP8_ASM_PV_MAXU_B(t, a, b)              \
+  GAP8_ASM_PV_MINU_B(u, a, b)              \
+  GAP8_ASM_PV_SUB_B(t, t, u)               \
+  GAP8_ASM_PV_SDOTUP_SC_B(acc, t, one)
+
+/* The eight half-pixel accumulators of an asm block: operands %[acc0]..%[acc7] written straight
+ * to sub[0..7], and the text that clears them. */
+#define HALF_ACC_OPERANDS(sub)                                                            \
+  [acc0] "=&r"(sub[0]), [acc1] "=&r"(sub[1]), [acc2] "=&r"(sub[2]), [acc3] "=&r"(sub[3]), \
+      [acc4] "=&r"(sub[4]), [acc5] "=&r"(sub[5]), [acc6] "=&r"(sub[6]), [acc7] "=&r"(sub[7])
+#define HALF_ACC_CLEAR_ASM                                               \
+  "li %[acc0], 0\n\tli %[acc1], 0\n\tli %[acc2], 0\n\tli %[acc3], 0\n\t" \
+  "li %[acc4], 0\n\tli %[acc5], 0\n\tli %[acc6], 0\n\tli %[acc7], 0\n\t"
+
+/* The shape of the half-pixel step as asm text (half_original.c, half_planes.h): the eight
+ * accumulators cleared, then hardware loop 0 over the 8 block rows, whose body is `first` then
+ * `second` (the row's two 4-pixel groups). The body starts 12 bytes after lp.starti; `endi` is
+ * its last instruction's offset from lp.endi in half-words (a literal), checked at assembly. */
+/* clang-format off */
+#define HALF_ROWS_ASM(first, second, endi)                                      \
+  GAP8_ASM_HWLOOP_BEGIN HALF_ACC_CLEAR_ASM                                      \
+  ".Lstart%=: " GAP8_ASM_LP_STARTI("0", "6") GAP8_ASM_LP_ENDI("0", endi)        \
+  GAP8_ASM_LP_COUNTI("0", "8") ".Lbody%=: " first second ".Lafter%=:\n\t"       \
+  GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lbody%=", "12")                        \
+  GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lafter%=", "2 * " endi " + 8")         \
+  GAP8_ASM_HWLOOP_END
+/* clang-format on */
+
 /* UHADD8: per byte floor((a + b) / 2). pv.avgu.b is the floor average (never round up). */
 static inline uint32_t avg4(uint32_t a, uint32_t b) { return gap8_pv_avgu_b(a, b); }
 

@@ -10,11 +10,38 @@
 const uint32_t variant_planes = 3;
 
 /* One plane row from `src` rows (y, y+1): word-wide, then the W % 4 tail pixel by pixel, so
- * that no core writes into a row another core owns. */
+ * that no core writes into a row another core owns. The word-wide part is a hardware loop, two
+ * words per iteration (so that no average waits for the load just before it), post-increment
+ * loads and stores. */
 static void average_row(uint8_t *dst, const uint8_t *a, const uint8_t *b, uint32_t w) {
-  uint32_t x = 0;
-  for (; x + 4 <= w; x += 4) st4(dst + x, avg4(ld4(a + x), ld4(b + x)));
-  for (; x < w; ++x) dst[x] = (uint8_t)((a[x] + b[x]) >> 1);
+  const uint32_t pairs = w / 8;
+  if (pairs != 0) {
+    uint32_t a0, a1, b0, b1;
+    /* clang-format off */
+    __asm__ volatile(
+        GAP8_ASM_HWLOOP_BEGIN
+        /* loop 0: body of 8 instructions, the last 32 bytes (16 half-words) after lp.setup */
+        ".Lstart%=: " GAP8_ASM_LP_SETUP("0", "%[n]", "16")
+        /* one line per step: the two rows' word k, their word k+1, both averages, stores */
+        GAP8_ASM_P_LW_POST_IMM("%[a0]", "4", "%[pa]") GAP8_ASM_P_LW_POST_IMM("%[b0]", "4", "%[pb]")
+        GAP8_ASM_P_LW_POST_IMM("%[a1]", "4", "%[pa]") GAP8_ASM_P_LW_POST_IMM("%[b1]", "4", "%[pb]")
+        GAP8_ASM_PV_AVGU_B("%[a0]", "%[a0]", "%[b0]") GAP8_ASM_PV_AVGU_B("%[a1]", "%[a1]", "%[b1]")
+        GAP8_ASM_P_SW_POST_IMM("%[a0]", "4", "%[pd]")
+        ".Lend%=: " GAP8_ASM_P_SW_POST_IMM("%[a1]", "4", "%[pd]")
+        GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lend%=", "32")
+        GAP8_ASM_HWLOOP_END
+        : [pa] "+r"(a), [pb] "+r"(b), [pd] "+r"(dst), [a0] "=&r"(a0), [a1] "=&r"(a1),
+          [b0] "=&r"(b0), [b1] "=&r"(b1)
+        : [n] "r"(pairs)
+        : "memory");
+    /* clang-format on */
+  }
+  uint32_t x = 8 * pairs;
+  if (x + 4 <= w) {
+    st4(dst, avg4(ld4(a), ld4(b)));
+    dst += 4, a += 4, b += 4, x += 4;
+  }
+  for (uint32_t i = 0; x + i < w; ++i) dst[i] = (uint8_t)((a[i] + b[i]) >> 1);
 }
 
 void variant_prepare(const flow_ctx *c, uint32_t core) {
