@@ -57,24 +57,24 @@ RunResult Cluster::Run() {
 }
 
 void Cluster::Advance() {
-  // The earliest issue cycle, every core issuing then (ready), and the next issue cycle after it
-  // (second_time; equal to first_time when two cores share it). Min and compare passes rather
-  // than one branchy pass: the cores' times are in no predictable order.
-  std::array<uint64_t, GAP8_MAX_CORES> times;
-  uint64_t first_time = kNever;
-  for (int i = 0; i < num_cores(); ++i) {
-    times[i] = cores_[i]->asleep ? kNever : cores_[i]->time;
-    first_time = std::min(first_time, times[i]);
-  }
+  // One pass over the cores: the earliest issue cycle, every core issuing then (ready), and the
+  // next issue cycle after it (second_time; equal to first_time when two cores share it).
+  uint64_t first_time = kNever, second_time = kNever;
   uint32_t ready = 0;  // bit per core
-  uint64_t later_time = kNever;
   for (int i = 0; i < num_cores(); ++i) {
-    ready |= static_cast<uint32_t>(times[i] == first_time) << i;
-    later_time = std::min(later_time, times[i] == first_time ? kNever : times[i]);
+    const Core& c = *cores_[i];
+    if (c.asleep) continue;
+    if (c.time < first_time) {
+      second_time = first_time;
+      first_time = c.time;
+      ready = 1u << i;
+    } else if (c.time == first_time) {
+      second_time = first_time;
+      ready |= 1u << i;
+    } else if (c.time < second_time) {
+      second_time = c.time;
+    }
   }
-  if (first_time == kNever) ready = 0;  // every core asleep
-  const bool shared = (ready & (ready - 1)) != 0;  // two or more bits
-  const uint64_t second_time = shared ? first_time : later_time;
   // A transfer completing at cycle t is visible to instructions issuing at t.
   if (!dma_.Idle() && dma_.NextCompletion() <= first_time) return CompleteDma();
   if (!ready) ReportDeadlock();
@@ -103,11 +103,11 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
 }
 
 // The cores in `ready` (two or more, all at the same cycle) issue, in id order: hazards first,
-// then the TCDM bank arbiter, then execution. Written with few data-dependent branches: with
-// eight cores interleaved the host's branch predictor guesses poorly.
+// then the TCDM bank arbiter, then execution. The bank bookkeeping has few data-dependent
+// branches: with eight cores interleaved the host's branch predictor guesses poorly.
 void Cluster::IssueCycle(uint32_t ready) {
   std::array<const Decoded*, GAP8_MAX_CORES> insn;  // valid for the cores in `issuing`
-  CoreBanks bank_bit;  // per issuing core: bit of its TCDM bank, 0 when it makes no TCDM access
+  BankRequests requests{};  // per bank: bit per requesting core
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
   for (uint32_t m = ready; m != 0; m &= m - 1) {
     const int id = std::countr_zero(m);
@@ -119,19 +119,17 @@ void Cluster::IssueCycle(uint32_t ready) {
     }
     insn[id] = &d;
     issuing |= 1u << id;
-    const uint32_t bit = config_.contention ? c.TcdmBankBit(d) : 0u;
-    bank_bit[id] = bit;
-    shared_banks |= banks & bit;
-    banks |= bit;
+    const uint32_t bank_bit = config_.contention ? c.TcdmBankBit(d) : 0u;
+    requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
+    shared_banks |= banks & bank_bit;
+    banks |= bank_bit;
   }
-  if (shared_banks != 0) issuing &= ~ArbitrateSharedBanks(shared_banks, issuing, bank_bit);
-  // A bank with one requester: it wins, and the round-robin pointer moves past it. A core
-  // without such a bank writes the spare slot kNoBank instead of branching.
-  for (uint32_t m = issuing; m != 0; m &= m - 1) {
-    const int id = std::countr_zero(m);
-    const int bank = std::countr_zero((bank_bit[id] & ~shared_banks) | (1u << kNoBank));
-    bank_priority_[bank] = NextCore(id);
+  // A bank with one requester: it wins, and the round-robin pointer moves past it.
+  for (uint32_t b = banks & ~shared_banks; b != 0; b &= b - 1) {
+    const int bank = std::countr_zero(b);
+    bank_priority_[bank] = NextCore(std::countr_zero(requests[bank]));
   }
+  if (shared_banks != 0) issuing &= ~ArbitrateSharedBanks(shared_banks, requests);
   for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
     Core& c = *cores_[std::countr_zero(m)];
     c.time += c.Execute(*insn[c.id()]);
@@ -140,16 +138,11 @@ void Cluster::IssueCycle(uint32_t ready) {
 
 // Banks requested by two or more cores: round robin, the first requester at or after the bank's
 // priority pointer wins; each loser stalls one cycle and retries. Returns the losers.
-uint32_t Cluster::ArbitrateSharedBanks(uint32_t shared_banks, uint32_t issuing,
-                                       const CoreBanks& bank_bit) {
+uint32_t Cluster::ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests) {
   uint32_t all_losers = 0;
   for (; shared_banks != 0; shared_banks &= shared_banks - 1) {
     const int b = std::countr_zero(shared_banks);
-    uint32_t mask = 0;  // bit per core requesting bank b
-    for (uint32_t m = issuing; m != 0; m &= m - 1) {
-      const int id = std::countr_zero(m);
-      if (bank_bit[id] == (1u << b)) mask |= 1u << id;
-    }
+    const uint32_t mask = requests[b];
     const uint32_t from_pointer = mask & ~((1u << bank_priority_[b]) - 1u);
     const int winner = std::countr_zero(from_pointer ? from_pointer : mask);
     bank_priority_[b] = NextCore(winner);

@@ -45,7 +45,6 @@ uint32_t Core::Execute(const Decoded& d) {
   SetHazard(Hazard::kAlu, d.rd);
   const uint32_t a = regs_[d.rs1], b = regs_[d.rs2];
   const uint32_t imm = static_cast<uint32_t>(d.imm);
-  const uint32_t simd_b = SimdOperandB(d, b);  // operand b of the pv.* instructions
   uint32_t result;
   switch (d.op) {
     case Op::kLui:
@@ -180,34 +179,34 @@ uint32_t Core::Execute(const Decoded& d) {
       result = xpulp::Maxu(a, b);
       break;
     case Op::kPvAddB:
-      result = xpulp::AddB(a, simd_b);
+      result = xpulp::AddB(a, SimdOperandB(d, b));
       break;
     case Op::kPvSubB:
-      result = xpulp::SubB(a, simd_b);
+      result = xpulp::SubB(a, SimdOperandB(d, b));
       break;
     case Op::kPvAvguB:
-      result = xpulp::AvguB(a, simd_b);
+      result = xpulp::AvguB(a, SimdOperandB(d, b));
       break;
     case Op::kPvMinuB:
-      result = xpulp::MinuB(a, simd_b);
+      result = xpulp::MinuB(a, SimdOperandB(d, b));
       break;
     case Op::kPvMaxuB:
-      result = xpulp::MaxuB(a, simd_b);
+      result = xpulp::MaxuB(a, SimdOperandB(d, b));
       break;
     case Op::kPvAbsB:
       result = xpulp::AbsB(a);
       break;
     case Op::kPvDotupB:
-      result = xpulp::DotupB(a, simd_b);
+      result = xpulp::DotupB(a, SimdOperandB(d, b));
       break;
     case Op::kPvDotuspB:
-      result = xpulp::DotuspB(a, simd_b);
+      result = xpulp::DotuspB(a, SimdOperandB(d, b));
       break;
     case Op::kPvSdotupB:
-      result = xpulp::SdotupB(regs_[d.rd], a, simd_b);
+      result = xpulp::SdotupB(regs_[d.rd], a, SimdOperandB(d, b));
       break;
     case Op::kPvSdotuspB:
-      result = xpulp::SdotuspB(regs_[d.rd], a, simd_b);
+      result = xpulp::SdotuspB(regs_[d.rd], a, SimdOperandB(d, b));
       break;
     default:  // kIllegal, kUndecoded
       Raise(FaultKind::kIllegalInstruction, "illegal instruction");

@@ -10,11 +10,10 @@ void Core::RaiseFetchFault() const {
 }
 
 // The next instruction stalls on the pending result: count the stall and consume the hazard.
-bool Core::ConsumeHazardStall() {
+void Core::ConsumeHazardStall() {
   if (hazard_ == Hazard::kLoad) ++events_[GAP8_EVT_LD_STALL];
   if (hazard_ == Hazard::kAlu) ++events_[GAP8_EVT_JR_STALL];
   ClearHazard();
-  return true;
 }
 
 void Core::Raise(FaultKind kind, const std::string& what) const {

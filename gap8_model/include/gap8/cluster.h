@@ -63,11 +63,13 @@ class Cluster {
 
   void Advance();
   void RunSolo(Core& core, uint64_t limit);
-  using CoreBanks = std::array<uint32_t, GAP8_MAX_CORES>;
-  static constexpr int kNoBank = GAP8_L1_BANKS;  // spare bank_priority_ slot, never read
+  // Per TCDM bank, bit per core requesting it; the spare slot kNoBank collects the cores making
+  // no TCDM access (so recording a request needs no branch) and is never read.
+  static constexpr int kNoBank = GAP8_L1_BANKS;
+  using BankRequests = std::array<uint32_t, GAP8_L1_BANKS + 1>;
 
   void IssueCycle(uint32_t ready);
-  uint32_t ArbitrateSharedBanks(uint32_t shared_banks, uint32_t issuing, const CoreBanks& bank_bit);
+  uint32_t ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests);
   // Round robin: the core after `id` (the pointer a bank's winner leaves behind).
   int NextCore(int id) const { return id + 1 == num_cores() ? 0 : id + 1; }
   void CompleteDma();
@@ -89,8 +91,7 @@ class Cluster {
   uint32_t team_size_ = 1;
   uint32_t fork_arg_ = 0;
   uint32_t barrier_arrived_ = 0;                    // bit per core
-  std::array<int, GAP8_L1_BANKS + 1> bank_priority_{};  // round-robin: core served first next
-                                                        // time (plus the spare slot kNoBank)
+  std::array<int, GAP8_L1_BANKS> bank_priority_{};  // round-robin: core served first next time
   bool schedule_changed_ = false;  // a wake-up or DMA push: the solo loop must yield
   bool exited_ = false;
   int exit_code_ = 0;

@@ -40,7 +40,8 @@ class Core {
     // One test decides: a load or mul result read by d, or an ALU result read by a jalr.
     const uint32_t jalr_reads = d.op == Op::kJalr ? d.src_mask : 0u;
     if (((d.src_mask & data_hazard_mask_) | (jalr_reads & jump_hazard_mask_)) == 0) return false;
-    return ConsumeHazardStall();
+    ConsumeHazardStall();
+    return true;
   }
   // Bit b set when d accesses TCDM bank b this cycle; 0 when d makes no TCDM access.
   // Branch-free: the cluster calls it for every core in every shared cycle.
@@ -98,7 +99,7 @@ class Core {
   [[noreturn]] void RaiseFetchFault() const;
   [[noreturn]] void RaiseUnmapped(const char* access, uint32_t bytes, const char* where,
                                   uint32_t addr) const;
-  bool ConsumeHazardStall();
+  void ConsumeHazardStall();
   uint32_t Load(const Decoded& d, uint32_t addr, uint32_t* cost);
   void Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost);
   uint32_t ExecuteMemory(const Decoded& d);
