@@ -57,30 +57,37 @@ RunResult Cluster::Run() {
 }
 
 void Cluster::Advance() {
+  // One pass over the cores: the earliest issue cycle, every core issuing then (ready), and the
+  // next issue cycle after it (second_time; equal to first_time when two cores share it).
   uint64_t first_time = kNever, second_time = kNever;
-  Core* first = nullptr;
-  for (auto& c : cores_) {
-    if (c->asleep) continue;
-    if (c->time < first_time) {
+  uint32_t ready = 0;  // bit per core
+  for (int i = 0; i < num_cores(); ++i) {
+    const Core& c = *cores_[i];
+    if (c.asleep) continue;
+    if (c.time < first_time) {
       second_time = first_time;
-      first_time = c->time;
-      first = c.get();
-    } else if (c->time < second_time) {
-      second_time = c->time;
+      first_time = c.time;
+      ready = 1u << i;
+    } else if (c.time == first_time) {
+      second_time = first_time;
+      ready |= 1u << i;
+    } else if (c.time < second_time) {
+      second_time = c.time;
     }
   }
   // A transfer completing at cycle t is visible to instructions issuing at t.
   if (!dma_.Idle() && dma_.NextCompletion() <= first_time) return CompleteDma();
-  if (!first) ReportDeadlock();
+  if (!ready) ReportDeadlock();
+  Core& first = *cores_[std::countr_zero(ready)];  // the lowest id among the earliest
   if (first_time > config_.max_cycles) {
-    const Decoded& d = first->Fetch();
-    throw Fault{FaultKind::kCycleBudget, first->id(), first->pc(), d.raw,
+    const Decoded& d = first.Fetch();
+    throw Fault{FaultKind::kCycleBudget, first.id(), first.pc(), d.raw,
                 "cycle budget of " + std::to_string(config_.max_cycles) + " cycles exceeded"};
   }
-  if (second_time == first_time) return IssueCycle(first_time);
+  if (second_time == first_time) return IssueCycle(ready);
   uint64_t limit = std::min(second_time, config_.max_cycles + 1);
   if (!dma_.Idle()) limit = std::min(limit, dma_.NextCompletion());
-  RunSolo(*first, limit);
+  RunSolo(first, limit);
 }
 
 void Cluster::RunSolo(Core& core, uint64_t limit) {
@@ -95,41 +102,59 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
   }
 }
 
-void Cluster::IssueCycle(uint64_t cycle) {
-  std::array<const Decoded*, GAP8_MAX_CORES> insn{};
-  std::array<uint32_t, GAP8_L1_BANKS> requests{};  // per bank: bit per requesting core
-  uint32_t banks = 0;                              // bit per bank with a request
-  for (auto& c : cores_) {
-    if (c->asleep || c->time != cycle) continue;
-    const Decoded& d = c->Fetch();
-    if (c->TakeHazardStall(d)) {
-      c->time += 1;
+// The cores in `ready` (two or more, all at the same cycle) issue, in id order: hazards first,
+// then the TCDM bank arbiter, then execution. The bank bookkeeping has few data-dependent
+// branches: with eight cores interleaved the host's branch predictor guesses poorly.
+void Cluster::IssueCycle(uint32_t ready) {
+  std::array<const Decoded*, GAP8_MAX_CORES> insn;  // valid for the cores in `issuing`
+  BankRequests requests{};  // per bank: bit per requesting core
+  uint32_t issuing = 0, banks = 0, shared_banks = 0;
+  for (uint32_t m = ready; m != 0; m &= m - 1) {
+    const int id = std::countr_zero(m);
+    Core& c = *cores_[id];
+    const Decoded& d = c.Fetch();
+    if (c.TakeHazardStall(d)) {
+      c.time += 1;
       continue;
     }
-    insn[c->id()] = &d;
-    const int bank = config_.contention ? c->TcdmBank(d) : -1;
-    if (bank >= 0) {
-      requests[bank] |= 1u << c->id();
-      banks |= 1u << bank;
-    }
+    insn[id] = &d;
+    issuing |= 1u << id;
+    const uint32_t bank_bit = config_.contention ? c.TcdmBankBit(d) : 0u;
+    requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
+    shared_banks |= banks & bank_bit;
+    banks |= bank_bit;
   }
-  for (; banks != 0; banks &= banks - 1) {
-    const int b = std::countr_zero(banks);
-    // Round robin: the first requester at or after the bank's priority pointer wins.
+  // A bank with one requester: it wins, and the round-robin pointer moves past it.
+  for (uint32_t b = banks & ~shared_banks; b != 0; b &= b - 1) {
+    const int bank = std::countr_zero(b);
+    bank_priority_[bank] = NextCore(std::countr_zero(requests[bank]));
+  }
+  if (shared_banks != 0) issuing &= ~ArbitrateSharedBanks(shared_banks, requests);
+  for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
+    Core& c = *cores_[std::countr_zero(m)];
+    c.time += c.Execute(*insn[c.id()]);
+  }
+}
+
+// Banks requested by two or more cores: round robin, the first requester at or after the bank's
+// priority pointer wins; each loser stalls one cycle and retries. Returns the losers.
+uint32_t Cluster::ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests) {
+  uint32_t all_losers = 0;
+  for (; shared_banks != 0; shared_banks &= shared_banks - 1) {
+    const int b = std::countr_zero(shared_banks);
     const uint32_t mask = requests[b];
     const uint32_t from_pointer = mask & ~((1u << bank_priority_[b]) - 1u);
     const int winner = std::countr_zero(from_pointer ? from_pointer : mask);
-    bank_priority_[b] = (winner + 1) % num_cores();
-    for (uint32_t losers = mask & ~(1u << winner); losers != 0; losers &= losers - 1) {
-      Core& loser = *cores_[std::countr_zero(losers)];
-      insn[loser.id()] = nullptr;  // retries next cycle
-      loser.time += 1;
+    bank_priority_[b] = NextCore(winner);
+    const uint32_t losers = mask & ~(1u << winner);
+    for (uint32_t l = losers; l != 0; l &= l - 1) {
+      Core& loser = *cores_[std::countr_zero(l)];
+      loser.time += 1;  // retries next cycle
       ++loser.event(GAP8_EVT_TCDM_CONT);
     }
+    all_losers |= losers;
   }
-  for (int id = 0; id < num_cores() && !exited_; ++id) {
-    if (insn[id]) cores_[id]->time += cores_[id]->Execute(*insn[id]);
-  }
+  return all_losers;
 }
 
 void Cluster::CompleteDma() {

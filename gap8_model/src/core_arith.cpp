@@ -1,7 +1,6 @@
-// M extension and Xpulp arithmetic, with their costs.
+// M extension arithmetic, with its costs.
 #include "gap8/core.h"
 #include "gap8/timing.h"
-#include "gap8/xpulp.h"
 
 namespace gap8 {
 namespace {
@@ -31,7 +30,7 @@ uint32_t Core::ExecuteMulDiv(const Decoded& d) {
     case Op::kMul:
       result = a * b;
       cost = timing::kAlu;
-      hazard_ = Hazard::kMul;
+      SetHazard(Hazard::kMul, d.rd);
       break;
     case Op::kMulh:
       result = static_cast<uint32_t>(static_cast<uint64_t>(sa * sb) >> 32);
@@ -54,65 +53,6 @@ uint32_t Core::ExecuteMulDiv(const Decoded& d) {
   regs_[0] = 0;
   pc_ = NextSequentialPc(pc_ + d.size);
   return cost;
-}
-
-uint32_t Core::ExecuteXpulp(const Decoded& d) {
-  const uint32_t a = regs_[d.rs1];
-  const uint32_t b = d.scalar ? xpulp::SplatByte(regs_[d.rs2]) : regs_[d.rs2];
-  uint32_t result;
-  switch (d.op) {
-    case Op::kPAbs:
-      result = xpulp::Abs(a);
-      break;
-    case Op::kPMin:
-      result = xpulp::Min(a, b);
-      break;
-    case Op::kPMinu:
-      result = xpulp::Minu(a, b);
-      break;
-    case Op::kPMax:
-      result = xpulp::Max(a, b);
-      break;
-    case Op::kPMaxu:
-      result = xpulp::Maxu(a, b);
-      break;
-    case Op::kPvAddB:
-      result = xpulp::AddB(a, b);
-      break;
-    case Op::kPvSubB:
-      result = xpulp::SubB(a, b);
-      break;
-    case Op::kPvAvguB:
-      result = xpulp::AvguB(a, b);
-      break;
-    case Op::kPvMinuB:
-      result = xpulp::MinuB(a, b);
-      break;
-    case Op::kPvMaxuB:
-      result = xpulp::MaxuB(a, b);
-      break;
-    case Op::kPvAbsB:
-      result = xpulp::AbsB(a);
-      break;
-    case Op::kPvDotupB:
-      result = xpulp::DotupB(a, b);
-      break;
-    case Op::kPvDotuspB:
-      result = xpulp::DotuspB(a, b);
-      break;
-    case Op::kPvSdotupB:
-      result = xpulp::SdotupB(regs_[d.rd], a, b);
-      break;
-    case Op::kPvSdotuspB:
-      result = xpulp::SdotuspB(regs_[d.rd], a, b);
-      break;
-    default:
-      Raise(FaultKind::kIllegalInstruction, "illegal instruction");
-  }
-  regs_[d.rd] = result;
-  regs_[0] = 0;
-  pc_ = NextSequentialPc(pc_ + d.size);
-  return timing::kAlu;
 }
 
 }  // namespace gap8

@@ -1,9 +1,19 @@
-// The interpreter's main switch: RV32I and the control flow. Memory, M-extension and Xpulp
-// instructions live in their own files.
+// The interpreter's main switch: RV32I, the control flow and the Xpulp arithmetic. Memory,
+// M-extension and hardware-loop set-up live in their own functions.
 #include "gap8/core.h"
 #include "gap8/timing.h"
+#include "gap8/xpulp.h"
 
 namespace gap8 {
+namespace {
+
+// pv.*.sc.b: operand b is rs2's low byte in every lane.
+uint32_t SimdOperandB(const Decoded& d, uint32_t rs2_value) {
+  const uint32_t scalar_mask = 0u - (d.scalar != 0);  // a select, not a branch
+  return (xpulp::SplatByte(rs2_value) & scalar_mask) | (rs2_value & ~scalar_mask);
+}
+
+}  // namespace
 
 uint32_t Core::ExecuteBranch(const Decoded& d, bool taken) {
   ++events_[GAP8_EVT_BRANCH];
@@ -32,8 +42,7 @@ uint32_t Core::Execute(const Decoded& d) {
   current_ = &d;
   ++events_[GAP8_EVT_INSTR];
   events_[GAP8_EVT_RVC] += (d.size == 2);
-  hazard_ = Hazard::kAlu;
-  hazard_rd_ = d.rd;
+  SetHazard(Hazard::kAlu, d.rd);
   const uint32_t a = regs_[d.rs1], b = regs_[d.rs2];
   const uint32_t imm = static_cast<uint32_t>(d.imm);
   uint32_t result;
@@ -153,11 +162,54 @@ uint32_t Core::Execute(const Decoded& d) {
     case Op::kLpSetup:
     case Op::kLpSetupi:
       return ExecuteHwLoopSetup(d);
-    case Op::kIllegal:
-    case Op::kUndecoded:
+    // Xpulp arithmetic sits in this switch too: one dispatch per instruction, not two.
+    case Op::kPAbs:
+      result = xpulp::Abs(a);
+      break;
+    case Op::kPMin:
+      result = xpulp::Min(a, b);
+      break;
+    case Op::kPMinu:
+      result = xpulp::Minu(a, b);
+      break;
+    case Op::kPMax:
+      result = xpulp::Max(a, b);
+      break;
+    case Op::kPMaxu:
+      result = xpulp::Maxu(a, b);
+      break;
+    case Op::kPvAddB:
+      result = xpulp::AddB(a, SimdOperandB(d, b));
+      break;
+    case Op::kPvSubB:
+      result = xpulp::SubB(a, SimdOperandB(d, b));
+      break;
+    case Op::kPvAvguB:
+      result = xpulp::AvguB(a, SimdOperandB(d, b));
+      break;
+    case Op::kPvMinuB:
+      result = xpulp::MinuB(a, SimdOperandB(d, b));
+      break;
+    case Op::kPvMaxuB:
+      result = xpulp::MaxuB(a, SimdOperandB(d, b));
+      break;
+    case Op::kPvAbsB:
+      result = xpulp::AbsB(a);
+      break;
+    case Op::kPvDotupB:
+      result = xpulp::DotupB(a, SimdOperandB(d, b));
+      break;
+    case Op::kPvDotuspB:
+      result = xpulp::DotuspB(a, SimdOperandB(d, b));
+      break;
+    case Op::kPvSdotupB:
+      result = xpulp::SdotupB(regs_[d.rd], a, SimdOperandB(d, b));
+      break;
+    case Op::kPvSdotuspB:
+      result = xpulp::SdotuspB(regs_[d.rd], a, SimdOperandB(d, b));
+      break;
+    default:  // kIllegal, kUndecoded
       Raise(FaultKind::kIllegalInstruction, "illegal instruction");
-    default:
-      return ExecuteXpulp(d);
   }
   regs_[d.rd] = result;
   regs_[0] = 0;

@@ -48,29 +48,15 @@ uint32_t Extend(uint32_t raw, uint8_t width) {
   }
 }
 
-bool IsStore(Op op) {
-  return op == Op::kStore || op == Op::kStorePostImm || op == Op::kStoreRegReg ||
-         op == Op::kStorePostReg;
-}
-
-// Address used by the access; post-increment forms use rs1 unmodified.
-uint32_t EffectiveAddress(const Decoded& d, const std::array<uint32_t, 32>& regs) {
-  switch (d.op) {
-    case Op::kLoad:
-    case Op::kStore:
-      return regs[d.rs1] + static_cast<uint32_t>(d.imm);
-    case Op::kLoadRegReg:
-      return regs[d.rs1] + regs[d.rs2];
-    case Op::kStoreRegReg:
-      return regs[d.rs1] + regs[d.rd];
-    default:
-      return regs[d.rs1];
-  }
-}
-
 }  // namespace
 
-uint32_t Core::Load(const Decoded& d, uint32_t addr, uint32_t* cost) {
+// Out of line and cold, so that Load and Store stay small enough to inline into ExecuteMemory.
+[[gnu::cold, gnu::noinline]] void Core::RaiseUnmapped(const char* access, uint32_t bytes,
+                                                      const char* where, uint32_t addr) const {
+  Raise(FaultKind::kMemory, access + std::to_string(bytes) + where + Hex(addr));
+}
+
+inline uint32_t Core::Load(const Decoded& d, uint32_t addr, uint32_t* cost) {
   const uint32_t bytes = AccessBytes(d.width);
   const bool misaligned = (addr & (bytes - 1)) != 0;
   events_[GAP8_EVT_LD] += misaligned ? 2 : 1;
@@ -87,13 +73,12 @@ uint32_t Core::Load(const Decoded& d, uint32_t addr, uint32_t* cost) {
     *cost = timing::kPeriphAccess;
     raw = cluster_->PeripheralRead(*this, addr);
   } else {
-    Raise(FaultKind::kMemory,
-          "load of " + std::to_string(bytes) + " bytes from unmapped address " + Hex(addr));
+    RaiseUnmapped("load of ", bytes, " bytes from unmapped address ", addr);
   }
   return Extend(raw, d.width);
 }
 
-void Core::Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost) {
+inline void Core::Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost) {
   const uint32_t bytes = AccessBytes(d.width);
   const bool misaligned = (addr & (bytes - 1)) != 0;
   events_[GAP8_EVT_ST] += misaligned ? 2 : 1;
@@ -111,18 +96,17 @@ void Core::Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost
     *cost = timing::kPeriphAccess;
     cluster_->PeripheralWrite(*this, addr, value);
   } else {
-    Raise(FaultKind::kMemory,
-          "store of " + std::to_string(bytes) + " bytes to unmapped address " + Hex(addr));
+    RaiseUnmapped("store of ", bytes, " bytes to unmapped address ", addr);
   }
 }
 
 uint32_t Core::ExecuteMemory(const Decoded& d) {
-  const uint32_t addr = EffectiveAddress(d, regs_);
+  const uint32_t addr = AccessAddress(d);
   uint32_t cost = 0;
   const uint32_t next = pc_ + d.size;
-  if (IsStore(d.op)) {
+  if (d.access & kAccessStore) {
     Store(d, addr, regs_[d.rs2], &cost);
-    hazard_ = Hazard::kNone;
+    ClearHazard();
     if (d.op == Op::kStorePostImm) regs_[d.rs1] = addr + static_cast<uint32_t>(d.imm);
     if (d.op == Op::kStorePostReg) regs_[d.rs1] = addr + regs_[d.rd];
   } else {
@@ -130,32 +114,13 @@ uint32_t Core::ExecuteMemory(const Decoded& d) {
     if (d.op == Op::kLoadPostImm) regs_[d.rs1] = addr + static_cast<uint32_t>(d.imm);
     if (d.op == Op::kLoadPostReg) regs_[d.rs1] = addr + regs_[d.rs2];
     regs_[d.rd] = value;  // written last: with rd == rs1 the loaded value wins
-    hazard_ = Hazard::kLoad;
-    if (asleep) hazard_ = Hazard::kNone;  // a blocking peripheral read delivers at wake-up
+    SetHazard(Hazard::kLoad, d.rd);
+    if (asleep) ClearHazard();  // a blocking peripheral read delivers at wake-up
     if (asleep) wake_rd = d.rd;
   }
   regs_[0] = 0;
   pc_ = NextSequentialPc(next);
   return cost;
-}
-
-int Core::TcdmBank(const Decoded& d) const {
-  switch (d.op) {
-    case Op::kLoad:
-    case Op::kStore:
-    case Op::kLoadPostImm:
-    case Op::kLoadRegReg:
-    case Op::kLoadPostReg:
-    case Op::kStorePostImm:
-    case Op::kStoreRegReg:
-    case Op::kStorePostReg: {
-      const uint32_t addr = EffectiveAddress(d, regs_);
-      if (addr - GAP8_L1_BASE >= GAP8_L1_SIZE) return -1;
-      return static_cast<int>((addr >> 2) & (GAP8_L1_BANKS - 1));
-    }
-    default:
-      return -1;
-  }
 }
 
 }  // namespace gap8

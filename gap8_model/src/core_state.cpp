@@ -9,20 +9,11 @@ void Core::RaiseFetchFault() const {
               "instruction fetch from unmapped address " + Hex(pc_)};
 }
 
-bool Core::TakeHazardStallSlow(const Decoded& d) {
-  const bool reads = (d.src_mask >> hazard_rd_) & 1u;
-  bool stall = false;
-  if (hazard_ == Hazard::kLoad && reads) {
-    ++events_[GAP8_EVT_LD_STALL];
-    stall = true;
-  } else if (hazard_ == Hazard::kMul && reads) {
-    stall = true;
-  } else if (hazard_ == Hazard::kAlu && d.op == Op::kJalr && d.rs1 == hazard_rd_) {
-    ++events_[GAP8_EVT_JR_STALL];
-    stall = true;
-  }
-  if (stall) hazard_ = Hazard::kNone;
-  return stall;
+// The next instruction stalls on the pending result: count the stall and consume the hazard.
+void Core::ConsumeHazardStall() {
+  if (hazard_ == Hazard::kLoad) ++events_[GAP8_EVT_LD_STALL];
+  if (hazard_ == Hazard::kAlu) ++events_[GAP8_EVT_JR_STALL];
+  ClearHazard();
 }
 
 void Core::Raise(FaultKind kind, const std::string& what) const {

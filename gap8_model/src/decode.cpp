@@ -175,7 +175,9 @@ Decoded DecodeSystem(uint32_t w) {
 Decoded DecodeXpulpSimd(uint32_t w);
 Decoded DecodeHwLoop(uint32_t w);
 
-Decoded Decode(uint32_t bits) {
+namespace {
+
+Decoded DecodeFields(uint32_t bits) {
   if (IsCompressed(bits & 0xFFFFu)) return DecodeCompressed(bits & 0xFFFFu);
   const uint32_t w = bits;
   switch (Bits(w, 6, 0)) {
@@ -218,6 +220,46 @@ Decoded Decode(uint32_t bits) {
     default:
       return Illegal(w);
   }
+}
+
+
+// The access facts of a load or store (see Decoded::access): what TcdmBankBit and ExecuteMemory
+// need, without a switch on op per instruction.
+void AddAccessFacts(Decoded& d) {
+  switch (d.op) {
+    case Op::kLoad:
+      d.access = kAccessLoad | kAccessImmOffset;
+      break;
+    case Op::kStore:
+      d.access = kAccessStore | kAccessImmOffset;
+      break;
+    case Op::kLoadRegReg:
+      d.access = kAccessLoad;
+      d.offset_reg = d.rs2;
+      break;
+    case Op::kStoreRegReg:
+      d.access = kAccessStore;
+      d.offset_reg = d.rd;  // rs3
+      break;
+    case Op::kLoadPostImm:
+    case Op::kLoadPostReg:
+      d.access = kAccessLoad;  // post-increment: the address is rs1 unmodified
+      break;
+    case Op::kStorePostImm:
+    case Op::kStorePostReg:
+      d.access = kAccessStore;
+      break;
+    default:
+      break;
+  }
+}
+
+}  // namespace
+
+Decoded Decode(uint32_t bits) {
+  Decoded d = DecodeFields(bits);
+  AddAccessFacts(d);
+  return d;
 }
 
 }  // namespace gap8

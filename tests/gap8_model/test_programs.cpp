@@ -1,6 +1,7 @@
 // Compiled C programs on 1..8 simulated cores: fork, barrier, DMA, counters, Xpulp wrappers,
 // hardware loops, TCDM contention and determinism.
 #include <catch2/catch.hpp>
+#include <vector>
 
 #include "program_runner.h"
 
@@ -76,6 +77,38 @@ TEST_CASE("TCDM contention: one bank shared by 8 cores stalls, own banks do not"
   CHECK(SumEvent(*own.cluster, GAP8_EVT_TCDM_CONT) < same_cont / 10);
   CHECK(SumEvent(*off.cluster, GAP8_EVT_TCDM_CONT) == 0);
   CHECK(same.result.cycles > off.result.cycles);
+}
+
+// Exact values recorded with the model before its host-speed work (docs/gap8-model.md, "Host
+// speed"): they pin the bank arbiter, its round-robin pointers and the scheduler, including
+// cycles in which some cores collide on a bank while others access their own.
+TEST_CASE("TCDM arbitration: exact per-core stalls and cycles of the contention program") {
+  struct Expected {
+    uint32_t mode;
+    int cores;
+    uint64_t cycles;
+    std::vector<uint64_t> tcdm_cont;
+  };
+  const Expected cases[] = {
+      {0, 8, 1711, {401, 398, 400, 402, 404, 406, 408, 410}},
+      {1, 8, 1312, {0, 0, 1, 2, 3, 4, 5, 6}},
+      {2, 8, 1112, {389, 0, 399, 2, 402, 4, 405, 6}},
+      {2, 5, 959, {237, 0, 247, 2, 250}},
+  };
+  for (const Expected& e : cases) {
+    RunOptions options = OnCores(e.cores);
+    options.before_run = [&e](gap8::Cluster& cluster, const gap8::ElfImage& image) {
+      cluster.memory().Write(image.symbols.at("contention_mode"), &e.mode, 4);
+    };
+    ProgramRun run = RunProgram("contention", options);
+    INFO("mode " << e.mode << ", " << e.cores << " cores\n" << run.Describe());
+    REQUIRE(run.ok());
+    std::vector<uint64_t> tcdm_cont;
+    for (int i = 0; i < e.cores; ++i)
+      tcdm_cont.push_back(run.cluster->core(i).Totals()[GAP8_EVT_TCDM_CONT]);
+    CHECK(run.result.cycles == e.cycles);
+    CHECK(tcdm_cont == e.tcdm_cont);
+  }
 }
 
 TEST_CASE("a run is deterministic: same program, same cycles and counters") {

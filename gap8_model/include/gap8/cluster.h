@@ -63,7 +63,15 @@ class Cluster {
 
   void Advance();
   void RunSolo(Core& core, uint64_t limit);
-  void IssueCycle(uint64_t cycle);
+  // Per TCDM bank, bit per core requesting it; the spare slot kNoBank collects the cores making
+  // no TCDM access (so recording a request needs no branch) and is never read.
+  static constexpr int kNoBank = GAP8_L1_BANKS;
+  using BankRequests = std::array<uint32_t, GAP8_L1_BANKS + 1>;
+
+  void IssueCycle(uint32_t ready);
+  uint32_t ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests);
+  // Round robin: the core after `id` (the pointer a bank's winner leaves behind).
+  int NextCore(int id) const { return id + 1 == num_cores() ? 0 : id + 1; }
   void CompleteDma();
   [[noreturn]] void ReportDeadlock();
   void SleepOn(Core& core, Wait reason);

@@ -37,11 +37,20 @@ class Core {
   // Before issuing d: true (and the hazard consumed, its counter bumped) when d must wait a
   // cycle for the previous instruction's result (load-use, mul-use, jump-register).
   bool TakeHazardStall(const Decoded& d) {
-    if (hazard_rd_ == 0 || hazard_ == Hazard::kNone) return false;
-    return TakeHazardStallSlow(d);
+    // One test decides: a load or mul result read by d, or an ALU result read by a jalr.
+    const uint32_t jalr_reads = d.op == Op::kJalr ? d.src_mask : 0u;
+    if (((d.src_mask & data_hazard_mask_) | (jalr_reads & jump_hazard_mask_)) == 0) return false;
+    ConsumeHazardStall();
+    return true;
   }
-  // The TCDM bank d will access this cycle, or -1 when d makes no TCDM access.
-  int TcdmBank(const Decoded& d) const;
+  // Bit b set when d accesses TCDM bank b this cycle; 0 when d makes no TCDM access.
+  // Branch-free: the cluster calls it for every core in every shared cycle.
+  uint32_t TcdmBankBit(const Decoded& d) const {
+    const uint32_t addr = AccessAddress(d);
+    const bool accesses = (d.access & (kAccessLoad | kAccessStore)) != 0;
+    const bool in_l1 = addr - GAP8_L1_BASE < GAP8_L1_SIZE;
+    return static_cast<uint32_t>(accesses & in_l1) << ((addr >> 2) & (GAP8_L1_BANKS - 1));
+  }
   // Executes d (the instruction at pc) and returns its cost in cycles. Throws Fault.
   uint32_t Execute(const Decoded& d);
   // Fetch + Execute, ignoring hazards: the architectural step the differential test compares.
@@ -72,13 +81,29 @@ class Core {
  private:
   enum class Hazard : uint8_t { kNone, kLoad, kMul, kAlu };
 
+  // Address of a load or store (post-increment forms use rs1 unmodified). x0 reads 0, so an
+  // access without an offset register adds regs_[0].
+  uint32_t AccessAddress(const Decoded& d) const {
+    const uint32_t imm_mask = 0u - ((d.access & kAccessImmOffset) != 0);  // all ones or zero
+    return regs_[d.rs1] + regs_[d.offset_reg] + (static_cast<uint32_t>(d.imm) & imm_mask);
+  }
+  // The result of the instruction just executed (register rd) is pending, as `kind`: a load or
+  // mul result stalls any reader, an ALU result only a jalr.
+  void SetHazard(Hazard kind, uint8_t rd) {
+    hazard_ = kind;
+    const uint32_t bit = (1u << rd) & ~1u;  // x0 never stalls
+    data_hazard_mask_ = (kind == Hazard::kLoad || kind == Hazard::kMul) ? bit : 0u;
+    jump_hazard_mask_ = kind == Hazard::kAlu ? bit : 0u;
+  }
+  void ClearHazard() { SetHazard(Hazard::kNone, 0); }
   [[noreturn]] void RaiseFetchFault() const;
-  bool TakeHazardStallSlow(const Decoded& d);
+  [[noreturn]] void RaiseUnmapped(const char* access, uint32_t bytes, const char* where,
+                                  uint32_t addr) const;
+  void ConsumeHazardStall();
   uint32_t Load(const Decoded& d, uint32_t addr, uint32_t* cost);
   void Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost);
   uint32_t ExecuteMemory(const Decoded& d);
   uint32_t ExecuteMulDiv(const Decoded& d);
-  uint32_t ExecuteXpulp(const Decoded& d);
   uint32_t ExecuteHwLoopSetup(const Decoded& d);
   uint32_t ExecuteBranch(const Decoded& d, bool taken);
   uint32_t NextSequentialPc(uint32_t next);
@@ -90,7 +115,8 @@ class Core {
   uint32_t pc_ = 0;
   const Decoded* current_ = nullptr;
   Hazard hazard_ = Hazard::kNone;
-  uint8_t hazard_rd_ = 0;
+  uint32_t data_hazard_mask_ = 0;  // bit of a pending load or mul result, else 0
+  uint32_t jump_hazard_mask_ = 0;  // bit of a pending ALU result (jalr stalls on it), else 0
   bool loops_armed_ = false;
   std::array<uint32_t, 2> loop_start_{}, loop_end_{}, loop_count_{};
   std::array<uint64_t, GAP8_EVT_COUNT> events_{};

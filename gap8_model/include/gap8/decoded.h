@@ -94,6 +94,16 @@ struct Decoded {
   uint8_t scalar = 0;     // pv.*.sc: operand b is rs2's low byte replicated
   uint8_t loop = 0;       // lp.*: hardware loop index 0 or 1
   uint32_t raw = 0;       // the instruction bits, for fault messages
+  // Facts derived from the fields above once, at decode time, so the per-cycle paths (bank
+  // arbitration, ExecuteMemory) read them instead of switching on op every time.
+  uint8_t access = 0;      // AccessFlags: does it load or store, and how the address is formed
+  uint8_t offset_reg = 0;  // register added to rs1 to form the address (0: none; x0 reads 0)
+};
+
+enum AccessFlags : uint8_t {
+  kAccessLoad = 1,       // any load (RV32I or p.l*)
+  kAccessStore = 2,      // any store (RV32I or p.s*)
+  kAccessImmOffset = 4,  // address = rs1 + imm (RV32I forms); else rs1 + offset_reg
 };
 
 // Decodes one instruction; `bits` holds 32 bits from the pc (the upper half is ignored when the
