@@ -10,13 +10,19 @@
 // n & 3 of word n >> 2, little-endian), and every value is handled as 4 packed bytes, like the
 // firmware's USAD8 / UHADD8 (SPEC §7).
 #version 450
+#extension GL_EXT_control_flow_attributes : require  // [[unroll]]: see integer_search
 
 layout(local_size_x_id = 0) in;  // set by the host from the device's work-group limits
 
 // Frame pairs of the current chunk: pair p's prev starts at word 2*p*words_per_frame, its next
 // right after. Each frame carries one spare word at its end so that the 4-byte funnel read of the
 // last pixels never leaves the frame.
-layout(std430, set = 0, binding = 0) readonly buffer Frames { uint frame_words[]; };
+// Read as a uniform texel buffer (R32_UINT, one texel = one word), not a storage buffer: lavapipe
+// turns a texel fetch with per-invocation addresses into one vector gather, but a storage-buffer
+// read into a per-lane, bounds-checked scalar loop.
+layout(set = 0, binding = 0) uniform usamplerBuffer frame_texels;
+
+uint frame_word(uint i) { return texelFetch(frame_texels, int(i)).x; }
 
 // One 32-byte record (reference/record.hpp) = 8 little-endian words per POI, pair after pair.
 layout(std430, set = 0, binding = 1) writeonly buffer Records { uint record_words[]; };
@@ -50,9 +56,9 @@ uint funnel(uint lo, uint hi, uint sh) { return (lo >> sh) | ((hi << 1u) << (31u
 void load8(uint base, uint n, out uint w0, out uint w1) {
   uint q = base + (n >> 2);
   uint sh = (n & 3u) * 8u;
-  uint a = frame_words[q];
-  uint b = frame_words[q + 1u];
-  uint c = frame_words[q + 2u];
+  uint a = frame_word(q);
+  uint b = frame_word(q + 1u);
+  uint c = frame_word(q + 2u);
   w0 = funnel(a, b, sh);
   w1 = funnel(b, c, sh);
 }
@@ -99,7 +105,7 @@ void integer_search(uint blk[16], uint next, uint n, out uint best, out int bx, 
   for (int dy = -S; dy <= S; ++dy) {
     uint sad[kSide];
     for (int k = 0; k < kSide; ++k) sad[k] = 0u;
-    for (int r = 0; r < 8; ++r) {
+    [[unroll]] for (int r = 0; r < 8; ++r) {
       uint row = n + uint(r) * pc.width;
       int pv[8];
       for (int c = 0; c < 4; ++c) {
@@ -111,15 +117,15 @@ void integer_search(uint blk[16], uint next, uint n, out uint best, out int bx, 
       uint m = uint(int(row) + dy * int(pc.width) - S);
       uint q = next + (m >> 2);
       uint sh = (m & 3u) * 8u;
-      uint lo = frame_words[q];
+      uint lo = frame_word(q);
       int seg[kSegWords * 4];
-      for (int k = 0; k < kSegWords; ++k) {
-        uint hi = frame_words[q + uint(k) + 1u];
+      [[unroll]] for (int k = 0; k < kSegWords; ++k) {
+        uint hi = frame_word(q + uint(k) + 1u);
         uint w = funnel(lo, hi, sh);
         lo = hi;
         for (int j = 0; j < 4; ++j) seg[4 * k + j] = int((w >> (8u * uint(j))) & 0xFFu);
       }
-      for (int dx = 0; dx < kSide; ++dx) {
+      [[unroll]] for (int dx = 0; dx < kSide; ++dx) {
         int acc = 0;
         for (int c = 0; c < 8; ++c) acc += abs(pv[c] - seg[dx + c]);
         sad[dx] += uint(acc);
@@ -150,10 +156,10 @@ void half_rows(uint next, uint m, out HalfRow q0, out HalfRow q1) {
   uint a = m - 1u;  // column -1
   uint w = next + (a >> 2);
   uint sh = (a & 3u) * 8u;
-  uint w0 = frame_words[w];
-  uint w1 = frame_words[w + 1u];
-  uint w2 = frame_words[w + 2u];
-  uint w3 = frame_words[w + 3u];
+  uint w0 = frame_word(w);
+  uint w1 = frame_word(w + 1u);
+  uint w2 = frame_word(w + 2u);
+  uint w3 = frame_word(w + 3u);
   uint left0 = funnel(w0, w1, sh);
   uint left1 = funnel(w1, w2, sh);
   uint left2 = funnel(w2, w3, sh);
