@@ -6,7 +6,7 @@
 // invocations of a work-group become the SIMD lanes of the JIT-compiled loop; on a GPU a batch of
 // frame pairs supplies the parallelism (4096 pairs x 64 POIs = 262,144 invocations).
 //
-// No 8-bit storage or shaderInt8: a frame is a uint[] holding 4 pixels per word (pixel n in byte
+// No 8-bit storage or shaderInt8: a frame is a run of 32-bit words holding 4 pixels each (pixel n in byte
 // n & 3 of word n >> 2, little-endian), and every value is handled as 4 packed bytes, like the
 // firmware's USAD8 / UHADD8 (SPEC §7).
 #version 450
@@ -90,8 +90,9 @@ uint feature_value(uint blk[16]) {
 // Step 2, the integer search, dy outer, dx inner (raster order). For one dy and one block row r,
 // the candidates dx = -S..S all read the same 2S+8 pixels of next: they are unpacked once into
 // `seg` and every candidate's row SAD comes from registers. S is a specialization constant, so
-// the loops over dx, c and the segment have constant trip counts that the driver unrolls, and
-// `seg` and `sad` live in registers instead of memory.
+// the loops over dx, c and the segment have constant trip counts, and `seg` and the sums live in
+// registers instead of memory. [[unroll]] makes sure of it for the block-row loop: left as a
+// loop, it indexed prev's block words dynamically and the search was about 20 % slower.
 layout(constant_id = 1) const int S = 4;
 const int kSide = 2 * S + 1;           // candidates per axis
 const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of one row
