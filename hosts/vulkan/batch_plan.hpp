@@ -20,7 +20,7 @@ BatchLayout batch_layout(const Params& p);
 
 // Limits a chunk must respect.
 struct ChunkLimits {
-  std::uint64_t max_buffer_bytes = 0;  // min(maxStorageBufferRange, the backend's memory cap)
+  std::uint64_t max_buffer_bytes = 0;  // device limits (vulkan_backend.cpp) and the cap
   std::uint64_t max_work = 0;          // keeps one submission short (fence timeout, GPU watchdog)
 };
 

@@ -15,6 +15,12 @@ namespace {
 // guarantees at least 128 per work-group).
 constexpr std::uint32_t kPreferredLocalSize = 64;
 
+// Binding 0, the frames: a uniform texel buffer (R32_UINT), because lavapipe turns a texel fetch
+// with per-invocation addresses into one vector gather, but a storage-buffer read into a
+// per-lane, bounds-checked scalar loop (docs/vulkan.md). Binding 1, the records: a storage buffer.
+constexpr VkDescriptorType kBindingTypes[2] = {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
+                                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+
 }  // namespace
 
 FlowPipeline::FlowPipeline(const Context& ctx, int search_radius)
@@ -35,11 +41,13 @@ FlowPipeline::FlowPipeline(const Context& ctx, int search_radius)
 FlowPipeline::~FlowPipeline() { release(); }
 
 void FlowPipeline::release() {
+  if (frames_view_) vkDestroyBufferView(device_, frames_view_, nullptr);
   if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);  // frees set_ too
   if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
   if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
   if (set_layout_) vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
   if (shader_) vkDestroyShaderModule(device_, shader_, nullptr);
+  frames_view_ = VK_NULL_HANDLE;
   pool_ = VK_NULL_HANDLE;
   pipeline_ = VK_NULL_HANDLE;
   layout_ = VK_NULL_HANDLE;
@@ -51,7 +59,7 @@ void FlowPipeline::create_layouts() {
   VkDescriptorSetLayoutBinding bindings[2] = {};
   for (std::uint32_t b = 0; b < 2; ++b) {
     bindings[b].binding = b;
-    bindings[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[b].descriptorType = kBindingTypes[b];
     bindings[b].descriptorCount = 1;
     bindings[b].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
   }
@@ -92,11 +100,11 @@ void FlowPipeline::create_pipeline() {
 }
 
 void FlowPipeline::create_descriptor_set() {
-  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
+  const VkDescriptorPoolSize sizes[2] = {{kBindingTypes[0], 1}, {kBindingTypes[1], 1}};
   auto pool = zeroed<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   pool.maxSets = 1;
-  pool.poolSizeCount = 1;
-  pool.pPoolSizes = &size;
+  pool.poolSizeCount = 2;
+  pool.pPoolSizes = sizes;
   check(vkCreateDescriptorPool(device_, &pool, nullptr, &pool_), "vkCreateDescriptorPool");
   auto alloc = zeroed<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
   alloc.descriptorPool = pool_;
@@ -106,16 +114,24 @@ void FlowPipeline::create_descriptor_set() {
 }
 
 void FlowPipeline::bind_buffers(VkBuffer frames, VkBuffer records) {
-  VkDescriptorBufferInfo infos[2] = {{frames, 0, VK_WHOLE_SIZE}, {records, 0, VK_WHOLE_SIZE}};
+  if (frames_view_) vkDestroyBufferView(device_, frames_view_, nullptr);
+  frames_view_ = VK_NULL_HANDLE;
+  auto view = zeroed<VkBufferViewCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO);
+  view.buffer = frames;
+  view.format = VK_FORMAT_R32_UINT;  // one texel = one word of 4 pixels
+  view.range = VK_WHOLE_SIZE;
+  check(vkCreateBufferView(device_, &view, nullptr, &frames_view_), "vkCreateBufferView");
+  VkDescriptorBufferInfo records_info{records, 0, VK_WHOLE_SIZE};
   VkWriteDescriptorSet writes[2] = {};
   for (std::uint32_t b = 0; b < 2; ++b) {
     writes[b].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     writes[b].dstSet = set_;
     writes[b].dstBinding = b;
     writes[b].descriptorCount = 1;
-    writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[b].pBufferInfo = &infos[b];
+    writes[b].descriptorType = kBindingTypes[b];
   }
+  writes[0].pTexelBufferView = &frames_view_;
+  writes[1].pBufferInfo = &records_info;
   vkUpdateDescriptorSets(device_, 2, writes, 0, nullptr);
 }
 

@@ -39,7 +39,8 @@ class FlowPipeline {
   // Invocations per work-group (the shader's local_size_x), within the device's limits.
   std::uint32_t local_size() const { return local_size_; }
 
-  // Points the descriptor set at the buffers; call when they change, never while in use.
+  // Points the descriptor set at the buffers (frames through a texel buffer view made here);
+  // call when they change, never while in use.
   void bind_buffers(VkBuffer frames, VkBuffer records);
 
   // Records binding the pipeline and its descriptor set into `cmd`.
@@ -61,6 +62,7 @@ class FlowPipeline {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
+  VkBufferView frames_view_ = VK_NULL_HANDLE;  // the frames buffer as R32_UINT texels
 };
 
 }  // namespace pxflow::vk

@@ -102,8 +102,11 @@ std::string VulkanBackend::device_name() const { return ctx_->properties().devic
 std::vector<std::string> VulkanBackend::validation_messages() const { return ctx_->messages(); }
 
 std::uint64_t VulkanBackend::buffer_limit() const {
-  return std::min<std::uint64_t>(config_.max_buffer_bytes,
-                                 ctx_->properties().limits.maxStorageBufferRange);
+  const auto& limits = ctx_->properties().limits;
+  // Frames are read as 4-byte texels (flow_pipeline.cpp), records written as a storage buffer.
+  return std::min({std::uint64_t{config_.max_buffer_bytes},
+                   std::uint64_t{limits.maxStorageBufferRange},
+                   4 * std::uint64_t{limits.maxTexelBufferElements}});
 }
 
 std::string VulkanBackend::unsupported(const Params& p) const {

@@ -6,17 +6,23 @@
 // invocations of a work-group become the SIMD lanes of the JIT-compiled loop; on a GPU a batch of
 // frame pairs supplies the parallelism (4096 pairs x 64 POIs = 262,144 invocations).
 //
-// No 8-bit storage or shaderInt8: a frame is a uint[] holding 4 pixels per word (pixel n in byte
+// No 8-bit storage or shaderInt8: a frame is a run of 32-bit words holding 4 pixels each (pixel n in byte
 // n & 3 of word n >> 2, little-endian), and every value is handled as 4 packed bytes, like the
 // firmware's USAD8 / UHADD8 (SPEC §7).
 #version 450
+#extension GL_EXT_control_flow_attributes : require  // [[unroll]]: see integer_search
 
 layout(local_size_x_id = 0) in;  // set by the host from the device's work-group limits
 
 // Frame pairs of the current chunk: pair p's prev starts at word 2*p*words_per_frame, its next
 // right after. Each frame carries one spare word at its end so that the 4-byte funnel read of the
 // last pixels never leaves the frame.
-layout(std430, set = 0, binding = 0) readonly buffer Frames { uint frame_words[]; };
+// Read as a uniform texel buffer (R32_UINT, one texel = one word), not a storage buffer: lavapipe
+// turns a texel fetch with per-invocation addresses into one vector gather, but a storage-buffer
+// read into a per-lane, bounds-checked scalar loop.
+layout(set = 0, binding = 0) uniform usamplerBuffer frame_texels;
+
+uint frame_word(uint i) { return texelFetch(frame_texels, int(i)).x; }
 
 // One 32-byte record (reference/record.hpp) = 8 little-endian words per POI, pair after pair.
 layout(std430, set = 0, binding = 1) writeonly buffer Records { uint record_words[]; };
@@ -38,13 +44,23 @@ layout(push_constant) uniform Problem {
 }
 pc;
 
-// The 4 pixels at n .. n+3 of the frame starting at word `base`, pixel n in the low byte.
-// (hi << 1) << (31 - sh) is hi << (32 - sh) without the undefined shift by 32 when sh == 0.
-uint load4(uint base, uint n) {
-  uint lo = frame_words[base + (n >> 2)];
-  uint hi = frame_words[base + (n >> 2) + 1u];
+// The 4 pixels starting at byte sh / 8 of the 8-byte little-endian string lo, hi (sh = 0, 8, 16
+// or 24). (hi << 1) << (31 - sh) is hi << (32 - sh) without the undefined shift by 32 when sh == 0.
+uint funnel(uint lo, uint hi, uint sh) { return (lo >> sh) | ((hi << 1u) << (31u - sh)); }
+
+// Why every row is read once and then shifted in registers: on lavapipe each storage-buffer read
+// with a per-invocation address is a per-lane, bounds-checked scalar loop, so reads, not the SAD
+// arithmetic, dominated the first versions (docs/vulkan.md, "Benchmark").
+
+// The 8 pixels n .. n+7 of the frame starting at word `base`, as two packed words.
+void load8(uint base, uint n, out uint w0, out uint w1) {
+  uint q = base + (n >> 2);
   uint sh = (n & 3u) * 8u;
-  return (lo >> sh) | ((hi << 1u) << (31u - sh));
+  uint a = frame_word(q);
+  uint b = frame_word(q + 1u);
+  uint c = frame_word(q + 2u);
+  w0 = funnel(a, b, sh);
+  w1 = funnel(b, c, sh);
 }
 
 // USAD8: sum over the 4 byte lanes of |a_i - b_i|.
@@ -58,12 +74,13 @@ uint usad8(uint a, uint b) {
 // UHADD8: per byte floor((a_i + b_i) / 2). NOT (a+b+1)/2, which rounds up (SPEC §7).
 uint uhadd8(uint a, uint b) { return (a & b) + (((a ^ b) & 0xFEFEFEFEu) >> 1); }
 
-// Step 1, the feature test over the central 4x4 of prev's block: three vertical row differences
-// and, per row, the three horizontal neighbour differences (the top lane of q and q >> 8 is 0 in
-// both, so it adds nothing).
-uint feature_value(uint prev, uint n) {
+// Step 1, the feature test over the central 4x4 of prev's block (columns 2..5 of block rows
+// 2..5, cut out of the block's packed words): three vertical row differences and, per row, the
+// three horizontal neighbour differences (the top lane of q and q >> 8 is 0 in both, so it adds
+// nothing).
+uint feature_value(uint blk[16]) {
   uint q[4];
-  for (int r = 0; r < 4; ++r) q[r] = load4(prev, n + 2u + (2u + uint(r)) * pc.width);
+  for (int r = 0; r < 4; ++r) q[r] = (blk[2 * r + 4] >> 16) | (blk[2 * r + 5] << 16);
   uint sum = 0u;
   for (int r = 0; r < 3; ++r) sum += usad8(q[r], q[r + 1]);
   for (int r = 0; r < 4; ++r) sum += usad8(q[r] & 0x00FFFFFFu, q[r] >> 8);
@@ -73,51 +90,63 @@ uint feature_value(uint prev, uint n) {
 // Step 2, the integer search, dy outer, dx inner (raster order). For one dy and one block row r,
 // the candidates dx = -S..S all read the same 2S+8 pixels of next: they are unpacked once into
 // `seg` and every candidate's row SAD comes from registers. S is a specialization constant, so
-// the loops over dx, c and the segment have constant trip counts that the driver unrolls, and
-// `seg` and `sad` live in registers instead of memory.
+// the loops over dx, c and the segment have constant trip counts, and `seg` and the sums live in
+// registers instead of memory. [[unroll]] makes sure of it for the block-row loop: left as a
+// loop, it indexed prev's block words dynamically and the search was about 20 % slower.
 layout(constant_id = 1) const int S = 4;
 const int kSide = 2 * S + 1;           // candidates per axis
 const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of one row
 
+// Why max, not abs: |a - b| = 2 max(a, b) - a - b, so SAD(dx, dy) = 2 M - A - N with M the sum of
+// max(prev, next) over the block, A the block's pixel sum and N the candidate's: one max and one
+// add per pixel instead of a subtract, an abs and an add. N comes from running 8-pixel sums along
+// each row of next (two operations per candidate), A once per POI. All exact in 32 bits.
 // Only a STRICTLY smaller SAD replaces, so ties keep the first candidate in raster order.
-void integer_search(uint prev, uint next, uint n, out uint best, out int bx, out int by) {
+// prev's block comes from blk (held in registers for the whole search), not from memory.
+void integer_search(uint blk[16], uint next, uint n, out uint best, out int bx, out int by) {
   best = 0xFFFFFFFFu;
   bx = 0;
   by = 0;
+  int block_sum = 0;  // A
+  [[unroll]] for (int k = 0; k < 16; ++k) {
+    for (int j = 0; j < 4; ++j) block_sum += int((blk[k] >> (8u * uint(j))) & 0xFFu);
+  }
   for (int dy = -S; dy <= S; ++dy) {
-    uint sad[kSide];
-    for (int k = 0; k < kSide; ++k) sad[k] = 0u;
-    for (int r = 0; r < 8; ++r) {
+    int twice_max_minus_next[kSide];  // 2 M - N, summed over the block rows
+    for (int k = 0; k < kSide; ++k) twice_max_minus_next[k] = 0;
+    [[unroll]] for (int r = 0; r < 8; ++r) {
       uint row = n + uint(r) * pc.width;
-      uint p0 = load4(prev, row);
-      uint p1 = load4(prev, row + 4u);
       int pv[8];
       for (int c = 0; c < 4; ++c) {
-        pv[c] = int((p0 >> (8u * uint(c))) & 0xFFu);
-        pv[c + 4] = int((p1 >> (8u * uint(c))) & 0xFFu);
+        pv[c] = int((blk[2 * r] >> (8u * uint(c))) & 0xFFu);
+        pv[c + 4] = int((blk[2 * r + 1] >> (8u * uint(c))) & 0xFFu);
       }
       // The 4 * kSegWords pixels of next from column x - S of row y + r + dy, unpacked. (Arrays
       // sized by S stay in this function: passing them to functions breaks SPIR-V validation.)
       uint m = uint(int(row) + dy * int(pc.width) - S);
       uint q = next + (m >> 2);
       uint sh = (m & 3u) * 8u;
-      uint lo = frame_words[q];
+      uint lo = frame_word(q);
       int seg[kSegWords * 4];
-      for (int k = 0; k < kSegWords; ++k) {
-        uint hi = frame_words[q + uint(k) + 1u];
-        uint w = (lo >> sh) | ((hi << 1u) << (31u - sh));
+      [[unroll]] for (int k = 0; k < kSegWords; ++k) {
+        uint hi = frame_word(q + uint(k) + 1u);
+        uint w = funnel(lo, hi, sh);
         lo = hi;
         for (int j = 0; j < 4; ++j) seg[4 * k + j] = int((w >> (8u * uint(j))) & 0xFFu);
       }
-      for (int dx = 0; dx < kSide; ++dx) {
-        int acc = 0;
-        for (int c = 0; c < 8; ++c) acc += abs(pv[c] - seg[dx + c]);
-        sad[dx] += uint(acc);
+      int next_sum = 0;  // the 8 pixels of next under the block row at candidate dx
+      for (int c = 0; c < 8; ++c) next_sum += seg[c];
+      [[unroll]] for (int dx = 0; dx < kSide; ++dx) {
+        if (dx > 0) next_sum += seg[dx + 7] - seg[dx - 1];
+        int max_sum = 0;
+        for (int c = 0; c < 8; ++c) max_sum += max(pv[c], seg[dx + c]);
+        twice_max_minus_next[dx] += 2 * max_sum - next_sum;
       }
     }
     for (int k = 0; k < kSide; ++k) {
-      if (sad[k] < best) {
-        best = sad[k];
+      uint sad = uint(twice_max_minus_next[k] - block_sum);
+      if (sad < best) {
+        best = sad;
         bx = k - S;
         by = dy;
       }
@@ -133,33 +162,56 @@ struct HalfRow {
   uint hl;
 };
 
-HalfRow half_row(uint next, uint n) {
-  uint left = load4(next, n - 1u);
-  uint here = load4(next, n);
-  uint right = load4(next, n + 1u);
-  return HalfRow(here, uhadd8(here, right), uhadd8(left, here));
+// Both halves (q = 0, 1) of block row v, which starts at pixel m of next. Columns -1 .. 8 are
+// read once (4 words) and aligned into `left` = columns -1..2, 3..6, 7..10; the other windows are
+// constant byte shifts of those.
+void half_rows(uint next, uint m, out HalfRow q0, out HalfRow q1) {
+  uint a = m - 1u;  // column -1
+  uint w = next + (a >> 2);
+  uint sh = (a & 3u) * 8u;
+  uint w0 = frame_word(w);
+  uint w1 = frame_word(w + 1u);
+  uint w2 = frame_word(w + 2u);
+  uint w3 = frame_word(w + 3u);
+  uint left0 = funnel(w0, w1, sh);
+  uint left1 = funnel(w1, w2, sh);
+  uint left2 = funnel(w2, w3, sh);
+  uint here0 = (left0 >> 8) | (left1 << 24);
+  uint right0 = (left0 >> 16) | (left1 << 16);
+  uint here1 = (left1 >> 8) | (left2 << 24);
+  uint right1 = (left1 >> 16) | (left2 << 16);
+  q0 = HalfRow(here0, uhadd8(here0, right0), uhadd8(left0, here0));
+  q1 = HalfRow(here1, uhadd8(here1, right1), uhadd8(left1, here1));
 }
 
-// Step 3: the eight half-pixel SADs around the integer match at pixel n of next. The diagonal
-// d(u, v) is the floor average of two floored HORIZONTAL averages h(u, v), h(u, v+1).
+// One block row's 4 packed pixels b against the eight direction values built from rows r-1, r,
+// r+1 of next. The diagonal d(u, v) is the floor average of two floored HORIZONTAL averages.
+void add_half_sads(uint b, HalfRow up, HalfRow mid, HalfRow down, inout uint sub[8]) {
+  sub[0] += usad8(b, mid.h);                     // h(c, r)
+  sub[1] += usad8(b, uhadd8(mid.h, down.h));     // d(c, r)
+  sub[2] += usad8(b, uhadd8(mid.p, down.p));     // g(c, r)
+  sub[3] += usad8(b, uhadd8(mid.hl, down.hl));   // d(c-1, r)
+  sub[4] += usad8(b, mid.hl);                    // h(c-1, r)
+  sub[5] += usad8(b, uhadd8(up.hl, mid.hl));     // d(c-1, r-1)
+  sub[6] += usad8(b, uhadd8(up.p, mid.p));       // g(c, r-1)
+  sub[7] += usad8(b, uhadd8(up.h, mid.h));       // d(c, r-1)
+}
+
+// Step 3: the eight half-pixel SADs around the integer match at pixel n of next. Rows -1 .. 8 of
+// next are read once each, rolling down the block (up, mid, down).
 void half_pixel_sads(uint blk[16], uint next, uint n, out uint sub[8]) {
   for (int k = 0; k < 8; ++k) sub[k] = 0u;
+  HalfRow up0, up1, mid0, mid1, down0, down1;
+  half_rows(next, n - pc.width, up0, up1);
+  half_rows(next, n, mid0, mid1);
   for (int r = 0; r < 8; ++r) {
-    for (int q = 0; q < 2; ++q) {
-      uint m = n + uint(r) * pc.width + 4u * uint(q);
-      HalfRow up = half_row(next, m - pc.width);
-      HalfRow mid = half_row(next, m);
-      HalfRow down = half_row(next, m + pc.width);
-      uint b = blk[2 * r + q];
-      sub[0] += usad8(b, mid.h);                     // h(c, r)
-      sub[1] += usad8(b, uhadd8(mid.h, down.h));     // d(c, r)
-      sub[2] += usad8(b, uhadd8(mid.p, down.p));     // g(c, r)
-      sub[3] += usad8(b, uhadd8(mid.hl, down.hl));   // d(c-1, r)
-      sub[4] += usad8(b, mid.hl);                    // h(c-1, r)
-      sub[5] += usad8(b, uhadd8(up.hl, mid.hl));     // d(c-1, r-1)
-      sub[6] += usad8(b, uhadd8(up.p, mid.p));       // g(c, r-1)
-      sub[7] += usad8(b, uhadd8(up.h, mid.h));       // d(c, r-1)
-    }
+    half_rows(next, n + uint(r + 1) * pc.width, down0, down1);
+    add_half_sads(blk[2 * r], up0, mid0, down0, sub);
+    add_half_sads(blk[2 * r + 1], up1, mid1, down1, sub);
+    up0 = mid0;
+    up1 = mid1;
+    mid0 = down0;
+    mid1 = down1;
   }
 }
 
@@ -193,7 +245,11 @@ void main() {
   uint n = y * pc.width + x;  // the POI's top-left pixel
   uint zero[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
-  uint feature = feature_value(prev, n);
+  // prev's 8x8 block, 2 packed words per row, read once for all three steps.
+  uint blk[16];
+  for (int r = 0; r < 8; ++r) load8(prev, n + uint(r) * pc.width, blk[2 * r], blk[2 * r + 1]);
+
+  uint feature = feature_value(blk);
   if (feature < pc.feature_threshold) {
     write_record(item, x, y, 0u, feature, 0, 0, 0u, 8u, zero, 0, 0);
     return;
@@ -202,16 +258,10 @@ void main() {
   uint best;
   int bx;
   int by;
-  integer_search(prev, next, n, best, bx, by);
+  integer_search(blk, next, n, best, bx, by);
   if (!(best < pc.sad_threshold)) {
     write_record(item, x, y, 1u, feature, bx, by, best, 8u, zero, 0, 0);
     return;
-  }
-
-  uint blk[16];
-  for (int r = 0; r < 8; ++r) {
-    blk[2 * r] = load4(prev, n + uint(r) * pc.width);
-    blk[2 * r + 1] = load4(prev, n + uint(r) * pc.width + 4u);
   }
 
   uint sub[8];
