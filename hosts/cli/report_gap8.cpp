@@ -17,11 +17,11 @@ std::string fixed(double v, const char* fmt) {
 }
 
 // Every core count: cycles, frame rate and latency at the clock, speed-up against Amdahl's limit.
-ReportInputs::Table core_counts(const gap8_study::Study& s) {
+ReportInputs::Table core_counts(const gap8_study::Study& s, const std::string& command) {
   ReportInputs::Table t{"GAP8 model: every core count",
                         "Core 0's cycles per frame at " + fixed(s.options.mhz, "%.0f") +
                             " MHz; speed-up over 1 core against Amdahl's limit from the 1-core phases. "
-                            "Command: `" + std::string("pxflow gap8 --cores 1-8") + "`.",
+                            "Command: `" + command + "`.",
                         {"variant", "cores", "cycles", "frames/s", "latency ms", "speed-up", "Amdahl's limit"},
                         {},
                         ""};
@@ -69,13 +69,15 @@ void add_gap8_tables(ReportInputs& in) {
   // The paper's tables have 1 and 8 cores; the other counts are in the last table.
   gap8_study::Study paper_cores = s;
   for (auto& [variant, by_cores] : paper_cores.results) std::erase_if(by_cores, [](const auto& e) { return e.first != 1 && e.first != 8; });
+  bool first = true;
   for (const gap8_study::PaperTable& pt : gap8_study::paper_tables(paper_cores)) {
-    ReportInputs::Table t{"GAP8 model: " + pt.title, in.tables.empty() || in.tables.back().title.rfind("GAP8", 0) != 0 ? intro : "Same run as above.",
+    ReportInputs::Table t{"GAP8 model: " + pt.title, first ? intro : "Same run as above.",
                           {"figure", "variant", "model", "paper", "diff"}, {}, ""};
+    first = false;
     for (const auto& l : pt.lines) t.rows.push_back({l.label, l.variant, l.model, l.paper, l.diff});
     in.tables.push_back(std::move(t));
   }
-  in.tables.push_back(core_counts(s));
+  in.tables.push_back(core_counts(s, in.gap8_command));
   in.gap8 = Json::parse(gap8_study::to_json(s));
 }
 

@@ -5,8 +5,7 @@
  * loads, as the GAP SDK's compiler would emit: no loop counters, compares or pointer updates.
  * prev's block is first copied to a word-aligned buffer (the POIs sit at odd x, so each of its
  * words would otherwise be a misaligned, two-access load for every candidate). */
-#include "flow_kernel.h"
-#include "flow_simd.h"
+#include "search_raster.h"
 
 /* Candidates cand, cand+1, ..., cand+n-1 of next (row stride w) against prev's block, packed
  * in `blk` (16 words, row by row). A SAD strictly smaller than *best replaces it; returns the
@@ -59,25 +58,7 @@ static const uint8_t *search_row(const uint32_t *blk, const uint8_t *cand, uint3
   return hit;
 }
 
-/* Raster order over dy, dx in -S..S; a strictly smaller SAD replaces (ties keep the first). */
 uint32_t flow_integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, uint32_t y, int *bx,
                              int *by) {
-  const int s = (int)c->search_radius;
-  const uint32_t w = c->width;
-  uint32_t packed[16];
-#pragma GCC unroll 8
-  for (int r = 0; r < 8; ++r) {
-    packed[2 * r] = ld4(blk + r * w);
-    packed[2 * r + 1] = ld4(blk + r * w + 4);
-  }
-  uint32_t best = 0xFFFFFFFFu;
-  for (int dy = -s; dy <= s; ++dy) {
-    const uint8_t *row = c->next + (y + dy) * w + x - s;
-    const uint8_t *hit = search_row(packed, row, w, (uint32_t)(2 * s + 1), &best);
-    if (hit) {
-      *bx = (int)(hit - row) - s;
-      *by = dy;
-    }
-  }
-  return best;
+  return search_raster(c, blk, x, y, bx, by, search_row);
 }

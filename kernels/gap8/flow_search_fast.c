@@ -4,8 +4,7 @@
  * The 2S+1 candidates of one row of displacements are one asm block: a hardware loop over the
  * candidates, the 8 block rows unrolled in its body (the 16 words of prev are 16 registers, which
  * no loop can index), next read with post-increment loads. */
-#include "flow_kernel.h"
-#include "flow_simd.h"
+#include "search_raster.h"
 
 /* clang-format off */
 /* acc += USAD8(prev, v); v is overwritten. */
@@ -71,25 +70,7 @@ static const uint8_t *search_row_held(const uint32_t p[16], const uint8_t *cand,
   return hit ? hit - 8 * w : 0;
 }
 
-/* Raster order over dy, dx in -S..S; a strictly smaller SAD replaces (ties keep the first). */
 uint32_t flow_integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, uint32_t y, int *bx,
                              int *by) {
-  const int s = (int)c->search_radius;
-  const uint32_t w = c->width;
-  uint32_t p[16];
-#pragma GCC unroll 8
-  for (int r = 0; r < 8; ++r) {
-    p[2 * r] = ld4(blk + r * w);
-    p[2 * r + 1] = ld4(blk + r * w + 4);
-  }
-  uint32_t best = 0xFFFFFFFFu;
-  for (int dy = -s; dy <= s; ++dy) {
-    const uint8_t *row = c->next + (y + dy) * w + x - s;
-    const uint8_t *hit = search_row_held(p, row, w, (uint32_t)(2 * s + 1), &best);
-    if (hit) {
-      *bx = (int)(hit - row) - s;
-      *by = dy;
-    }
-  }
-  return best;
+  return search_raster(c, blk, x, y, bx, by, search_row_held);
 }
