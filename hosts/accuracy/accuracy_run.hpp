@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "backend.hpp"
+#include "sample_data.hpp"
 
 namespace pxflow::accuracy {
 
@@ -17,7 +18,7 @@ struct AccuracyOptions {
   int pairs = 200;      // synthetic pairs at 64x64; a quarter of that (at least 1) at 320x240
   int video_pairs = 6;  // per video (vtest.avi, tree.avi); 0 leaves the videos out
   std::uint64_t seed = 1;
-  std::string data_dir = "/usr/share/doc/opencv-doc/examples/data";
+  std::string data_dir = kSampleDataDir;
   bool by_kind = false;  // also one block of rows per kind of motion
 };
 

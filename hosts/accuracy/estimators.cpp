@@ -20,13 +20,7 @@ FrameView view_of(const cv::Mat& m) {
 PxflowEstimator::PxflowEstimator(const std::string& backend_name, const BackendOptions& options,
                                  const Params& p)
     : p_(p), records_(poi_count(p)) {
-  const BackendRow& row = find_backend(backend_name);
-  if (const std::string why = row.probe(); !why.empty())
-    throw InputError("backend " + row.name + " cannot run here: " + why);
-  backend_ = row.create(options);
-  if (const std::string why = backend_->unsupported(p); !why.empty())
-    throw InputError("backend " + row.name + " does not support " + std::to_string(p.width) + "x" +
-                     std::to_string(p.height) + ": " + why);
+  backend_ = open_backend_for(find_backend(backend_name), options, p);
   // An 8x8 block whose top-left pixel is (x, y) has its centre at (x + 3.5, y + 3.5).
   for (const Poi& poi : poi_grid(p)) centres_.emplace_back(poi.x + 3.5f, poi.y + 3.5f);
 }

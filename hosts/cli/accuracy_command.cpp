@@ -9,13 +9,6 @@
 namespace pxflow::cli {
 namespace {
 
-// `cpu` (the best CPU kernel) when this build has it, else the reference.
-std::string default_backend() {
-  for (const auto& row : backend_rows())
-    if (row.name == "cpu") return "cpu";
-  return "ref-original";
-}
-
 int run_accuracy_command(accuracy::AccuracyOptions o) {
   find_backend(o.backend);  // unknown names fail before any work
   o.backend_options.threads = o.threads;
@@ -28,7 +21,7 @@ int run_accuracy_command(accuracy::AccuracyOptions o) {
 
 Command add_accuracy_command(CLI::App& app) {
   auto o = std::make_shared<accuracy::AccuracyOptions>();
-  o->backend = default_backend();
+  o->backend = default_backend().name;
   CLI::App* sub = app.add_subcommand(
       "accuracy",
       "pxflow vs OpenCV's Lucas-Kanade and DIS flow: error against known motion, time per frame");

@@ -6,10 +6,9 @@
 #include "commands.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
+#include "cli_extension.hpp"
 #include "pxflow_app.hpp"
-#ifdef PXFLOW_WITH_CPU_SIMD
-#include "isa_mask.hpp"
-#endif
+#include "registry.hpp"
 
 namespace pxflow {
 
@@ -19,18 +18,20 @@ int run_pxflow(int argc, char** argv) {
   app.set_version_flag("--version", "pxflow 0.1");
   app.require_subcommand(1);
   app.fallthrough();  // global options may follow the subcommand
-#ifdef PXFLOW_WITH_CPU_SIMD
-  std::string disabled_isas;
-  app.add_option("--disable-isa", disabled_isas,
-                 "Mask CPU ISAs for this run, e.g. avx512bw,avx2 (replaces PXFLOW_DISABLE)");
-#endif
+  // The families' global options (e.g. the cpu family's --disable-isa), applied before the
+  // command runs.
+  std::vector<std::pair<const FamilyOption*, std::string>> family_options;
+  for (const BackendFamily& f : backend_families())
+    for (const FamilyOption& opt : f.options) family_options.push_back({&opt, {}});
+  std::vector<CLI::Option*> family_flags;
+  for (auto& [opt, value] : family_options)
+    family_flags.push_back(app.add_option(opt->flag, value, opt->help));
   std::vector<cli::Command> commands = {cli::add_flow_command(app), cli::add_check_command(app),
                                         cli::add_bench_command(app), cli::add_report_command(app),
                                         cli::add_accuracy_command(app),
                                         cli::add_backends_command(app)};
-#ifdef PXFLOW_WITH_GAP8
-  commands.push_back(cli::add_gap8_command(app));
-#endif
+  for (const cli::CliExtension& e : cli::registered_cli_extensions())
+    if (e.add_command) commands.push_back(e.add_command(app));
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for (const auto& c : commands) known |= c.app->get_name() == argv[1];
@@ -52,9 +53,8 @@ int run_pxflow(int argc, char** argv) {
     return 2;
   }
   try {
-#ifdef PXFLOW_WITH_CPU_SIMD
-    if (!disabled_isas.empty()) cpu::set_disabled_isas(disabled_isas);
-#endif
+    for (std::size_t i = 0; i < family_options.size(); ++i)
+      if (family_flags[i]->count() > 0) family_options[i].first->apply(family_options[i].second);
     for (const auto& c : commands)
       if (c.app->parsed()) return c.run();
     return 2;

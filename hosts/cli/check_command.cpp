@@ -38,7 +38,7 @@ int run_check_command(const CheckArgs& a) {
 
   std::printf("\n%-14s %-8s %7s %7s %5s %9s  %s\n", "backend", "result", "cases", "pairs", "n/a", "run time", "note");
   for (const auto& b : r.backends)
-    std::printf("%-14s %-8s %7ld %7ld %5ld %8.2fs  %s\n", b.name.c_str(), b.state.c_str(), b.passed + b.failed,
+    std::printf("%-14s %-8s %7ld %7ld %5ld %8.2fs  %s\n", b.name.c_str(), state_name(b.state), b.passed + b.failed,
                 b.pairs, b.not_applicable, b.seconds, b.reason.c_str());
   std::printf("%ld passed, %ld failed, %ld skipped\n", r.passed, r.failed, r.skipped);
   if (json_file.is_open()) json_file << check_json(r).dump(2) << "\n";

@@ -22,7 +22,6 @@ Command add_backends_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
-Command add_gap8_command(CLI::App& app);  // only with PXFLOW_WITH_GAP8
 Command add_accuracy_command(CLI::App& app);
 
 // Options that describe the problem, shared by every command that runs kernels.

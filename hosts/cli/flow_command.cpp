@@ -66,11 +66,7 @@ int run_flow(const FlowOptions& o) {
                      std::to_string(next.width) + "x" + std::to_string(next.height));
   const Params p = o.problem.resolve(std::pair{prev.width, prev.height});
 
-  if (const std::string why = row.probe(); !why.empty())
-    throw InputError("backend " + row.name + " cannot run here: " + why);
-  auto backend = row.create(o.backend_options);
-  if (const std::string why = backend->unsupported(p); !why.empty())
-    throw InputError("backend " + row.name + " does not support this problem: " + why);
+  auto backend = open_backend_for(row, o.backend_options, p);
 
   const FramePair pair{prev.view(), next.view()};
   std::vector<PoiRecord> records(poi_count(p));

@@ -15,9 +15,7 @@
 #include "estimate.hpp"
 #include "grid.hpp"
 #include "registry.hpp"
-#ifdef PXFLOW_WITH_GAP8
-#include "report_gap8.hpp"
-#endif
+#include "cli_extension.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -25,19 +23,25 @@ namespace {
 struct ReportArgs {
   std::string out_dir, check_json, bench_json, backends;
   std::uint64_t seed = 1;
-  bool quick = false, no_accuracy = false, no_gap8 = false;
+  bool quick = false, no_accuracy = false;
+  std::vector<std::pair<CliExtension, bool>> extensions;  // each with its skip flag's value
 };
 
-// The backend a user would run: the best CPU path when built in, else the reference.
-std::string everyday_backend() {
-  for (const auto& row : backend_rows())
-    if (row.name == "cpu" && row.probe().empty()) return "cpu";
-  return "ref-original";
+// The families' sections: each extension whose family has a row among the report's backends
+// (all, when none are named), unless its skip flag was given.
+void add_family_sections(ReportInputs& in, const ReportArgs& a) {
+  const std::vector<std::string> names = split_list(a.backends);
+  for (const auto& [e, skipped] : a.extensions) {
+    if (!e.add_report_section || skipped) continue;
+    bool wanted = names.empty();
+    for (const std::string& n : names) wanted |= find_backend(n).family == e.family;
+    if (wanted) e.add_report_section(in);
+  }
 }
 
 void add_accuracy(ReportInputs& in, const ReportArgs& a) {
   accuracy::AccuracyOptions o;
-  o.backend = everyday_backend();
+  o.backend = default_backend().name;
   if (a.quick) o.pairs = 40, o.video_pairs = 2;
   in.accuracy_command = "pxflow accuracy --backend " + o.backend + (a.quick ? " --pairs 40 --video-pairs 2" : "");
   std::cout << "== " << in.accuracy_command << "\n";
@@ -58,15 +62,15 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
 
 // Flow pictures of the real sequences: first two frames of each video at full size.
 void add_pictures(ReportInputs& in, const ReportArgs& a) {
-  const std::string backend = everyday_backend();
-  auto b = find_backend(backend).create({});
+  const std::string backend = default_backend().name;
+  Params p = profile("px4flow-64");
   for (const char* video : {"vtest.avi", "tree.avi"}) {
     const auto pairs = accuracy::video_pairs(std::string(CorpusOptions{}.data_dir) + "/" + video, 1);
     if (pairs.empty()) continue;
     const auto& vp = pairs.front();
-    Params p = profile("px4flow-64");
     p.width = vp.prev.cols, p.height = vp.prev.rows, p.search_radius = 7, p.blocks = 32;
     validate(p);
+    auto b = open_backend_for(find_backend(backend), {}, p);
     const FramePair pair{{p.width, p.height, static_cast<std::ptrdiff_t>(vp.prev.step), vp.prev.data},
                          {p.width, p.height, static_cast<std::ptrdiff_t>(vp.next.step), vp.next.data}};
     std::vector<PoiRecord> records(poi_count(p));
@@ -126,10 +130,7 @@ int run_report(const ReportArgs& a) {
     std::filesystem::create_directories(a.out_dir);
     add_pictures(in, a);
   }
-#ifdef PXFLOW_WITH_GAP8
-  // The model's tables belong to a report about the GAP8 backends: all backends, or any gap8-*.
-  if (!a.no_gap8 && (a.backends.empty() || a.backends.find("gap8-") != std::string::npos)) add_gap8_tables(in);
-#endif
+  add_family_sections(in, a);
   write_report(a.out_dir, in);
   std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json, results.csv\n";
   return in.check.value("failed", 0) == 0 ? 0 : 1;
@@ -147,7 +148,10 @@ Command add_report_command(CLI::App& app) {
   sub->add_option("--seed", a->seed, "Seed of the check's random pairs")->capture_default_str();
   sub->add_flag("--quick", a->quick, "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
   sub->add_flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");
-  sub->add_flag("--no-gap8", a->no_gap8, "Leave out the GAP8 model's tables beside the paper's (builds with GAP8 only)");
+  for (const CliExtension& e : registered_cli_extensions()) a->extensions.push_back({e, false});
+  for (auto& [e, skipped] : a->extensions)
+    if (e.add_report_section && !e.report_skip_flag.empty())
+      sub->add_flag(e.report_skip_flag, skipped, e.report_skip_help);
   return {sub, [a] { return run_report(*a); }};
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "frame.hpp"
 #include "params.hpp"
@@ -40,7 +41,7 @@ class Backend {
   // timestamps, the GAP8 model's cycles), when it has one. The benchmark reports it beside the
   // host clock and never compares figures of different sources.
   struct DeviceTime {
-    std::string source;  // e.g. "opencl-events", "vulkan-timestamps", "gap8-model-cycles"
+    std::string source;  // e.g. "opencl-event-profiling", "vulkan-timestamps", "gap8-model-cycles"
     double ns = 0;
     std::optional<double> cycles;  // when the clock counts cycles
   };
@@ -55,6 +56,39 @@ struct BackendRow {
   std::function<std::string()> probe;
   // Creates a ready backend; throws BackendError with the reason when set-up fails.
   std::function<std::unique_ptr<Backend>(const BackendOptions&)> create;
+  // The backend a user gets by default (flow's pictures in the report, accuracy): the first
+  // preferred row that can run here, else ref-original (registry.hpp: default_backend()).
+  bool preferred = false;
+  // Whether the backend has devices that --device chooses among (OpenCL, Vulkan).
+  bool has_devices = false;
+  std::string family;  // filled in by the registry from the family the row came from
+};
+
+// A global command-line option a family adds (e.g. the cpu family's --disable-isa). The CLI
+// declares it on every command and calls `apply` before the command runs when it was given.
+struct FamilyOption {
+  std::string flag;  // "--disable-isa"
+  std::string help;
+  std::function<void(const std::string&)> apply;  // throws InputError for a bad value
+};
+
+// A bound the benchmark puts beside the rows timed by `clock` (the cpu family: the psadbw
+// ceiling in TSC cycles): how many times the bound each row's cycles per frame are.
+struct BenchBound {
+  std::string name;   // what the bound is, e.g. "back-to-back psadbw zmm on L1 data"
+  std::string clock;  // rows whose time source contains this ("tsc") get a ratio
+  double bytes_per_cycle = 0;
+  // The bound's cycles for one frame of `pois` POIs at search radius S.
+  std::function<double(long pois, int search_radius)> cycles_per_frame;
+};
+
+// What one family contributes: its rows and the optional extensions only it knows about.
+// Families are registered by the CMake call pxflow_backend_family() (cmake/).
+struct BackendFamily {
+  std::string name;  // "cpu", "opencl", ...
+  std::vector<BackendRow> rows;
+  std::vector<FamilyOption> options;
+  std::function<std::optional<BenchBound>()> measure_bench_bound;  // empty: no bound
 };
 
 }  // namespace pxflow

@@ -1,6 +1,6 @@
 // The reference variants as registry rows: single-threaded, always available, the yardstick
 // every other backend is checked against.
-#include "backend_rows.hpp"
+#include "backend.hpp"
 #include "grid.hpp"
 #include "kernel.hpp"
 
@@ -24,14 +24,15 @@ class ReferenceBackend final : public Backend {
 
 }  // namespace
 
-std::vector<BackendRow> reference_rows() {
-  std::vector<BackendRow> rows;
+BackendFamily reference_family() {
+  BackendFamily family{"reference", {}, {}, {}};
+  auto& rows = family.rows;
   for (RefVariant v : {RefVariant::kOriginal, RefVariant::kLocal, RefVariant::kGlobal}) {
     rows.push_back({std::string(ref_variant_name(v)), "nothing (portable scalar C++)",
                     [] { return std::string(); },
                     [v](const BackendOptions&) { return std::make_unique<ReferenceBackend>(v); }});
   }
-  return rows;
+  return family;
 }
 
 }  // namespace pxflow

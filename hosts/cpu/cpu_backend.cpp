@@ -3,13 +3,17 @@
 // the frame pairs of a batch on a thread pool (BackendOptions::threads, 0 = all cores).
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
 
-#include "backend_rows.hpp"
+#include "backend.hpp"
 #include "cpu_kernel.hpp"
 #include "errors.hpp"
 #include "grid.hpp"
 #include "isa_mask.hpp"
+#if defined(__x86_64__)
+#include "psadbw_ceiling.hpp"
+#endif
 #include "thread_pool.hpp"
 
 namespace pxflow {
@@ -103,15 +107,33 @@ BackendRow dispatcher_row() {
           }};
 }
 
+// The bench's bound for TSC-timed rows: the SAD work at the widest psadbw's measured rate.
+std::optional<BenchBound> psadbw_bound() {
+#if defined(__x86_64__)
+  const cpu::Ceiling c = cpu::measure_ceiling();
+  if (c.bytes_per_cycle <= 0) return std::nullopt;
+  return BenchBound{std::string("back-to-back psadbw ") + c.width + " on L1 data", "tsc",
+                    c.bytes_per_cycle, [bpc = c.bytes_per_cycle](long pois, int radius) {
+                      return cpu::sad_bytes_per_frame(pois, radius) / bpc;
+                    }};
+#else
+  return std::nullopt;
+#endif
+}
+
 }  // namespace
 
-std::vector<BackendRow> cpu_rows() {
-  std::vector<BackendRow> rows;
+BackendFamily cpu_family() {
+  BackendFamily family{"cpu", {}, {}, psadbw_bound};
   for (const std::string& isa : cpu::compiled_isas())
-    rows.push_back({isa, needs_of(isa), [isa] { return cpu::isa_unavailable(isa); },
-                    [isa](const BackendOptions& o) { return create_isa(isa, o); }});
-  rows.push_back(dispatcher_row());
-  return rows;
+    family.rows.push_back({isa, needs_of(isa), [isa] { return cpu::isa_unavailable(isa); },
+                           [isa](const BackendOptions& o) { return create_isa(isa, o); }});
+  family.rows.push_back(dispatcher_row());
+  family.rows.back().preferred = true;
+  family.options.push_back({"--disable-isa",
+                            "Mask CPU ISAs for this run, e.g. avx512bw,avx2 (replaces PXFLOW_DISABLE)",
+                            [](const std::string& list) { cpu::set_disabled_isas(list); }});
+  return family;
 }
 
 }  // namespace pxflow

@@ -1,5 +1,5 @@
 // The GAP8 registry rows: one per kernel variant, on the 8-core cluster model.
-#include "backend_rows.hpp"
+#include "backend.hpp"
 #include "errors.hpp"
 #include "gap8_backend.hpp"
 #include "gap8_kernel_elf.hpp"
@@ -19,8 +19,8 @@ BackendRow gap8_row(const std::string& variant) {
 
 }  // namespace
 
-std::vector<BackendRow> gap8_rows() {
-  return {gap8_row("original"), gap8_row("local"), gap8_row("global")};
+BackendFamily gap8_family() {
+  return {"gap8", {gap8_row("original"), gap8_row("local"), gap8_row("global")}, {}, {}};
 }
 
 }  // namespace pxflow

@@ -11,9 +11,6 @@
 #endif
 
 #include "grid.hpp"
-#ifdef PXFLOW_HAS_PSADBW_CEILING
-#include "psadbw_ceiling.hpp"
-#endif
 #include "registry.hpp"
 #include "synthetic.hpp"
 
@@ -127,17 +124,11 @@ class Bench {
   Backend* backend_for(const BackendRow& row, int threads, BenchReport& report) {
     auto key = std::pair{row.name, threads};
     if (auto it = cache_.find(key); it != cache_.end()) return it->second.get();
-    std::unique_ptr<Backend> b;
-    std::string why = row.probe();
-    if (why.empty()) {
-      try {
-        BackendOptions bo = o_.backend_options;
-        bo.threads = threads;
-        b = row.create(bo);
-      } catch (const std::exception& e) {
-        why = std::string("set-up failed: ") + e.what();
-      }
-    }
+    BackendOptions bo = o_.backend_options;
+    bo.threads = threads;
+    OpenedBackend opened = open_backend(row, bo);
+    std::unique_ptr<Backend> b = std::move(opened.backend);
+    const std::string& why = opened.why_not;
     if (!why.empty() && threads == 0) report.skipped.push_back(row.name + ": " + why);
     return (cache_[key] = std::move(b)).get();
   }
@@ -187,26 +178,30 @@ class Bench {
   std::map<std::pair<std::string, int>, std::unique_ptr<Backend>> cache_;
 };
 
-// How far each TSC row is from the SAD work's bound: cycles per frame over the cycles the
-// widest psadbw would need for the bytes SPEC §6 compares per frame.
+// How far each row is from the bound a family offers (the cpu family: the SAD work at the
+// widest psadbw's rate, in TSC cycles): cycles per frame over the bound's, for the rows timed
+// by the bound's clock. The first family with a bound this machine can measure gives it.
 void add_bound_ratios(BenchReport& r, std::ostream& out) {
-#ifdef PXFLOW_HAS_PSADBW_CEILING
-  const cpu::Ceiling c = cpu::measure_ceiling();
-  if (c.bytes_per_cycle <= 0) return;
-  r.ceiling_width = c.width;
-  r.ceiling_bytes_per_cycle = c.bytes_per_cycle;
-  out << "ceiling: back-to-back psadbw " << c.width << " on L1 data, " << c.bytes_per_cycle << " bytes per TSC cycle\n";
-  for (auto& row : r.rows) {
-    if (row.cycles_per_frame <= 0 || row.source.find("tsc") == std::string::npos) continue;
-    row.bound_ratio = row.cycles_per_frame / (cpu::sad_bytes_per_frame(row.pois_per_frame, row.search_radius) / c.bytes_per_cycle);
-    char line[160];
-    std::snprintf(line, sizeof line, "  %-14s %dx%d S=%d batch=%d threads=%d: %.2fx the bound\n", row.backend.c_str(),
-                  row.width, row.height, row.search_radius, row.batch, row.threads, row.bound_ratio);
-    out << line;
+  for (const BackendFamily& f : backend_families()) {
+    if (!f.measure_bench_bound) continue;
+    const std::optional<BenchBound> bound = f.measure_bench_bound();
+    if (!bound) continue;
+    r.bound_name = bound->name;
+    r.bound_clock = bound->clock;
+    r.bound_bytes_per_cycle = bound->bytes_per_cycle;
+    out << "bound: " << bound->name << ", " << bound->bytes_per_cycle << " bytes per " << bound->clock
+        << " cycle\n";
+    for (auto& row : r.rows) {
+      if (row.cycles_per_frame <= 0 || row.source.find(bound->clock) == std::string::npos) continue;
+      row.bound_ratio = row.cycles_per_frame / bound->cycles_per_frame(row.pois_per_frame, row.search_radius);
+      char line[160];
+      std::snprintf(line, sizeof line, "  %-14s %dx%d S=%d batch=%d threads=%d: %.2fx the bound\n",
+                    row.backend.c_str(), row.width, row.height, row.search_radius, row.batch, row.threads,
+                    row.bound_ratio);
+      out << line;
+    }
+    return;
   }
-#else
-  (void)r, (void)out;
-#endif
 }
 
 // Speed-up of every timed row over ref-original at the same point, measured by the same clock.
@@ -279,8 +274,8 @@ Json bench_json(const BenchReport& r) {
     rows.push_back(std::move(j));
   }
   Json j{{"rows", rows}, {"skipped", r.skipped}};
-  if (r.ceiling_bytes_per_cycle > 0)
-    j["ceiling"] = {{"psadbw_width", r.ceiling_width}, {"bytes_per_tsc_cycle", r.ceiling_bytes_per_cycle}};
+  if (r.bound_bytes_per_cycle > 0)
+    j["bound"] = {{"name", r.bound_name}, {"clock", r.bound_clock}, {"bytes_per_cycle", r.bound_bytes_per_cycle}};
   return j;
 }
 

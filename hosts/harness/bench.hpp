@@ -36,13 +36,15 @@ struct BenchRow {
   double median_ns_per_frame = 0, min_ns_per_frame = 0, max_ns_per_frame = 0;
   double frames_per_s = 0, ns_per_poi = 0;
   double cycles_per_frame = 0;  // 0 when the source has no cycle clock
-  double bound_ratio = 0;  // TSC cycles per frame / the psadbw bound (docs/cpu-simd.md); 0: none
+  double bound_ratio = 0;  // cycles per frame / the bound's (BenchBound, docs/cpu-simd.md); 0: none
   double speedup_vs_reference = 0;  // vs ref-original, same point and source; 0 when not measured
 };
 
 struct BenchReport {
-  std::string ceiling_width;           // widest psadbw measured ("xmm", "ymm", "zmm"), or empty
-  double ceiling_bytes_per_cycle = 0;  // its bytes compared per TSC cycle
+  // The bound a family offered (BenchBound), or empty: what it is, the clock of the rows it
+  // applies to, and its bytes compared per cycle of that clock.
+  std::string bound_name, bound_clock;
+  double bound_bytes_per_cycle = 0;
   std::vector<BenchRow> rows;
   std::vector<std::string> skipped;  // "backend: reason" lines
 };

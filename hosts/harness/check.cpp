@@ -14,13 +14,11 @@
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "grid.hpp"
-#include "record_diff.hpp"
+#include "exactness.hpp"
 #include "registry.hpp"
 
 namespace pxflow {
 namespace {
-
-constexpr unsigned char kSentinel = 0xA5;
 
 struct Contender {
   const BackendRow* row;
@@ -39,17 +37,12 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
     if (name != "all") find_backend(name);  // unknown names are bad input
   for (auto& c : out) {
     c.outcome.name = c.row->name;
-    std::string why = c.row->probe();
-    if (why.empty()) {
-      try {
-        c.backend = c.row->create(o.backend_options);
-      } catch (const std::exception& e) {
-        why = std::string("set-up failed: ") + e.what();
-      }
-    }
+    OpenedBackend opened = open_backend(*c.row, o.backend_options);
+    c.backend = std::move(opened.backend);
+    const std::string why = opened.why_not;
     if (!why.empty()) {
       const bool required = all || std::find(o.require.begin(), o.require.end(), c.row->name) != o.require.end();
-      c.outcome.state = required ? "failed" : "skipped";
+      c.outcome.state = required ? BackendState::kFailed : BackendState::kSkipped;
       c.outcome.reason = why;
       if (required) c.outcome.failures.push_back("FAIL " + c.row->name + ": required but cannot run: " + why);
     }
@@ -70,39 +63,20 @@ std::string block_dump(const FrameView& f, int x, int y) {
   return s.str();
 }
 
-struct Expected {
-  std::vector<PoiRecord> records;
-  std::vector<FrameResult> results;
-};
-
-Expected reference_answer(const CheckCase& c) {
-  Expected e;
-  const std::size_t per = poi_count(c.params);
-  std::vector<FramePair> views;
-  for (const auto& p : c.pairs) views.push_back(p.view());
-  e.records.resize(per * views.size());
-  OpCounts counts;
-  find_backend("ref-original").create({})->run(views, c.params, e.records, counts);
-  for (std::size_t n = 0; n < views.size(); ++n)
-    e.results.push_back(estimate_flow(std::span(e.records).subspan(n * per, per), c.params));
-  return e;
-}
-
 class Checker {
  public:
   Checker(const CheckOptions& o, std::ostream& out) : o_(o), out_(out) {}
 
   // Runs one case on one contender; returns false when it failed.
-  bool run_case(Contender& k, const CheckCase& c, const Expected& e) {
+  bool run_case(Contender& k, const CheckCase& c, const ReferenceAnswer& e) {
     if (const std::string why = k.backend->unsupported(c.params); !why.empty()) {
       ++k.outcome.not_applicable;
       return true;
     }
-    const std::size_t per = poi_count(c.params);
     std::vector<FramePair> views;
-    for (const auto& p : c.pairs) views.push_back(p.view());
-    std::vector<PoiRecord> got(e.records.size());
-    std::memset(got.data(), kSentinel, got.size() * sizeof(PoiRecord));
+    std::vector<std::string> names;
+    for (const auto& p : c.pairs) views.push_back(p.view()), names.push_back(p.name);
+    std::vector<PoiRecord> got = sentinel_records(e.records.size());
     OpCounts counts;
     const auto t0 = std::chrono::steady_clock::now();
     try {
@@ -112,56 +86,31 @@ class Checker {
     }
     k.outcome.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     k.outcome.pairs += static_cast<long>(c.pairs.size());
-    int lines = 0, mismatches = 0;
-    for (std::size_t pair = 0; pair < c.pairs.size(); ++pair) {
-      const std::string where = prefix(k, c) + " pair=" + c.pairs[pair].name;
-      for (std::size_t n = 0; n < per; ++n) {
-        const PoiRecord& want = e.records[pair * per + n];
-        const PoiRecord& have = got[pair * per + n];
-        std::optional<FieldDiff> d = untouched(have, kSentinel)
-                                         ? FieldDiff{"record", "written", "never written (sentinel intact)"}
-                                         : first_difference(want, have);
-        if (!d) continue;
-        if (++mismatches > o_.max_lines_per_case) continue;
-        std::string line = where + " poi=" + std::to_string(n) + " (x=" + std::to_string(want.x) +
-                           ",y=" + std::to_string(want.y) + ") field=" + d->field + " expected=" + d->expected +
-                           " got=" + d->got;
-        if (o_.verbose) line += "\n" + blocks(c.pairs[pair], want);
-        lines += emit(k, line);
-      }
-      const FrameResult r = estimate_flow(std::span(got).subspan(pair * per, per), c.params);
-      for (auto [field, want, have] : {std::tuple{"flow_x", e.results[pair].flow_x, r.flow_x},
-                                       std::tuple{"flow_y", e.results[pair].flow_y, r.flow_y}})
-        if (std::bit_cast<std::uint32_t>(want) != std::bit_cast<std::uint32_t>(have) &&
-            ++mismatches <= o_.max_lines_per_case)
-          lines += emit(k, where + " field=" + field + " expected=" + float_bits_hex(want) +
-                              " got=" + float_bits_hex(have));
-    }
-    if (mismatches > o_.max_lines_per_case)
-      emit(k, prefix(k, c) + " ... and " + std::to_string(mismatches - o_.max_lines_per_case) + " more mismatches");
-    if (mismatches == 0) {
+    RecordDetail detail;
+    if (o_.verbose) detail = [&](std::size_t pair, const PoiRecord& want) { return blocks(c.pairs[pair], want); };
+    const Comparison cmp =
+        compare_with_reference(label(k, c), names, c.params, e, got, o_.max_lines_per_case, detail);
+    for (const std::string& line : cmp.lines) emit(k, line);
+    if (cmp.ok()) {
       ++k.outcome.passed;
       return true;
     }
     ++k.outcome.failed;
-    k.outcome.state = "failed";
+    k.outcome.state = BackendState::kFailed;
     return false;
   }
 
  private:
-  static std::string prefix(const Contender& k, const CheckCase& c) {
-    return "FAIL " + k.row->name + " case=" + c.name + "[" + c.setting + "]";
-  }
+  static CaseLabel label(const Contender& k, const CheckCase& c) { return {k.row->name, c.name, c.setting}; }
   bool fail(Contender& k, const CheckCase& c, const std::string& what) {
-    emit(k, prefix(k, c) + " " + what);
+    emit(k, label(k, c).prefix() + " " + what);
     ++k.outcome.failed;
-    k.outcome.state = "failed";
+    k.outcome.state = BackendState::kFailed;
     return false;
   }
-  int emit(Contender& k, const std::string& line) {
+  void emit(Contender& k, const std::string& line) {
     out_ << line << '\n' << std::flush;
     k.outcome.failures.push_back(line);
-    return 1;
   }
   static std::string blocks(const OwnedPair& p, const PoiRecord& r) {
     const FramePair f = p.view();
@@ -181,6 +130,15 @@ void progress(const std::string& text) {
 }
 
 }  // namespace
+
+const char* state_name(BackendState s) {
+  switch (s) {
+    case BackendState::kPassed: return "passed";
+    case BackendState::kFailed: return "failed";
+    case BackendState::kSkipped: return "skipped";
+  }
+  return "?";
+}
 
 CheckReport run_check(const CheckOptions& o, std::ostream& out) {
   CheckReport report;
@@ -215,7 +173,7 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
   }
   for (auto& k : contenders) {
     if (k.backend) continue;
-    if (k.outcome.state == "failed")
+    if (k.outcome.state == BackendState::kFailed)
       out << k.outcome.failures.front() << "\n";
     else
       out << "skip " << k.row->name << " (" << k.outcome.reason << ")\n";
@@ -227,7 +185,9 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
     report.pairs += static_cast<long>(c.pairs.size());
     progress("check: " + std::to_string(report.cases) + " cases, " + std::to_string(report.pairs) +
              (o.fuzz_pairs > 0 ? " of " + std::to_string(o.fuzz_pairs) : std::string()) + " pairs");
-    const Expected e = reference_answer(c);
+    std::vector<FramePair> views;
+    for (const auto& p : c.pairs) views.push_back(p.view());
+    const ReferenceAnswer e = reference_answer(views, c.params);
     for (auto& k : contenders)
       if (k.backend) checker.run_case(k, c, e);
   }
@@ -236,7 +196,7 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
   for (auto& k : contenders) {
     BackendOutcome& b = k.outcome;
     if (!k.backend) {
-      (b.state == "failed" ? report.failed : report.skipped) += report.cases;
+      (b.state == BackendState::kFailed ? report.failed : report.skipped) += report.cases;
     } else {
       report.passed += b.passed;
       report.failed += b.failed;
@@ -258,7 +218,7 @@ Json check_json(const CheckReport& r) {
   j["not_applicable"] = r.not_applicable;
   j["backends"] = Json::array();
   for (const auto& b : r.backends)
-    j["backends"].push_back({{"name", b.name}, {"state", b.state}, {"reason", b.reason},
+    j["backends"].push_back({{"name", b.name}, {"state", state_name(b.state)}, {"reason", b.reason},
                              {"passed", b.passed}, {"failed", b.failed}, {"not_applicable", b.not_applicable},
                              {"pairs", b.pairs}, {"seconds", b.seconds}, {"failures", b.failures}});
   return j;

@@ -22,9 +22,13 @@ struct CheckOptions {
   CorpusOptions corpus;
 };
 
+// How a backend came out of a check (JSON and reports spell it with state_name()).
+enum class BackendState { kPassed, kFailed, kSkipped };
+const char* state_name(BackendState s);  // "passed", "failed", "skipped"
+
 struct BackendOutcome {
   std::string name;
-  std::string state = "passed";  // passed | failed | skipped
+  BackendState state = BackendState::kPassed;
   std::string reason;            // why skipped
   long passed = 0, failed = 0, not_applicable = 0;  // cases
   long pairs = 0;

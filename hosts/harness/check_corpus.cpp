@@ -38,7 +38,7 @@ std::vector<std::pair<std::string, std::pair<Frame, Frame>>> real_pairs(const Co
   auto path = [&](const char* name) {
     const std::string p = o.data_dir + "/" + name;
     if (!std::filesystem::exists(p))
-      throw InputError(p + ": real frame missing (Debian's opencv-doc; bash ci/install-deps.sh installs it)");
+      throw InputError(p + ": real frame missing " + kSampleDataHint);
     return p;
   };
   for (const char* stem : {"rubberwhale", "basketball"})

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "params.hpp"
+#include "sample_data.hpp"
 #include "synthetic.hpp"
 
 namespace pxflow {
@@ -21,7 +22,7 @@ struct CheckCase {
 
 struct CorpusOptions {
   std::uint64_t seed = 1;
-  std::string data_dir = "/usr/share/doc/opencv-doc/examples/data";
+  std::string data_dir = kSampleDataDir;
   bool real = true;  // false: generated inputs only (no files needed)
 };
 

@@ -261,12 +261,18 @@ void write_report(const std::string& out_dir, const ReportInputs& in) {
     secs.push_back(scaling(in.bench, "size", "Scaling with frame size"));
   }
   if (!in.accuracy.empty()) secs.push_back(accuracy_section(in));
-  for (const auto& t : in.tables) secs.push_back({t.title, t.text, t.header, t.rows, t.svg, {}});
+  Json commands{{"check", in.check_command}, {"bench", in.bench_command}, {"report", in.report_command}};
+  Json results{{"machine", m}, {"commands", nullptr}, {"check", in.check}, {"bench", in.bench}};
+  for (const auto& s : in.sections) {
+    for (const auto& t : s.tables) secs.push_back({t.title, t.text, t.header, t.rows, t.svg, {}});
+    commands[s.key] = s.command;
+    results[s.key] = s.data;
+  }
+  results["commands"] = commands;
   const std::filesystem::path dir(out_dir);
   write_file(dir / "report.md", render_md(secs, intro));
   write_file(dir / "report.html", render_html(secs, intro, dir));
-  write_file(dir / "results.json", Json{{"machine", m}, {"commands", {{"check", in.check_command}, {"bench", in.bench_command}, {"gap8", in.gap8_command}, {"report", in.report_command}}},
-                                        {"check", in.check}, {"bench", in.bench}, {"gap8", in.gap8}}.dump(2) + "\n");
+  write_file(dir / "results.json", results.dump(2) + "\n");
   write_file(dir / "results.csv", csv(in.bench));
 }
 

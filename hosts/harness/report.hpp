@@ -20,17 +20,22 @@ struct ReportInputs {
     std::string caption, file;
   };
   std::vector<Picture> pictures;
-  // Sections measured outside the harness (the GAP8 model beside the paper's tables): a table
-  // each, with an optional inline SVG chart, after the harness's own sections.
+  // Sections a family adds (the GAP8 model beside the paper's tables), after the harness's own:
+  // tables with optional inline SVG charts, the command that measured them, and their raw
+  // figures for results.json under `key`.
   struct Table {
     std::string title, text;
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> rows;
     std::string svg;
   };
-  std::vector<Table> tables;
-  Json gap8;  // the GAP8 model's raw figures for results.json (pxflow gap8 --json), or null
-  std::string gap8_command;
+  struct Section {
+    std::string key;      // results.json key, e.g. "gap8"
+    std::string command;  // e.g. "pxflow gap8 --cores 1-8"
+    std::vector<Table> tables;
+    Json data;  // raw figures, or null
+  };
+  std::vector<Section> sections;
 };
 
 // Writes the four files into out_dir (created if needed); throws InputError when it cannot.

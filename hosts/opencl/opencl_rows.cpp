@@ -1,7 +1,7 @@
 // The `opencl` registry row.
 #include <sstream>
 
-#include "backend_rows.hpp"
+#include "backend.hpp"
 #include "opencl_backend.hpp"
 
 namespace pxflow {
@@ -31,9 +31,11 @@ std::string probe() {
 
 }  // namespace
 
-std::vector<BackendRow> opencl_rows() {
-  return {{"opencl", "an OpenCL 1.2 device (here PoCL: pocl-opencl-icd)", probe,
-           [](const BackendOptions& options) { return std::make_unique<OpenclBackend>(options); }}};
+BackendFamily opencl_family() {
+  BackendRow row{"opencl", "an OpenCL 1.2 device (here PoCL: pocl-opencl-icd)", probe,
+                 [](const BackendOptions& options) { return std::make_unique<OpenclBackend>(options); }};
+  row.has_devices = true;
+  return {"opencl", {row}, {}, {}};
 }
 
 }  // namespace pxflow

@@ -1,7 +1,7 @@
 // The `vulkan` registry row.
 #include <vulkan/vulkan.h>
 
-#include "backend_rows.hpp"
+#include "backend.hpp"
 #include "context.hpp"
 #include "errors.hpp"
 #include "vulkan_backend.hpp"
@@ -25,7 +25,7 @@ std::string probe_vulkan() {
 
 }  // namespace
 
-std::vector<BackendRow> vulkan_rows() {
+BackendFamily vulkan_family() {
   BackendRow row;
   row.name = "vulkan";
   row.needs = "a Vulkan 1.2 device with a compute queue (lavapipe: mesa-vulkan-drivers)";
@@ -38,7 +38,8 @@ std::vector<BackendRow> vulkan_rows() {
     config.device = options.device;
     return std::make_unique<VulkanBackend>(config);
   };
-  return {row};
+  row.has_devices = true;
+  return {"vulkan", {row}, {}, {}};
 }
 
 }  // namespace pxflow

@@ -4,18 +4,13 @@
 #include <cstring>
 #include <vector>
 
+#include "exactness.hpp"
 #include "grid.hpp"
 #include "kernel.hpp"
 
 namespace pxflow::test {
 
-inline constexpr unsigned char kSentinel = 0xA5;
-
-inline std::vector<PoiRecord> sentinel_records(std::size_t n) {
-  std::vector<PoiRecord> out(n);
-  std::memset(out.data(), kSentinel, n * sizeof(PoiRecord));
-  return out;
-}
+using pxflow::sentinel_records;
 
 inline std::vector<PoiRecord> run_ref(RefVariant v, const FramePair& f, const Params& p,
                                       OpCounts* counts = nullptr) {

@@ -9,6 +9,7 @@
 #include "gap8_backend.hpp"
 #include "grid.hpp"
 #include "kernel.hpp"
+#include "sample_data.hpp"
 
 namespace pxflow::gap8_study {
 namespace {
@@ -77,7 +78,7 @@ Study run_study(const FramePair& pair, const std::string& pair_name, const Param
 }
 
 NamedFrames default_pair(const Params& p) {
-  const std::string dir = "/usr/share/doc/opencv-doc/examples/data/";
+  const std::string dir = std::string(kSampleDataDir) + "/";
   const Frame a = bin(load_frame(dir + "rubberwhale1.png", std::nullopt), 2);
   const Frame b = bin(load_frame(dir + "rubberwhale2.png", std::nullopt), 2);
   for (int y = 0; y + p.height <= a.height; y += 8) {

@@ -147,7 +147,7 @@ void print_tables(const Study& s) {
   }
 }
 
-std::string to_json(const Study& s) {
+Json to_json(const Study& s) {
   using nlohmann::json;
   json variants = json::object();
   for (const auto& [v, by] : in_order(s)) {
@@ -208,7 +208,7 @@ std::string to_json(const Study& s) {
            {"contention", s.options.contention},
            {"split", s.options.chunked ? "chunked" : "round-robin"},
            {"variants", variants}};
-  return out.dump(2) + "\n";
+  return out;
 }
 
 }  // namespace pxflow::gap8_study

@@ -1,4 +1,4 @@
-#include "report_gap8.hpp"
+#include "gap8_cli.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -47,8 +47,10 @@ ReportInputs::Table core_counts(const gap8_study::Study& s, const std::string& c
 }  // namespace
 
 void add_gap8_tables(ReportInputs& in) {
-  in.gap8_command = "pxflow gap8 --cores 1-8";
-  std::cout << "== " << in.gap8_command << "\n";
+  ReportInputs::Section& section = in.sections.emplace_back();
+  section.key = "gap8";
+  section.command = "pxflow gap8 --cores 1-8";
+  std::cout << "== " << section.command << "\n";
   gap8_study::Options options;
   options.variants = {"original", "local", "global"};
   options.cores = {1, 2, 3, 4, 5, 6, 7, 8};
@@ -57,14 +59,14 @@ void add_gap8_tables(ReportInputs& in) {
   try {
     frames = gap8_study::default_pair(p);
   } catch (const InputError& e) {
-    in.tables.push_back({"GAP8 model beside the ISCAS 2022 paper", std::string("Not measured: ") + e.what(), {}, {}, ""});
+    section.tables.push_back({"GAP8 model beside the ISCAS 2022 paper", std::string("Not measured: ") + e.what(), {}, {}, ""});
     return;
   }
   const FramePair pair{frames.prev.view(), frames.next.view()};
   const gap8_study::Study s = gap8_study::run_study(pair, frames.name, p, options);
   const std::string intro = "The GAP8 kernel's three variants (kernels/gap8) on our cycle model of the 8-core cluster "
                             "(TCDM contention on, POIs round robin) on " + frames.name +
-                            ", beside the paper's figures. Command: `" + in.gap8_command +
+                            ", beside the paper's figures. Command: `" + section.command +
                             "`; where and why model and paper differ: docs/gap8-kernel.md.";
   // The paper's tables have 1 and 8 cores; the other counts are in the last table.
   gap8_study::Study paper_cores = s;
@@ -75,10 +77,10 @@ void add_gap8_tables(ReportInputs& in) {
                           {"figure", "variant", "model", "paper", "diff"}, {}, ""};
     first = false;
     for (const auto& l : pt.lines) t.rows.push_back({l.label, l.variant, l.model, l.paper, l.diff});
-    in.tables.push_back(std::move(t));
+    section.tables.push_back(std::move(t));
   }
-  in.tables.push_back(core_counts(s, in.gap8_command));
-  in.gap8 = Json::parse(gap8_study::to_json(s));
+  section.tables.push_back(core_counts(s, section.command));
+  section.data = gap8_study::to_json(s);
 }
 
 }  // namespace pxflow::cli

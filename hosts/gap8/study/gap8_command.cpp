@@ -5,7 +5,7 @@
 #include <fstream>
 #include <memory>
 
-#include "commands.hpp"
+#include "gap8_cli.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "gap8_study.hpp"
@@ -73,7 +73,7 @@ int run_gap8(const Gap8Options& o) {
   gap8_study::print_tables(study);
   if (!o.json_path.empty()) {
     std::ofstream out(o.json_path);
-    if (!(out << gap8_study::to_json(study))) throw InputError("cannot write " + o.json_path);
+    if (!(out << gap8_study::to_json(study).dump(2) << "\n")) throw InputError("cannot write " + o.json_path);
   }
   return 0;
 }

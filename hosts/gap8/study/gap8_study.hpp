@@ -9,6 +9,7 @@
 #include "frame.hpp"
 #include "gap8/perf.h"
 #include "params.hpp"
+#include "result_json.hpp"
 
 namespace pxflow::gap8_study {
 
@@ -79,6 +80,6 @@ struct PaperTable {
 std::vector<PaperTable> paper_tables(const Study& s);
 
 void print_tables(const Study& s);
-std::string to_json(const Study& s);  // {"variants": {"original": {"1": {...}, ...}, ...}, ...}
+Json to_json(const Study& s);  // {"variants": {"original": {"1": {...}, ...}, ...}, ...}
 
 }  // namespace pxflow::gap8_study
