@@ -9,13 +9,14 @@
 #     [CLI_EXTENSION <C++ function>      # returns pxflow::cli::CliExtension (a command, a report
 #      CLI_SOURCES ...])                 # section), compiled into pxflow_cli
 #
-# It declares PXFLOW_WITH_<NAME> (default ON) and PXFLOW_REQUIRE_<NAME> (default
+# It declares PXFLOW_WITH_<NAME> (default PXFLOW_WITH_ALL, ON) and PXFLOW_REQUIRE_<NAME> (default
 # PXFLOW_REQUIRE_ALL: CI sets that, so a missing SDK fails the configure instead of dropping
 # the family), prints one status line, adds the sources to pxflow_core, and registers FAMILY
 # (and CLI_EXTENSION) in the generated tables the registry reads. Nothing else is edited when a
 # family is added. The global property PXFLOW_<NAME>_BUILT says whether it was built (tests).
 include_guard(GLOBAL)
 
+option(PXFLOW_WITH_ALL "Default of every PXFLOW_WITH_<NAME>: build every family that can be" ON)
 option(PXFLOW_REQUIRE_ALL "Fail the configure when any backend family cannot be built" OFF)
 
 function(pxflow_backend_family name)
@@ -25,7 +26,7 @@ function(pxflow_backend_family name)
     message(FATAL_ERROR "pxflow_backend_family(${name}): FAMILY <function> is required")
   endif()
   string(TOLOWER "${name}" label)
-  option(PXFLOW_WITH_${name} "Build the ${label} backends: ${F_DOC}" ON)
+  option(PXFLOW_WITH_${name} "Build the ${label} backends: ${F_DOC}" ${PXFLOW_WITH_ALL})
   option(PXFLOW_REQUIRE_${name} "Fail the configure when the ${label} backends cannot be built"
          ${PXFLOW_REQUIRE_ALL})
   set_property(GLOBAL PROPERTY PXFLOW_${name}_BUILT FALSE)
