@@ -28,7 +28,7 @@ void check_estimate(std::span<const PoiRecord> records, const Params& p,
 
 }  // namespace
 
-Gap8Backend::Gap8Backend(std::string_view variant, gap8_host::RunOptions options, int host_threads)
+Gap8Backend::Gap8Backend(Gap8Variant variant, gap8_host::RunOptions options, int host_threads)
     : variant_(variant), runner_(variant), options_(options), pool_(host_threads) {}
 
 void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
@@ -45,7 +45,7 @@ void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p, std::sp
   last_stats_ = std::move(stats);
 }
 
-OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> records, const Params& p,
+OpCounts gap8_counts(Gap8Variant variant, std::span<const PoiRecord> records, const Params& p,
                      std::size_t pairs) {
   OpCounts c;
   c.counted = true;
@@ -57,10 +57,17 @@ OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> record
     if (r.status == kAccepted) ++accepted;
   }
   c.sad_ops += 128 * accepted;
-  if (variant == "original" || variant == "fast") c.interpolations = 768 * accepted;
-  if (variant == "local") c.interpolations = 300 * accepted;
-  if (variant == "global")
-    c.interpolations = std::uint64_t{3} * p.width * p.height * static_cast<std::uint64_t>(pairs);
+  switch (gap8_variant(variant).half_pixel) {
+    case Gap8HalfPixel::kPerPixel:
+      c.interpolations = 768 * accepted;
+      break;
+    case Gap8HalfPixel::kLocalPlanes:
+      c.interpolations = 300 * accepted;
+      break;
+    case Gap8HalfPixel::kGlobalPlanes:
+      c.interpolations = std::uint64_t{3} * p.width * p.height * static_cast<std::uint64_t>(pairs);
+      break;
+  }
   return c;
 }
 

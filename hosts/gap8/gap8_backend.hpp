@@ -1,5 +1,5 @@
-// The GAP8 backends (`gap8-original`, `gap8-local`, `gap8-global`): the kernel of kernels/gap8
-// on the cluster model, all 8 cores, TCDM contention on. `host_threads` host workers simulate
+// The GAP8 backends (gap8-<variant>, gap8_variants.hpp): the kernel of kernels/gap8 on the
+// cluster model, all 8 cores, TCDM contention on. `host_threads` host workers simulate
 // the batch's cluster runs side by side (0 = every core); the results do not depend on it. Besides the records, each run checks
 // the kernel's own soft-float estimate against estimate_flow() of its records.
 #pragma once
@@ -8,12 +8,13 @@
 
 #include "backend.hpp"
 #include "gap8_flow_runner.hpp"
+#include "gap8_variants.hpp"
 
 namespace pxflow {
 
 class Gap8Backend : public Backend {
  public:
-  Gap8Backend(std::string_view variant, gap8_host::RunOptions options, int host_threads = 1);
+  Gap8Backend(Gap8Variant variant, gap8_host::RunOptions options, int host_threads = 1);
 
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
            OpCounts& counts) override;
@@ -24,7 +25,7 @@ class Gap8Backend : public Backend {
   const gap8_host::BatchStats& last_stats() const { return last_stats_; }
 
  private:
-  std::string variant_;
+  Gap8Variant variant_;
   gap8_host::FlowRunner runner_;
   gap8_host::RunOptions options_;
   ThreadPool pool_;
@@ -35,12 +36,9 @@ class Gap8Backend : public Backend {
 // The model's clock (the paper's operating point): cycles to nanoseconds.
 inline constexpr double kGap8ClockHz = 50e6;
 
-// Besides the rows, the variant "fast" (original with prev's block held in registers during the
-// search) is available to pxflow gap8 and the tests.
-
 // Work of one batch as docs/counting.md charges it, derived from the records (the kernel does
 // exactly this work): SAD operations, and the variant's interpolations.
-OpCounts gap8_counts(std::string_view variant, std::span<const PoiRecord> records, const Params& p,
+OpCounts gap8_counts(Gap8Variant variant, std::span<const PoiRecord> records, const Params& p,
                      std::size_t pairs);
 
 }  // namespace pxflow

@@ -60,16 +60,17 @@ std::uint32_t pair_io_bytes(const Params& p) {
 
 }  // namespace
 
-FlowRunner::FlowRunner(std::string_view variant) {
-  const auto elf = gap8_kernel_elf(variant);
-  if (elf.empty()) throw BackendError("gap8: no kernel ELF for variant " + std::string(variant));
+FlowRunner::FlowRunner(Gap8Variant variant) {
+  const Gap8VariantInfo& info = gap8_variant(variant);
+  const auto elf = gap8_kernel_elf(info.name);
+  if (elf.empty()) throw BackendError(std::string("gap8: no kernel ELF for variant ") + info.name);
   gap8::Memory memory;
   const gap8::ElfImage image = load_embedded(elf, memory);
   entry_ = image.entry;
   params_addr_ = symbol(image, "pxflow_params");
   io_base_ = align_up(symbol(image, "__bss_end"));
   l1_heap_bytes_ = symbol(image, "__l1_heap_end") - symbol(image, "__l1_heap_start");
-  planes_ = variant == "global" ? 3 : 0;
+  planes_ = info.half_pixel == Gap8HalfPixel::kGlobalPlanes ? 3 : 0;
   // Only the loaded part of L2 is copied into each new cluster: the rest is zero anyway.
   l2_image_.resize(io_base_ - GAP8_L2_BASE);
   memory.Read(GAP8_L2_BASE, l2_image_.data(), static_cast<std::uint32_t>(l2_image_.size()));

@@ -11,6 +11,7 @@
 #include "flow_abi.h"
 #include "frame.hpp"
 #include "gap8/perf.h"
+#include "gap8_variants.hpp"
 #include "params.hpp"
 #include "record.hpp"
 #include "thread_pool.hpp"
@@ -32,9 +33,8 @@ struct BatchStats {
 
 class FlowRunner {
  public:
-  // `variant`: "original", "local" or "global". Throws BackendError when the image is missing
-  // or cannot be loaded.
-  explicit FlowRunner(std::string_view variant);
+  // Throws BackendError when the variant's image is missing or cannot be loaded.
+  explicit FlowRunner(Gap8Variant variant);
 
   // Empty when a problem of these parameters fits L1 and L2; else the limit it is outside.
   std::string unsupported(const Params& p) const;

@@ -1,26 +1,30 @@
-// The GAP8 registry rows: one per kernel variant, on the 8-core cluster model.
+// The GAP8 registry rows: one per kernel variant of gap8_variants(), on the 8-core cluster model.
 #include "backend.hpp"
 #include "errors.hpp"
 #include "gap8_backend.hpp"
 #include "gap8_kernel_elf.hpp"
+#include "gap8_variants.hpp"
 
 namespace pxflow {
 namespace {
 
-BackendRow gap8_row(const std::string& variant) {
-  return {"gap8-" + variant, "nothing (the GAP8 cluster cycle model is built in; 8 cores, 50 MHz)",
-          [variant]() -> std::string {
-            return gap8_kernel_elf(variant).empty() ? "no embedded GAP8 kernel ELF" : "";
+BackendRow gap8_row(const Gap8VariantInfo& v) {
+  return {std::string("gap8-") + v.name,
+          "nothing (the GAP8 cluster cycle model is built in; 8 cores, 50 MHz)",
+          [name = v.name]() -> std::string {
+            return gap8_kernel_elf(name).empty() ? "no embedded GAP8 kernel ELF" : "";
           },
-          [variant](const BackendOptions& o) -> std::unique_ptr<Backend> {
-            return std::make_unique<Gap8Backend>(variant, gap8_host::RunOptions{}, o.threads);
+          [id = v.id](const BackendOptions& o) -> std::unique_ptr<Backend> {
+            return std::make_unique<Gap8Backend>(id, gap8_host::RunOptions{}, o.threads);
           }};
 }
 
 }  // namespace
 
 BackendFamily gap8_family() {
-  return {"gap8", {gap8_row("original"), gap8_row("local"), gap8_row("global")}, {}, {}};
+  BackendFamily family{"gap8", {}, {}, {}};
+  for (const Gap8VariantInfo& v : gap8_variants()) family.rows.push_back(gap8_row(v));
+  return family;
 }
 
 }  // namespace pxflow

@@ -1,14 +1,14 @@
 #include "gap8_test_util.hpp"
 
-#include <cstring>
 #include <optional>
 
 #include "frame_io.hpp"
+#include "sample_data.hpp"
 
 namespace pxflow::test {
 
 std::vector<OwnedPair> gap8_real_pairs(int w, int h) {
-  const std::string dir = "/usr/share/doc/opencv-doc/examples/data/";
+  const std::string dir = std::string(kSampleDataDir) + "/";
   std::vector<OwnedPair> out;
   for (const std::string name : {"rubberwhale", "basketball"}) {
     const Frame a = load_frame(dir + name + "1.png", std::nullopt);
@@ -33,16 +33,6 @@ std::vector<OwnedPair> gap8_corpus(const Params& p, int n_random, std::uint64_t 
     out.push_back(std::move(h));
   for (OwnedPair& r : gap8_real_pairs(p.width, p.height)) out.push_back(std::move(r));
   return out;
-}
-
-std::string first_difference(const std::vector<PoiRecord>& expected,
-                             const std::vector<PoiRecord>& got, const std::string& what) {
-  if (expected.size() != got.size()) return what + ": record count differs";
-  for (std::size_t i = 0; i < expected.size(); ++i)
-    if (std::memcmp(&expected[i], &got[i], sizeof(PoiRecord)) != 0)
-      return what + ": record " + std::to_string(i) + " (x=" + std::to_string(expected[i].x) +
-             ", y=" + std::to_string(expected[i].y) + ") differs";
-  return {};
 }
 
 }  // namespace pxflow::test

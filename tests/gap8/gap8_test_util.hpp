@@ -9,14 +9,11 @@
 
 namespace pxflow::test {
 
-// rubberwhale and basketball from Debian's opencv-doc, w x h cut from the middle.
+// rubberwhale and basketball of the sample data (sample_data.hpp), w x h cut from the middle.
 std::vector<OwnedPair> gap8_real_pairs(int w, int h);
 
 // `n` seeded random pairs, every hostile pattern and the real pairs, at p's size.
 std::vector<OwnedPair> gap8_corpus(const Params& p, int n_random, std::uint64_t seed);
 
-// The first difference between two record arrays ("" when identical byte for byte).
-std::string first_difference(const std::vector<PoiRecord>& expected,
-                             const std::vector<PoiRecord>& got, const std::string& what);
 
 }  // namespace pxflow::test

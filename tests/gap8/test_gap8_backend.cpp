@@ -9,23 +9,25 @@
 #include "gap8_test_util.hpp"
 #include "grid.hpp"
 #include "registry.hpp"
+#include "exact_check.hpp"
+#include "gap8_variants.hpp"
 #include "run_helpers.hpp"
 
 namespace pxflow::test {
 
-TEST_CASE("gap8 rows are registered and can run here", "[gap8]") {
-  for (const char* name : {"gap8-original", "gap8-local", "gap8-global"}) {
-    const BackendRow* row = nullptr;
-    for (const BackendRow& r : backend_rows())
-      if (r.name == name) row = &r;
-    REQUIRE(row != nullptr);
-    CHECK(row->probe() == "");
-    CHECK(row->create(BackendOptions{}) != nullptr);
+TEST_CASE("gap8 rows: one per variant, registered and able to run here", "[gap8]") {
+  for (const Gap8VariantInfo& v : gap8_variants()) {
+    const BackendRow& row = find_backend(std::string("gap8-") + v.name);
+    CHECK(row.family == "gap8");
+    CHECK(row.probe() == "");
+    CHECK(row.create(BackendOptions{}) != nullptr);
   }
+  CHECK(gap8_variants().size() == 4);  // original, local, global (the paper's) and fast
+  CHECK_THROWS_AS(find_gap8_variant("orignal"), InputError);
 }
 
 TEST_CASE("gap8 refuses what does not fit L1, with the reason", "[gap8]") {
-  Gap8Backend original("original", {}), global("global", {});
+  Gap8Backend original(Gap8Variant::kOriginal, {}), global(Gap8Variant::kGlobal, {});
   CHECK(original.unsupported(profile("px4flow-64")).empty());
   CHECK(global.unsupported(profile("px4flow-64")).empty());
   Params vga = profile("px4flow-64");
@@ -47,20 +49,20 @@ TEST_CASE("gap8 reports model cycles and the paper's work counts", "[gap8][no-sa
   const Params p = profile("px4flow-64");
   const OwnedPair pair = shifted_texture_pair(64, 64, 4, 11);
   const FramePair view = pair.view();
-  const struct {
-    const char* variant;
-    RefVariant ref;
-  } cases[] = {{"original", RefVariant::kOriginal},
-               {"local", RefVariant::kLocal},
-               {"global", RefVariant::kGlobal}};
-  for (const auto& c : cases) {
-    INFO(c.variant);
-    Gap8Backend backend(c.variant, {});
+  // Each variant is charged as the reference variant that makes half-pixel values its way.
+  auto ref_of = [](Gap8HalfPixel h) {
+    return h == Gap8HalfPixel::kPerPixel      ? RefVariant::kOriginal
+           : h == Gap8HalfPixel::kLocalPlanes ? RefVariant::kLocal
+                                              : RefVariant::kGlobal;
+  };
+  for (const Gap8VariantInfo& v : gap8_variants()) {
+    INFO(v.name);
+    Gap8Backend backend(v.id, {});
     CHECK_FALSE(backend.last_device_time().has_value());
     std::vector<PoiRecord> got = sentinel_records(poi_count(p));
     OpCounts counts, ref_counts;
     backend.run({&view, 1}, p, got, counts);
-    run_ref(c.ref, view, p, &ref_counts);
+    run_ref(ref_of(v.half_pixel), view, p, &ref_counts);
     CHECK(counts.counted);
     CHECK(counts.sad_ops == ref_counts.sad_ops);
     CHECK(counts.interpolations == ref_counts.interpolations);
@@ -80,16 +82,10 @@ TEST_CASE("gap8 chunked POI split gives the same records", "[gap8][no-sanitizer]
   const Params p = profile("px4flow-head");
   const std::vector<OwnedPair> corpus = gap8_corpus(p, 4, 77);
   for (int cores : {3, 8}) {
-    Gap8Backend backend("local", gap8_host::RunOptions{cores, true, true});
-    for (const OwnedPair& o : corpus) {
-      const FramePair view = o.view();
-      std::vector<PoiRecord> got = sentinel_records(poi_count(p));
-      OpCounts counts;
-      backend.run({&view, 1}, p, got, counts);
-      const std::vector<PoiRecord> expected = run_ref(RefVariant::kOriginal, view, p);
-      INFO(first_difference(expected, got, o.name));
-      REQUIRE(std::memcmp(expected.data(), got.data(), got.size() * sizeof(PoiRecord)) == 0);
-    }
+    Gap8Backend backend(Gap8Variant::kLocal, gap8_host::RunOptions{cores, true, true});
+    require_exact({"gap8-local chunked on " + std::to_string(cores) + " cores", "gap8 corpus",
+                   "px4flow-head"},
+                  corpus, p, batch_run_of(backend));
   }
 }
 
@@ -101,7 +97,7 @@ TEST_CASE("gap8 known answer: texture shifted by (+2, -1)", "[gap8][no-sanitizer
   pair.next.resize(pair.prev.size());
   shift_into(pair.prev, pair.next, 64, 64, 2, -1, 9);
   const FramePair view = pair.view();
-  Gap8Backend backend("global", {});
+  Gap8Backend backend(Gap8Variant::kGlobal, {});
   std::vector<PoiRecord> got = sentinel_records(poi_count(p));
   OpCounts counts;
   backend.run({&view, 1}, p, got, counts);
@@ -124,15 +120,15 @@ TEST_CASE("gap8 batch of several cluster runs: same bytes and cycles on 1 and 2 
   for (int i = 0; i < 100; ++i) owned.push_back(random_pair(p.width, p.height, p.search_radius, 2026 + i));
   std::vector<FramePair> views;
   for (const OwnedPair& o : owned) views.push_back(o.view());
-  std::vector<PoiRecord> expected;
-  for (const FramePair& v : views)
-    for (const PoiRecord& r : run_ref(RefVariant::kOriginal, v, p)) expected.push_back(r);
+  std::vector<std::string> names;
+  for (const OwnedPair& o : owned) names.push_back(o.name);
+  const ReferenceAnswer want = reference_answer(views, p);
 
   std::vector<std::vector<PoiRecord>> got;
   std::vector<std::uint64_t> cycles;
   std::vector<std::vector<pxflow_gap8_result>> results;
   for (int threads : {1, 2}) {
-    Gap8Backend backend("original", {}, threads);
+    Gap8Backend backend(Gap8Variant::kOriginal, {}, threads);
     got.push_back(sentinel_records(views.size() * poi_count(p)));
     OpCounts counts;
     backend.run(views, p, got.back(), counts);
@@ -140,8 +136,10 @@ TEST_CASE("gap8 batch of several cluster runs: same bytes and cycles on 1 and 2 
     results.push_back(backend.last_stats().pairs);
   }
   for (const auto& g : got) {
-    INFO(first_difference(expected, g, "100 random pairs"));
-    REQUIRE(std::memcmp(expected.data(), g.data(), g.size() * sizeof(PoiRecord)) == 0);
+    const Comparison c =
+        compare_with_reference({"gap8-original", "100 random pairs", "px4flow-64"}, names, p, want, g, 5);
+    INFO(c.text());
+    REQUIRE(c.ok());
   }
   CHECK(cycles[0] == cycles[1]);
   REQUIRE(results[0].size() == views.size());

@@ -6,49 +6,28 @@
 #include "gap8_backend.hpp"
 #include "gap8_test_util.hpp"
 #include "grid.hpp"
-#include "run_helpers.hpp"
+#include "exact_check.hpp"
 
 namespace pxflow::test {
 namespace {
 
-void check_exact(const std::string& variant, int cores, const Params& p, int n_random,
-                 std::uint64_t seed) {
-  Gap8Backend backend(variant, gap8_host::RunOptions{cores, true, false});
+// The whole corpus as one batch (run() also checks the kernel's own estimate).
+void check_variant(const Gap8VariantInfo& v, int cores, const std::string& setting, const Params& p,
+                   int n_random, std::uint64_t seed) {
+  Gap8Backend backend(v.id, gap8_host::RunOptions{cores, true, false});
   REQUIRE(backend.unsupported(p).empty());
-  const std::vector<OwnedPair> corpus = gap8_corpus(p, n_random, seed);
-  std::vector<FramePair> views;
-  for (const OwnedPair& o : corpus) views.push_back(o.view());
-  const std::size_t pois = poi_count(p);
-  std::vector<PoiRecord> got = sentinel_records(pois * views.size());
-  OpCounts counts;
-  backend.run(views, p, got, counts);  // also checks the kernel's own estimate
-  for (std::size_t i = 0; i < views.size(); ++i) {
-    const std::vector<PoiRecord> expected = run_ref(RefVariant::kOriginal, views[i], p);
-    const std::vector<PoiRecord> mine(got.begin() + i * pois, got.begin() + (i + 1) * pois);
-    INFO(first_difference(expected, mine, corpus[i].name));
-    REQUIRE(std::memcmp(expected.data(), mine.data(), pois * sizeof(PoiRecord)) == 0);
-  }
+  const std::string who = std::string("gap8-") + v.name + " on " + std::to_string(cores) + " cores";
+  require_exact({who, "gap8 corpus", setting},
+                gap8_corpus(p, n_random, seed), p, batch_run_of(backend));
 }
 
 }  // namespace
 
-TEST_CASE("gap8 variants are bit-exact at px4flow-64 on 1 and 8 cores", "[gap8][no-sanitizer]") {
-  const Params p = profile("px4flow-64");
-  for (const char* variant : {"original", "local", "global", "fast"}) {
-    for (int cores : {1, 8}) {
-      INFO(variant << " on " << cores << " cores");
-      check_exact(variant, cores, p, 6, 1000 + cores);
-    }
-  }
-}
-
-TEST_CASE("gap8 variants are bit-exact at px4flow-head on 1 and 8 cores", "[gap8][no-sanitizer]") {
-  const Params p = profile("px4flow-head");
-  for (const char* variant : {"original", "local", "global"}) {
-    for (int cores : {1, 8}) {
-      INFO(variant << " on " << cores << " cores");
-      check_exact(variant, cores, p, 6, 2000 + cores);
-    }
+TEST_CASE("gap8 variants are bit-exact at both profiles on 1 and 8 cores", "[gap8][no-sanitizer]") {
+  for (const char* profile_name : {"px4flow-64", "px4flow-head"}) {
+    const Params p = profile(profile_name);
+    for (const Gap8VariantInfo& v : gap8_variants())
+      for (int cores : {1, 8}) check_variant(v, cores, profile_name, p, 6, 1000 + cores);
   }
 }
 
@@ -61,10 +40,7 @@ TEST_CASE("gap8 is bit-exact on a larger frame that fits L1, odd width included"
   p.blocks = 6;
   p.hist_filter = false;
   validate(p);
-  for (const char* variant : {"original", "local", "global", "fast"}) {
-    INFO(variant);
-    check_exact(variant, 8, p, 3, 3000);
-  }
+  for (const Gap8VariantInfo& v : gap8_variants()) check_variant(v, 8, "101x72 S=7 B=6", p, 3, 3000);
 }
 
 }  // namespace pxflow::test

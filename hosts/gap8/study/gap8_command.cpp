@@ -43,10 +43,20 @@ std::vector<int> parse_cores(const std::string& text) {
   return out;
 }
 
-std::vector<std::string> parse_variants(const std::string& v) {
-  if (v == "all") return {"original", "local", "global"};
-  if (v == "original" || v == "local" || v == "global" || v == "fast") return {v};
-  throw InputError("--variant must be original, local, global, fast or all, not '" + v + "'");
+// "all": the paper's variants; else one name of gap8_variants().
+std::vector<Gap8Variant> parse_variants(const std::string& v) {
+  std::vector<Gap8Variant> out;
+  if (v == "all") {
+    for (const Gap8VariantInfo& info : gap8_variants())
+      if (info.in_paper) out.push_back(info.id);
+    return out;
+  }
+  try {
+    return {find_gap8_variant(v).id};
+  } catch (const InputError&) {
+    throw InputError("--variant must be " + gap8_variant_names() + " or all (the paper's), not '" +
+                     v + "'");
+  }
 }
 
 int run_gap8(const Gap8Options& o) {
@@ -86,7 +96,7 @@ Command add_gap8_command(CLI::App& app) {
       "gap8", "The GAP8 kernel on the cluster model beside the ISCAS 2022 paper's tables");
   o->problem.add_to(*sub);
   sub->add_option("--variant", o->variant,
-                  "original, local, global, all (the paper's three) or fast (ours)")
+                  gap8_variant_names() + ", or all (the paper's three)")
       ->capture_default_str();
   sub->add_option("--cores", o->cores, "Core counts, e.g. 1,8 or 1-8")->capture_default_str();
   sub->add_option("--mhz", o->mhz, "Cluster clock for fps and latency")->capture_default_str();

@@ -16,7 +16,7 @@ namespace {
 
 constexpr double k = 1000.0;
 
-Measure measure(const std::string& variant, int cores, const FramePair& pair, const Params& p,
+Measure measure(Gap8Variant variant, int cores, const FramePair& pair, const Params& p,
                 const Options& o) {
   gap8_host::FlowRunner runner(variant);
   std::vector<PoiRecord> records(poi_count(p));
@@ -38,18 +38,18 @@ Measure measure(const std::string& variant, int cores, const FramePair& pair, co
 
 }  // namespace
 
-std::optional<PaperFigures> paper(const std::string& variant, int cores) {
+std::optional<PaperFigures> paper(Gap8Variant variant, int cores) {
   // Tables I-III of the paper; "k" figures as printed (rounded to 0.1k).
   struct Row {
-    const char* name;
+    Gap8Variant variant;
     double interp, instr, cyc1, cyc8, speedup8, flow1, flow8, amdahl8;
   };
   static const Row rows[] = {
-      {"original", 49152, 624.2 * k, 717.2 * k, 99.0 * k, 7.24, 711.5 * k, 93.3 * k, 7.578},
-      {"local", 19200, 585.9 * k, 681.8 * k, 94.5 * k, 7.21, 676.1 * k, 88.8 * k, 7.558},
-      {"global", 12288, 594.3 * k, 691.3 * k, 96.4 * k, 7.17, 685.6 * k, 90.7 * k, 7.563}};
+      {Gap8Variant::kOriginal, 49152, 624.2 * k, 717.2 * k, 99.0 * k, 7.24, 711.5 * k, 93.3 * k, 7.578},
+      {Gap8Variant::kLocal, 19200, 585.9 * k, 681.8 * k, 94.5 * k, 7.21, 676.1 * k, 88.8 * k, 7.558},
+      {Gap8Variant::kGlobal, 12288, 594.3 * k, 691.3 * k, 96.4 * k, 7.17, 685.6 * k, 90.7 * k, 7.563}};
   for (const Row& r : rows) {
-    if (variant != r.name || (cores != 1 && cores != 8)) continue;
+    if (variant != r.variant || (cores != 1 && cores != 8)) continue;
     PaperFigures f;
     f.interpolations = r.interp;
     f.sad_ops = 91520;
@@ -72,7 +72,7 @@ Study run_study(const FramePair& pair, const std::string& pair_name, const Param
     options.cores.insert(options.cores.begin(), 1);
   std::sort(options.cores.begin(), options.cores.end());
   Study s{options, pair_name, {}};
-  for (const std::string& v : options.variants)
+  for (Gap8Variant v : options.variants)
     for (int c : options.cores) s.results[v][c] = measure(v, c, pair, p, options);
   return s;
 }
@@ -97,11 +97,11 @@ NamedFrames default_pair(const Params& p) {
   throw InputError("no window of rubberwhale1/2 has every POI accepted; give PREV NEXT");
 }
 
-double speedup(const Study& s, const std::string& v, int cores) {
+double speedup(const Study& s, Gap8Variant v, int cores) {
   return s.results.at(v).at(1).cycles / s.results.at(v).at(cores).cycles;
 }
 
-double amdahl_limit(const Study& s, const std::string& v, int cores) {
+double amdahl_limit(const Study& s, Gap8Variant v, int cores) {
   const Measure& one = s.results.at(v).at(1);
   const double serial = one.cycles - one.phases.flow;
   return one.cycles / (serial + one.phases.flow / cores);

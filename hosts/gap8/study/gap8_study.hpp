@@ -8,6 +8,7 @@
 
 #include "frame.hpp"
 #include "gap8/perf.h"
+#include "gap8_variants.hpp"
 #include "params.hpp"
 #include "result_json.hpp"
 
@@ -32,10 +33,10 @@ struct PaperFigures {
   std::optional<double> cycles, instructions, interpolations, sad_ops, speedup, amdahl_limit, fps;
   std::optional<Phases> phases;
 };
-std::optional<PaperFigures> paper(const std::string& variant, int cores);
+std::optional<PaperFigures> paper(Gap8Variant variant, int cores);
 
 struct Options {
-  std::vector<std::string> variants;
+  std::vector<Gap8Variant> variants;
   std::vector<int> cores;
   double mhz = 50;
   bool contention = true;
@@ -45,7 +46,7 @@ struct Options {
 struct Study {
   Options options;
   std::string pair_name;
-  std::map<std::string, std::map<int, Measure>> results;  // variant -> cores -> measure
+  std::map<Gap8Variant, std::map<int, Measure>> results;  // variant -> cores -> measure
 };
 
 // Runs every variant on every core count (1 is always measured: speed-ups are relative to it).
@@ -63,8 +64,8 @@ NamedFrames default_pair(const Params& p);
 
 // Speed-up over 1 core, Amdahl's limit from the 1-core phases (every phase but the flow is
 // serial), frames per second at the clock.
-double speedup(const Study& s, const std::string& variant, int cores);
-double amdahl_limit(const Study& s, const std::string& variant, int cores);
+double speedup(const Study& s, Gap8Variant variant, int cores);
+double amdahl_limit(const Study& s, Gap8Variant variant, int cores);
 double fps(const Study& s, double cycles);
 
 // Tables I-III of the paper with the model beside them, one line per figure, already formatted

@@ -24,15 +24,16 @@ std::string num(std::optional<double> v, const char* fmt = "%.1fk", double scale
   return buf;
 }
 
-PaperLine line(const std::string& label, const std::string& variant, double model,
+PaperLine line(const std::string& label, Gap8Variant variant, double model,
                std::optional<double> paper, const char* fmt = "%.1fk", double scale = 1000.0) {
-  return {label, variant, num(model, fmt, scale), num(paper, fmt, scale), diff(model, paper)};
+  return {label, gap8_variant(variant).name, num(model, fmt, scale), num(paper, fmt, scale),
+          diff(model, paper)};
 }
 
 // The variants in the order asked for (original, local, global), not the map's.
-std::vector<std::pair<std::string, const std::map<int, Measure>&>> in_order(const Study& s) {
-  std::vector<std::pair<std::string, const std::map<int, Measure>&>> out;
-  for (const std::string& v : s.options.variants) out.emplace_back(v, s.results.at(v));
+std::vector<std::pair<Gap8Variant, const std::map<int, Measure>&>> in_order(const Study& s) {
+  std::vector<std::pair<Gap8Variant, const std::map<int, Measure>&>> out;
+  for (Gap8Variant v : s.options.variants) out.emplace_back(v, s.results.at(v));
   return out;
 }
 
@@ -114,7 +115,7 @@ void print_tables(const Study& s) {
   for (const auto& [v, by] : in_order(s))
     for (const auto& [cores, m] : by) {
       const double seconds = m.cycles / (s.options.mhz * 1e6);
-      std::printf("  %-9s %5d %10.0f %8.1f %7.3fms %7.1fuJ %7.2fx %7.2fx %10.0f %9.0f\n", v.c_str(),
+      std::printf("  %-9s %5d %10.0f %8.1f %7.3fms %7.1fuJ %7.2fx %7.2fx %10.0f %9.0f\n", gap8_variant(v).name,
                   cores, m.cycles, fps(s, m.cycles), seconds * 1e3, seconds * kPaperPowerW * 1e6,
                   speedup(s, v, cores), amdahl_limit(s, v, cores),
                   per_core_sum(m, GAP8_EVT_TCDM_CONT), per_core_sum(m, GAP8_EVT_LD_STALL));
@@ -128,7 +129,7 @@ void print_tables(const Study& s) {
       // On several cores the saving is shared: core 0's SAD work is about 1/cores of the total.
       const double saved = 3.0 * m.sad_ops / cores;
       std::printf("  %-9s %d core(s): %.1fk cycles -> about %.1fk with a one-cycle SAD (-%.1f%%)\n",
-                  v.c_str(), cores, m.cycles / 1000, (m.cycles - saved) / 1000,
+                  gap8_variant(v).name, cores, m.cycles / 1000, (m.cycles - saved) / 1000,
                   saved / m.cycles * 100);
     }
   std::printf(
@@ -140,7 +141,7 @@ void print_tables(const Study& s) {
       const auto& t = m.cores[c];
       const double active = double(t[GAP8_EVT_ACTIVE_CYCLES]);
       std::printf("  %-9s core %zu: IPC %.3f, instructions %llu, ld_stall %llu, tcdm_cont %llu\n",
-                  v.c_str(), c, active > 0 ? double(t[GAP8_EVT_INSTR]) / active : 0.0,
+                  gap8_variant(v).name, c, active > 0 ? double(t[GAP8_EVT_INSTR]) / active : 0.0,
                   (unsigned long long)t[GAP8_EVT_INSTR], (unsigned long long)t[GAP8_EVT_LD_STALL],
                   (unsigned long long)t[GAP8_EVT_TCDM_CONT]);
     }
@@ -201,7 +202,7 @@ Json to_json(const Study& s) {
       }
       per[std::to_string(cores)] = e;
     }
-    variants[v] = per;
+    variants[gap8_variant(v).name] = per;
   }
   json out{{"pair", s.pair_name},
            {"mhz", s.options.mhz},

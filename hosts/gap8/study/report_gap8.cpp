@@ -27,11 +27,11 @@ ReportInputs::Table core_counts(const gap8_study::Study& s, const std::string& c
                         ""};
   std::vector<Series> lines;
   Series ideal{"linear (ideal)", {}};
-  for (const std::string& v : s.options.variants) {
-    Series se{v, {}};
+  for (Gap8Variant v : s.options.variants) {
+    Series se{gap8_variant(v).name, {}};
     for (const auto& [cores, m] : s.results.at(v)) {
       const double speedup = gap8_study::speedup(s, v, cores);
-      t.rows.push_back({v, std::to_string(cores), fixed(m.cycles, "%.0f"), fixed(gap8_study::fps(s, m.cycles), "%.1f"),
+      t.rows.push_back({gap8_variant(v).name, std::to_string(cores), fixed(m.cycles, "%.0f"), fixed(gap8_study::fps(s, m.cycles), "%.1f"),
                         fixed(m.cycles / (s.options.mhz * 1e3), "%.3f"), fixed(speedup, "%.2fx"),
                         fixed(gap8_study::amdahl_limit(s, v, cores), "%.2fx")});
       se.points.push_back({double(cores), speedup});
@@ -52,7 +52,8 @@ void add_gap8_tables(ReportInputs& in) {
   section.command = "pxflow gap8 --cores 1-8";
   std::cout << "== " << section.command << "\n";
   gap8_study::Options options;
-  options.variants = {"original", "local", "global"};
+  for (const Gap8VariantInfo& v : gap8_variants())
+    if (v.in_paper) options.variants.push_back(v.id);
   options.cores = {1, 2, 3, 4, 5, 6, 7, 8};
   const Params p = profile("px4flow-64");
   gap8_study::NamedFrames frames;
