@@ -15,7 +15,7 @@ float filtered_flow(const std::vector<std::uint16_t>& hist, int S) {
     if (hist[b] > hist[peak]) peak = b;  // strict: the first maximum wins
   const int lo = peak - 2 < 0 ? 0 : peak - 2;
   const int hi = peak + 2 > nbins - 1 ? nbins - 1 : peak + 2;
-  float value = 0.0f;   // accumulated in float, as the firmware does; exact (small integers)
+  float value = 0.0f;  // accumulated in float, as the firmware does; exact (small integers)
   float weight = 0.0f;
   for (int b = lo; b <= hi; ++b) {
     value += static_cast<float>(b * hist[b]);

@@ -23,7 +23,7 @@ std::string_view ref_variant_name(RefVariant v);
 // Runs one frame pair. `out` must hold exactly poi_count(p) records; every byte of each record
 // is written. `p` must be valid (validate()) and match the frames' size. Counts are added to
 // `counts` (which is marked counted).
-void reference_flow(RefVariant v, const FramePair& pair, const Params& p,
-                    std::span<PoiRecord> out, OpCounts& counts);
+void reference_flow(RefVariant v, const FramePair& pair, const Params& p, std::span<PoiRecord> out,
+                    OpCounts& counts);
 
 }  // namespace pxflow

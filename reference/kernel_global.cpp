@@ -35,8 +35,8 @@ void run_global(const FramePair& f, const Params& p, std::span<PoiRecord> out, O
     auto d = [&](int u, int v) { return dp[(y0 + v) * W + x0 + u]; };
     for (int k = 0; k < 8; ++k)
       sub[k] = block_sad(
-          f.prev, poi.x, poi.y,
-          [&](int c, int r) { return direction_value(k, c, r, h, g, d); }, cnt);
+          f.prev, poi.x, poi.y, [&](int c, int r) { return direction_value(k, c, r, h, g, d); },
+          cnt);
   });
 }
 

@@ -39,8 +39,8 @@ void run_local(const FramePair& f, const Params& p, std::span<PoiRecord> out, Op
     auto d = [&](int u, int v) { return pl.d[v + 1][u + 1]; };
     for (int k = 0; k < 8; ++k)
       sub[k] = block_sad(
-          f.prev, poi.x, poi.y,
-          [&](int c, int r) { return direction_value(k, c, r, h, g, d); }, cnt);
+          f.prev, poi.x, poi.y, [&](int c, int r) { return direction_value(k, c, r, h, g, d); },
+          cnt);
   });
 }
 

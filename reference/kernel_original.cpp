@@ -17,8 +17,8 @@ void run_original(const FramePair& f, const Params& p, std::span<PoiRecord> out,
     auto d = [&](int u, int v) { return avg_floor(h(u, v), h(u, v + 1)); };
     for (int k = 0; k < 8; ++k) {
       sub[k] = block_sad(
-          f.prev, poi.x, poi.y,
-          [&](int c, int r) { return direction_value(k, c, r, h, g, d); }, cnt);
+          f.prev, poi.x, poi.y, [&](int c, int r) { return direction_value(k, c, r, h, g, d); },
+          cnt);
       cnt.interpolations += (k % 2 == 1) ? 2 * 64 : 64;  // odd k are the diagonals
     }
   });

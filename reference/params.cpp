@@ -16,7 +16,8 @@ struct NamedProfile {
 const std::vector<NamedProfile>& profiles() {
   static const std::vector<NamedProfile> table = {
       {"px4flow-64", Params{}},
-      {"px4flow-head", [] {
+      {"px4flow-head",
+       [] {
          Params p;
          p.search_radius = 8;
          p.blocks = 5;
@@ -47,14 +48,14 @@ const std::vector<std::string>& profile_names() {
 Params profile(std::string_view name) {
   for (const auto& p : profiles())
     if (name == p.name) return p.params;
-  throw InputError("unknown profile '" + std::string(name) + "' (known: " +
-                   joined(profile_names()) + ")");
+  throw InputError("unknown profile '" + std::string(name) +
+                   "' (known: " + joined(profile_names()) + ")");
 }
 
 const std::vector<std::string>& param_keys() {
   static const std::vector<std::string> keys = {
-      "width",     "height",        "search_radius", "tile",     "blocks", "feature_threshold",
-      "sad_threshold", "hist_filter", "min_count",   "gyro_comp"};
+      "width",         "height",      "search_radius", "tile",     "blocks", "feature_threshold",
+      "sad_threshold", "hist_filter", "min_count",     "gyro_comp"};
   return keys;
 }
 
@@ -76,19 +77,29 @@ void set_param(Params& p, std::string_view key, std::string_view value) {
   // overrides are checked by the same code.
   auto num = [&] { return parse_int(value, what, INT32_MIN, INT32_MAX); };
   auto flag = [&] { return parse_int(value, what, 0, 1) != 0; };
-  if (key == "width") p.width = num();
-  else if (key == "height") p.height = num();
-  else if (key == "search_radius") p.search_radius = num();
-  else if (key == "tile") p.tile = num();
-  else if (key == "blocks") p.blocks = num();
-  else if (key == "feature_threshold") p.feature_threshold = num();
-  else if (key == "sad_threshold") p.sad_threshold = num();
-  else if (key == "hist_filter") p.hist_filter = flag();
-  else if (key == "min_count") p.min_count = num();
-  else if (key == "gyro_comp") p.gyro_comp = flag();
+  if (key == "width")
+    p.width = num();
+  else if (key == "height")
+    p.height = num();
+  else if (key == "search_radius")
+    p.search_radius = num();
+  else if (key == "tile")
+    p.tile = num();
+  else if (key == "blocks")
+    p.blocks = num();
+  else if (key == "feature_threshold")
+    p.feature_threshold = num();
+  else if (key == "sad_threshold")
+    p.sad_threshold = num();
+  else if (key == "hist_filter")
+    p.hist_filter = flag();
+  else if (key == "min_count")
+    p.min_count = num();
+  else if (key == "gyro_comp")
+    p.gyro_comp = flag();
   else
-    throw InputError("unknown parameter '" + std::string(key) + "' (known: " +
-                     joined(param_keys()) + ")");
+    throw InputError("unknown parameter '" + std::string(key) +
+                     "' (known: " + joined(param_keys()) + ")");
 }
 
 void validate(const Params& p) {

@@ -9,16 +9,16 @@
 namespace pxflow {
 
 struct Params {
-  int width = 64;               // W, pixels; the row stride of a packed frame
-  int height = 64;              // H
-  int search_radius = 4;        // S, whole pixels, 1..31
-  int tile = 8;                 // T, always 8 (the kernel's 8x8 block)
-  int blocks = 8;               // B, grid points per axis (upper bound)
-  int feature_threshold = 40;   // FT, a POI is dropped when feature < FT
-  int sad_threshold = 5000;     // VT, a match is accepted when best SAD < VT
-  bool hist_filter = true;      // HF
-  int min_count = 10;           // MINCOUNT
-  bool gyro_comp = false;       // GC (needs a GyroSample at estimate time)
+  int width = 64;              // W, pixels; the row stride of a packed frame
+  int height = 64;             // H
+  int search_radius = 4;       // S, whole pixels, 1..31
+  int tile = 8;                // T, always 8 (the kernel's 8x8 block)
+  int blocks = 8;              // B, grid points per axis (upper bound)
+  int feature_threshold = 40;  // FT, a POI is dropped when feature < FT
+  int sad_threshold = 5000;    // VT, a match is accepted when best SAD < VT
+  bool hist_filter = true;     // HF
+  int min_count = 10;          // MINCOUNT
+  bool gyro_comp = false;      // GC (needs a GyroSample at estimate time)
 
   bool operator==(const Params&) const = default;
 };

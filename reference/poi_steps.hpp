@@ -51,14 +51,22 @@ std::uint32_t block_sad(const FrameView& prev, int i, int j, Value&& value, OpCo
 template <class H, class G, class D>
 std::uint8_t direction_value(int k, int c, int r, H&& h, G&& g, D&& d) {
   switch (k) {
-    case 0: return h(c, r);
-    case 1: return d(c, r);
-    case 2: return g(c, r);
-    case 3: return d(c - 1, r);
-    case 4: return h(c - 1, r);
-    case 5: return d(c - 1, r - 1);
-    case 6: return g(c, r - 1);
-    default: return d(c, r - 1);  // k == 7
+    case 0:
+      return h(c, r);
+    case 1:
+      return d(c, r);
+    case 2:
+      return g(c, r);
+    case 3:
+      return d(c - 1, r);
+    case 4:
+      return h(c - 1, r);
+    case 5:
+      return d(c - 1, r - 1);
+    case 6:
+      return g(c, r - 1);
+    default:
+      return d(c, r - 1);  // k == 7
   }
 }
 

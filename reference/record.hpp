@@ -52,10 +52,10 @@ struct OpCounts {
 };
 
 struct FrameResult {
-  float flow_x = 0.0f;  // pixels per frame, content motion to the right is positive
-  float flow_y = 0.0f;  // content motion downward is positive
-  int quality = 0;      // 0..255
-  int meancount = 0;    // accepted POIs
+  float flow_x = 0.0f;               // pixels per frame, content motion to the right is positive
+  float flow_y = 0.0f;               // content motion downward is positive
+  int quality = 0;                   // 0..255
+  int meancount = 0;                 // accepted POIs
   std::vector<std::uint16_t> histx;  // nbins = 2*(2S+1)+1
   std::vector<std::uint16_t> histy;
 };

@@ -136,8 +136,7 @@ std::vector<SourceImage> load_source_images(const std::string& data_dir) {
   for (const char* name : kImages) {
     const std::string path = data_dir + "/" + name;
     if (!std::filesystem::exists(path))
-      throw InputError(path +
-                       ": no such file " + kSampleDataHint);
+      throw InputError(path + ": no such file " + kSampleDataHint);
     const Frame f = load_frame(path, std::nullopt);
     if (f.width < 336 || f.height < 256)
       throw InputError(path + ": " + std::to_string(f.width) + "x" + std::to_string(f.height) +
@@ -161,9 +160,7 @@ std::vector<TruthPair> make_truth_pairs(const std::vector<SourceImage>& images, 
 }
 
 std::vector<VideoPair> video_pairs(const std::string& path, int count) {
-  if (!std::filesystem::exists(path))
-    throw InputError(path +
-                     ": no such file " + kSampleDataHint);
+  if (!std::filesystem::exists(path)) throw InputError(path + ": no such file " + kSampleDataHint);
   cv::VideoCapture cap(path);
   if (!cap.isOpened()) throw InputError(path + ": cannot open the video");
   // Count the frames by reading them (the container's own count can be wrong), then reopen.

@@ -29,9 +29,12 @@ std::vector<BenchPoint> bench_points(const BenchArgs& a) {
   const Params base = a.problem.resolve(std::nullopt);
   if (a.batches.empty() && a.threads.empty() && a.sizes.empty() && a.radii.empty())
     return default_bench_points(base, a.problem.profile);
-  const auto batches = a.batches.empty() ? std::vector<int>{256} : int_list(a.batches, "--batch", 1, 1 << 20);
-  const auto threads = a.threads.empty() ? std::vector<int>{0} : int_list(a.threads, "--threads", 0, 1024);
-  const auto radii = a.radii.empty() ? std::vector<int>{base.search_radius} : int_list(a.radii, "--radius", 1, 31);
+  const auto batches =
+      a.batches.empty() ? std::vector<int>{256} : int_list(a.batches, "--batch", 1, 1 << 20);
+  const auto threads =
+      a.threads.empty() ? std::vector<int>{0} : int_list(a.threads, "--threads", 0, 1024);
+  const auto radii =
+      a.radii.empty() ? std::vector<int>{base.search_radius} : int_list(a.radii, "--radius", 1, 31);
   std::vector<FrameSize> sizes;
   for (const auto& s : split_list(a.sizes)) sizes.push_back(parse_frame_size(s));
   if (sizes.empty()) sizes.push_back({base.width, base.height});
@@ -60,7 +63,8 @@ int run_bench_command(const BenchArgs& a) {
     if (!json_file) throw InputError("--json " + a.json_path + ": cannot open for writing");
   }
   std::cout << "pxflow bench: " << o.points.size() << " points; each backend's records are checked "
-            << "against ref-original before it is timed; ns/frame is the median over repeats (min..max)\n";
+            << "against ref-original before it is timed; ns/frame is the median over repeats "
+               "(min..max)\n";
   const BenchReport r = run_bench(o, std::cout);
   if (json_file.is_open()) json_file << bench_json(r).dump(2) << "\n";
   return 0;
@@ -70,15 +74,20 @@ int run_bench_command(const BenchArgs& a) {
 
 Command add_bench_command(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
-  CLI::App* sub = app.add_subcommand("bench", "Time the backends over batch, frame-size, radius and thread sweeps");
+  CLI::App* sub = app.add_subcommand(
+      "bench", "Time the backends over batch, frame-size, radius and thread sweeps");
   a->problem.add_to(*sub);
-  sub->add_option("--backends", a->backends, "Comma-separated backends (default: all that can run)");
+  sub->add_option("--backends", a->backends,
+                  "Comma-separated backends (default: all that can run)");
   sub->add_option("--batch", a->batches, "Batch sizes, N[,N...] (frame pairs per run)");
   sub->add_option("--threads", a->threads, "Thread counts, N[,N...] (0 = all cores)");
   sub->add_option("--size", a->sizes, "Frame sizes, WxH[,WxH...]");
   sub->add_option("--radius", a->radii, "Search radii, S[,S...]");
-  sub->add_option("--min-time", a->min_time, "Seconds of repeats per point and backend")->check(CLI::Range(0.0, 600.0))->capture_default_str();
-  sub->add_option("--device", a->backend_options.device, "Device index or name substring (GPU backends)");
+  sub->add_option("--min-time", a->min_time, "Seconds of repeats per point and backend")
+      ->check(CLI::Range(0.0, 600.0))
+      ->capture_default_str();
+  sub->add_option("--device", a->backend_options.device,
+                  "Device index or name substring (GPU backends)");
   sub->add_option("--json", a->json_path, "Write the rows as JSON to FILE");
   return {sub, [a] { return run_bench_command(*a); }};
 }

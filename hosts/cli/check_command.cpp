@@ -33,13 +33,17 @@ int run_check_command(const CheckArgs& a) {
     json_file.open(a.json_path);
     if (!json_file) throw InputError("--json " + a.json_path + ": cannot open for writing");
   }
-  std::cout << "pxflow check: seed " << a.seed << (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs" : ", fixed corpus") << "\n";
+  std::cout << "pxflow check: seed " << a.seed
+            << (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
+                            : ", fixed corpus")
+            << "\n";
   const CheckReport r = run_check(o, std::cout);
 
-  std::printf("\n%-14s %-8s %7s %7s %5s %9s  %s\n", "backend", "result", "cases", "pairs", "n/a", "run time", "note");
+  std::printf("\n%-14s %-8s %7s %7s %5s %9s  %s\n", "backend", "result", "cases", "pairs", "n/a",
+              "run time", "note");
   for (const auto& b : r.backends)
-    std::printf("%-14s %-8s %7ld %7ld %5ld %8.2fs  %s\n", b.name.c_str(), state_name(b.state), b.passed + b.failed,
-                b.pairs, b.not_applicable, b.seconds, b.reason.c_str());
+    std::printf("%-14s %-8s %7ld %7ld %5ld %8.2fs  %s\n", b.name.c_str(), state_name(b.state),
+                b.passed + b.failed, b.pairs, b.not_applicable, b.seconds, b.reason.c_str());
   std::printf("%ld passed, %ld failed, %ld skipped\n", r.passed, r.failed, r.skipped);
   if (json_file.is_open()) json_file << check_json(r).dump(2) << "\n";
   return r.ok() ? 0 : 1;
@@ -49,17 +53,27 @@ int run_check_command(const CheckArgs& a) {
 
 Command add_check_command(CLI::App& app) {
   auto a = std::make_shared<CheckArgs>();
-  CLI::App* sub = app.add_subcommand("check", "Check every backend against ref-original, bit for bit");
-  sub->add_option("--backends", a->backends, "Comma-separated backends to check (default: all compiled in)");
-  sub->add_option("--require", a->require, "Backends that must run (comma-separated, or 'all'): their skips fail");
-  sub->add_option("--seed", a->seed, "Seed of the random pairs (printed; reproduces any failure)")->capture_default_str();
-  sub->add_option("--cases", a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")->check(CLI::Range(1L, 100000000L));
+  CLI::App* sub =
+      app.add_subcommand("check", "Check every backend against ref-original, bit for bit");
+  sub->add_option("--backends", a->backends,
+                  "Comma-separated backends to check (default: all compiled in)");
+  sub->add_option("--require", a->require,
+                  "Backends that must run (comma-separated, or 'all'): their skips fail");
+  sub->add_option("--seed", a->seed, "Seed of the random pairs (printed; reproduces any failure)")
+      ->capture_default_str();
+  sub->add_option("--cases", a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
+      ->check(CLI::Range(1L, 100000000L));
   sub->add_option("--json", a->json_path, "Write the results as JSON to FILE");
-  sub->add_option("--data", a->data_dir, "Folder of the real frames (opencv-doc)")->capture_default_str();
-  sub->add_flag("--generated-only", a->generated_only, "Skip the real frames (random, hostile, threshold cases only)");
+  sub->add_option("--data", a->data_dir, "Folder of the real frames (opencv-doc)")
+      ->capture_default_str();
+  sub->add_flag("--generated-only", a->generated_only,
+                "Skip the real frames (random, hostile, threshold cases only)");
   sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
-  sub->add_option("--threads", a->backend_options.threads, "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)")->check(CLI::Range(0, 1024));
-  sub->add_option("--device", a->backend_options.device, "Device index or name substring (GPU backends)");
+  sub->add_option("--threads", a->backend_options.threads,
+                  "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)")
+      ->check(CLI::Range(0, 1024));
+  sub->add_option("--device", a->backend_options.device,
+                  "Device index or name substring (GPU backends)");
   return {sub, [a] { return run_check_command(*a); }};
 }
 

@@ -13,7 +13,7 @@
 namespace pxflow::cli {
 
 struct CliExtension {
-  std::string family;                            // the BackendFamily name it belongs to
+  std::string family;                             // the BackendFamily name it belongs to
   std::function<Command(CLI::App&)> add_command;  // e.g. `pxflow gap8`; empty: none
   // The report section, added when the report's backends include a row of `family` and the
   // user did not pass `report_skip_flag`. It appends to in.sections.

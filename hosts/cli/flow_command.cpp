@@ -39,15 +39,17 @@ void print_summary(const FlowOptions& o, const Params& p, const FrameResult& r,
   int status_count[3] = {0, 0, 0};
   for (const auto& rec : recs) ++status_count[rec.status];
   std::printf("backend   %s\n", o.backend.c_str());
-  std::printf("frames    %s -> %s (%dx%d)\n", o.prev_path.c_str(), o.next_path.c_str(), p.width, p.height);
+  std::printf("frames    %s -> %s (%dx%d)\n", o.prev_path.c_str(), o.next_path.c_str(), p.width,
+              p.height);
   std::printf("profile   %s (S=%d, B=%d, FT=%d, VT=%d, HF %s, MINCOUNT=%d)\n",
               o.problem.profile.c_str(), p.search_radius, p.blocks, p.feature_threshold,
               p.sad_threshold, p.hist_filter ? "on" : "off", p.min_count);
   std::printf("flow      x = %+.4f px, y = %+.4f px  (bits %s %s)\n", r.flow_x, r.flow_y,
               float_bits_hex(r.flow_x).c_str(), float_bits_hex(r.flow_y).c_str());
-  std::printf("quality   %d  (%d of %zu POIs accepted, %d dropped by the feature test, %d rejected)\n",
-              r.quality, status_count[kAccepted], recs.size(), status_count[kDropped],
-              status_count[kRejected]);
+  std::printf(
+      "quality   %d  (%d of %zu POIs accepted, %d dropped by the feature test, %d rejected)\n",
+      r.quality, status_count[kAccepted], recs.size(), status_count[kDropped],
+      status_count[kRejected]);
   if (counts.counted)
     std::printf("counts    %s SAD ops (4-byte), %s interpolations\n",
                 thousands(counts.sad_ops).c_str(), thousands(counts.interpolations).c_str());
@@ -75,7 +77,9 @@ int run_flow(const FlowOptions& o) {
   backend->run({&pair, 1}, p, records, counts);
   const FrameResult result = estimate_flow(records, p);
   if (!o.draw.empty()) {
-    const auto file = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+    const auto file = [](const std::string& path) {
+      return std::filesystem::path(path).filename().string();
+    };
     std::string frames = file(o.prev_path);
     frames += " -> ";
     frames += file(o.next_path);
@@ -92,16 +96,21 @@ int run_flow(const FlowOptions& o) {
 
 Command add_flow_command(CLI::App& app) {
   auto o = std::make_shared<FlowOptions>();
-  CLI::App* sub = app.add_subcommand("flow", "Estimate the flow between two frames with one backend");
+  CLI::App* sub =
+      app.add_subcommand("flow", "Estimate the flow between two frames with one backend");
   o->problem.add_to(*sub);
   sub->add_option("--size", o->size, "Frame size of .raw inputs, WIDTHxHEIGHT (e.g. 64x64)");
   sub->add_option("--backend", o->backend, "Backend to run (see `pxflow backends`)")
       ->capture_default_str();
-  sub->add_option("--threads", o->backend_options.threads, "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)")
+  sub->add_option("--threads", o->backend_options.threads,
+                  "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)")
       ->check(CLI::Range(0, 1024));
-  sub->add_option("--device", o->backend_options.device, "Device index or name substring (GPU backends)");
-  sub->add_flag("--json", o->json, "Print one JSON object: flow, bits, histograms, counts, records");
-  sub->add_option("--draw", o->draw, "Also draw the POIs, their vectors and the frame flow into FILE (.png)");
+  sub->add_option("--device", o->backend_options.device,
+                  "Device index or name substring (GPU backends)");
+  sub->add_flag("--json", o->json,
+                "Print one JSON object: flow, bits, histograms, counts, records");
+  sub->add_option("--draw", o->draw,
+                  "Also draw the POIs, their vectors and the frame flow into FILE (.png)");
   sub->add_option("PREV", o->prev_path, "First frame (image file or .raw)")->required();
   sub->add_option("NEXT", o->next_path, "Second frame (same size)")->required();
   return {sub, [o] { return run_flow(*o); }};

@@ -10,8 +10,7 @@ void ProblemOptions::add_to(CLI::App& app) {
   for (const auto& n : profile_names()) profiles += (profiles.empty() ? "" : ", ") + n;
   std::string keys;
   for (const auto& k : param_keys()) keys += (keys.empty() ? "" : ", ") + k;
-  app.add_option("--profile", profile, "Parameter profile: " + profiles)
-      ->capture_default_str();
+  app.add_option("--profile", profile, "Parameter profile: " + profiles)->capture_default_str();
   app.add_option("--set", sets, "Override one parameter, KEY=VALUE (repeatable). Keys: " + keys)
       ->type_name("KEY=VALUE");
 }

@@ -6,16 +6,16 @@
 #include "accuracy_run.hpp"
 #include "bench.hpp"
 #include "check.hpp"
+#include "cli_extension.hpp"
 #include "commands.hpp"
-#include "errors.hpp"
-#include "list_option.hpp"
-#include "report.hpp"
-#include "truth_pairs.hpp"
 #include "draw_flow.hpp"
+#include "errors.hpp"
 #include "estimate.hpp"
 #include "grid.hpp"
+#include "list_option.hpp"
 #include "registry.hpp"
-#include "cli_extension.hpp"
+#include "report.hpp"
+#include "truth_pairs.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -43,11 +43,12 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
   accuracy::AccuracyOptions o;
   o.backend = default_backend().name;
   if (a.quick) o.pairs = 40, o.video_pairs = 2;
-  in.accuracy_command = "pxflow accuracy --backend " + o.backend + (a.quick ? " --pairs 40 --video-pairs 2" : "");
+  in.accuracy_command =
+      "pxflow accuracy --backend " + o.backend + (a.quick ? " --pairs 40 --video-pairs 2" : "");
   std::cout << "== " << in.accuracy_command << "\n";
   const auto report = accuracy::run_accuracy(o);
-  in.accuracy.push_back({"pairs", "pxflow setting", "against", "method", "frames", "with flow", "mean error px",
-                         "p95 error px", "median us/frame"});
+  in.accuracy.push_back({"pairs", "pxflow setting", "against", "method", "frames", "with flow",
+                         "mean error px", "p95 error px", "median us/frame"});
   auto fixed = [](double v, const char* f) {
     char b[32];
     std::snprintf(b, sizeof b, f, v);
@@ -55,9 +56,10 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
   };
   for (const auto& set : report.sets)
     for (const auto& r : set.rows)
-      in.accuracy.push_back({set.set, set.setting, set.against, r.method, std::to_string(r.frames), std::to_string(r.valid),
-                             r.has_error ? fixed(r.mean_error, "%.3f") : "(reference)",
-                             r.has_error ? fixed(r.p95_error, "%.3f") : "(reference)", fixed(r.median_us, "%.0f")});
+      in.accuracy.push_back(
+          {set.set, set.setting, set.against, r.method, std::to_string(r.frames),
+           std::to_string(r.valid), r.has_error ? fixed(r.mean_error, "%.3f") : "(reference)",
+           r.has_error ? fixed(r.p95_error, "%.3f") : "(reference)", fixed(r.median_us, "%.0f")});
 }
 
 // Flow pictures of the real sequences: first two frames of each video at full size.
@@ -65,21 +67,25 @@ void add_pictures(ReportInputs& in, const ReportArgs& a) {
   const std::string backend = default_backend().name;
   Params p = profile("px4flow-64");
   for (const char* video : {"vtest.avi", "tree.avi"}) {
-    const auto pairs = accuracy::video_pairs(std::string(CorpusOptions{}.data_dir) + "/" + video, 1);
+    const auto pairs =
+        accuracy::video_pairs(std::string(CorpusOptions{}.data_dir) + "/" + video, 1);
     if (pairs.empty()) continue;
     const auto& vp = pairs.front();
     p.width = vp.prev.cols, p.height = vp.prev.rows, p.search_radius = 7, p.blocks = 32;
     validate(p);
     auto b = open_backend_for(find_backend(backend), {}, p);
-    const FramePair pair{{p.width, p.height, static_cast<std::ptrdiff_t>(vp.prev.step), vp.prev.data},
-                         {p.width, p.height, static_cast<std::ptrdiff_t>(vp.next.step), vp.next.data}};
+    const FramePair pair{
+        {p.width, p.height, static_cast<std::ptrdiff_t>(vp.prev.step), vp.prev.data},
+        {p.width, p.height, static_cast<std::ptrdiff_t>(vp.next.step), vp.next.data}};
     std::vector<PoiRecord> records(poi_count(p));
     OpCounts counts;
     b->run({&pair, 1}, p, records, counts);
     const std::string file = std::string("flow-") + video + ".png";
     draw_flow(a.out_dir + "/" + file, pair.prev, p, records, estimate_flow(records, p),
               {vp.name, backend, "px4flow-64 S=7 B=32"});
-    in.pictures.push_back({vp.name + ": POIs and vectors by status (" + backend + ", S=7, B=32), frame flow in cyan", file});
+    in.pictures.push_back(
+        {vp.name + ": POIs and vectors by status (" + backend + ", S=7, B=32), frame flow in cyan",
+         file});
   }
 }
 
@@ -118,10 +124,13 @@ int run_report(const ReportArgs& a) {
     o.backends = split_list(a.backends);
     o.points = default_bench_points(profile("px4flow-64"), "px4flow-64");
     if (a.quick) {
-      std::erase_if(o.points, [](const BenchPoint& p) { return p.batch > 256 || p.sweep == "radius" || p.sweep == "threads"; });
+      std::erase_if(o.points, [](const BenchPoint& p) {
+        return p.batch > 256 || p.sweep == "radius" || p.sweep == "threads";
+      });
       o.min_seconds = 0.05;
     }
-    in.bench_command = "pxflow bench" + backends + (a.quick ? " (quick subset: batch <= 256, no radius/thread sweep)" : "");
+    in.bench_command = "pxflow bench" + backends +
+                       (a.quick ? " (quick subset: batch <= 256, no radius/thread sweep)" : "");
     std::cout << "== " << in.bench_command << "\n";
     in.bench = bench_json(run_bench(o, std::cout));
   }
@@ -140,13 +149,17 @@ int run_report(const ReportArgs& a) {
 
 Command add_report_command(CLI::App& app) {
   auto a = std::make_shared<ReportArgs>();
-  CLI::App* sub = app.add_subcommand("report", "Write report.md, report.html, results.json and results.csv");
+  CLI::App* sub =
+      app.add_subcommand("report", "Write report.md, report.html, results.json and results.csv");
   sub->add_option("--out", a->out_dir, "Folder to write the report into")->required();
-  sub->add_option("--check-json", a->check_json, "Use this `pxflow check --json` file instead of running the check");
-  sub->add_option("--bench-json", a->bench_json, "Use this `pxflow bench --json` file instead of running the bench");
+  sub->add_option("--check-json", a->check_json,
+                  "Use this `pxflow check --json` file instead of running the check");
+  sub->add_option("--bench-json", a->bench_json,
+                  "Use this `pxflow bench --json` file instead of running the bench");
   sub->add_option("--backends", a->backends, "Comma-separated backends (default: all)");
   sub->add_option("--seed", a->seed, "Seed of the check's random pairs")->capture_default_str();
-  sub->add_flag("--quick", a->quick, "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
+  sub->add_flag("--quick", a->quick,
+                "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
   sub->add_flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");
   for (const CliExtension& e : registered_cli_extensions()) a->extensions.push_back({e, false});
   for (auto& [e, skipped] : a->extensions)

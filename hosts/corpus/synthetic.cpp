@@ -37,12 +37,14 @@ Plane half_shift_x(const Plane& in, int w, int h) {
   Plane out(in.size());
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      out[y * w + x] = static_cast<std::uint8_t>((in[y * w + x] + in[y * w + std::max(x - 1, 0)]) >> 1);
+      out[y * w + x] =
+          static_cast<std::uint8_t>((in[y * w + x] + in[y * w + std::max(x - 1, 0)]) >> 1);
   return out;
 }
 
 void add_noise(Plane& p, Rng& rng, int amplitude) {
-  for (auto& v : p) v = static_cast<std::uint8_t>(std::clamp(v + rng.uniform(-amplitude, amplitude), 0, 255));
+  for (auto& v : p)
+    v = static_cast<std::uint8_t>(std::clamp(v + rng.uniform(-amplitude, amplitude), 0, 255));
 }
 
 OwnedPair make(std::string name, int w, int h) {
@@ -83,9 +85,10 @@ void shift_into(const Plane& prev, Plane& next, int w, int h, int sx, int sy,
 OwnedPair random_pair(int w, int h, int S, std::uint64_t seed) {
   Rng rng(seed);
   const int kind = rng.uniform(0, 5);
-  static const char* kKinds[] = {"noise", "shift", "shift+noise", "smooth-half", "low-contrast",
-                                 "unrelated"};
-  OwnedPair op = make("random/" + std::string(kKinds[kind]) + "/seed=" + std::to_string(seed), w, h);
+  static const char* kKinds[] = {"noise",       "shift",        "shift+noise",
+                                 "smooth-half", "low-contrast", "unrelated"};
+  OwnedPair op =
+      make("random/" + std::string(kKinds[kind]) + "/seed=" + std::to_string(seed), w, h);
   const int sx = rng.uniform(-S, S), sy = rng.uniform(-S, S);
   switch (kind) {
     case 0:  // noise: both frames independent uniform noise, mostly rejected matches
@@ -140,27 +143,35 @@ std::vector<OwnedPair> hostile_pairs(int w, int h, int S) {
     out.push_back(std::move(op));
   };
   auto board = [](int x, int y) { return ((x + y) & 1) ? 255 : 0; };
-  add("all-0", [](int, int) { return 0; }, [](int, int) { return 0; });
-  add("all-255", [](int, int) { return 255; }, [](int, int) { return 255; });
-  add("all-0-vs-255", [](int, int) { return 0; }, [](int, int) { return 255; });
+  add(
+      "all-0", [](int, int) { return 0; }, [](int, int) { return 0; });
+  add(
+      "all-255", [](int, int) { return 255; }, [](int, int) { return 255; });
+  add(
+      "all-0-vs-255", [](int, int) { return 0; }, [](int, int) { return 255; });
   add("checkerboard", board, board);
   add("checkerboard-inverted", board, [&](int x, int y) { return 255 - board(x, y); });
   // Period 2 in both axes: every even shift matches exactly, the first in raster order wins.
-  add("periodic-2", [](int x, int y) { return 40 * (x & 1) + 90 * (y & 1); },
+  add(
+      "periodic-2", [](int x, int y) { return 40 * (x & 1) + 90 * (y & 1); },
       [](int x, int y) { return 40 * (x & 1) + 90 * (y & 1); });
-  add("periodic-3-shifted", [](int x, int y) { return 60 * (x % 3) + 25 * (y % 3); },
+  add(
+      "periodic-3-shifted", [](int x, int y) { return 60 * (x % 3) + 25 * (y % 3); },
       [](int x, int y) { return 60 * ((x + 1) % 3) + 25 * (y % 3); });
   // LSB-only contrast: odd/even neighbours, where floor and round-up averages differ by one.
-  add("lsb-only", [](int x, int y) { return 128 + ((x * 7 + y * 3) % 5 == 0); },
+  add(
+      "lsb-only", [](int x, int y) { return 128 + ((x * 7 + y * 3) % 5 == 0); },
       [](int x, int y) { return 128 + ((x * 5 + y * 11) % 3 == 0); });
-  add("lsb-checkerboard", [](int x, int y) { return 200 + ((x + y) & 1) * 21; },
+  add(
+      "lsb-checkerboard", [](int x, int y) { return 200 + ((x + y) & 1) * 21; },
       [](int x, int y) { return 200 + ((x + y + 1) & 1) * 21 + (x & 1); });
   // Texture moved to every corner and edge of the search window, and one step beyond.
   Rng rng(0xED6E);
   const Plane tex = noise(w, h, rng);
   for (int sy : {-S, 0, S})
     for (int sx : {-S, 0, S, S + 1}) {
-      OwnedPair op = make("hostile/shift(" + std::to_string(sx) + "," + std::to_string(sy) + ")", w, h);
+      OwnedPair op =
+          make("hostile/shift(" + std::to_string(sx) + "," + std::to_string(sy) + ")", w, h);
       op.prev = tex;
       shift_into(tex, op.next, w, h, sx, sy, 99);
       out.push_back(std::move(op));

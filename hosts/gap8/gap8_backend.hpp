@@ -1,7 +1,8 @@
 // The GAP8 backends (gap8-<variant>, gap8_variants.hpp): the kernel of kernels/gap8 on the
 // cluster model, all 8 cores, TCDM contention on. `host_threads` host workers simulate
-// the batch's cluster runs side by side (0 = every core); the results do not depend on it. Besides the records, each run checks
-// the kernel's own soft-float estimate against estimate_flow() of its records.
+// the batch's cluster runs side by side (0 = every core); the results do not depend on it. Besides
+// the records, each run checks the kernel's own soft-float estimate against estimate_flow() of its
+// records.
 #pragma once
 #include <optional>
 #include <string>

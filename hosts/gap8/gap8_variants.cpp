@@ -39,8 +39,8 @@ std::string gap8_variant_names() {
 const Gap8VariantInfo& find_gap8_variant(std::string_view name) {
   for (const auto& info : kVariants)
     if (name == info.name) return info;
-  throw InputError("unknown GAP8 variant '" + std::string(name) + "' (known: " +
-                   gap8_variant_names() + ")");
+  throw InputError("unknown GAP8 variant '" + std::string(name) +
+                   "' (known: " + gap8_variant_names() + ")");
 }
 
 }  // namespace pxflow

@@ -41,7 +41,8 @@ struct Inputs {
   std::vector<FramePair> ring;  // batch + kDistinctPairs - 1 views cycling over `owned`
   int batch = 0;
   std::span<const FramePair> batch_for(int repeat) const {
-    return std::span(ring).subspan(static_cast<std::size_t>(repeat % kDistinctPairs), static_cast<std::size_t>(batch));
+    return std::span(ring).subspan(static_cast<std::size_t>(repeat % kDistinctPairs),
+                                   static_cast<std::size_t>(batch));
   }
 };
 
@@ -49,8 +50,10 @@ Inputs make_inputs(const Params& p, int batch) {
   Inputs in;
   in.batch = batch;
   for (int n = 0; n < kDistinctPairs; ++n)
-    in.owned.push_back(shifted_texture_pair(p.width, p.height, p.search_radius, 0xBE7C4 + static_cast<std::uint64_t>(n)));
-  for (int n = 0; n < batch + kDistinctPairs - 1; ++n) in.ring.push_back(in.owned[n % kDistinctPairs].view());
+    in.owned.push_back(shifted_texture_pair(p.width, p.height, p.search_radius,
+                                            0xBE7C4 + static_cast<std::uint64_t>(n)));
+  for (int n = 0; n < batch + kDistinctPairs - 1; ++n)
+    in.ring.push_back(in.owned[n % kDistinctPairs].view());
   return in;
 }
 
@@ -61,8 +64,9 @@ double median(std::vector<double> v) {
 }
 
 std::string point_label(const BenchPoint& pt) {
-  return pt.setting + " " + std::to_string(pt.params.width) + "x" + std::to_string(pt.params.height) +
-         " S=" + std::to_string(pt.params.search_radius) + " batch=" + std::to_string(pt.batch) +
+  return pt.setting + " " + std::to_string(pt.params.width) + "x" +
+         std::to_string(pt.params.height) + " S=" + std::to_string(pt.params.search_radius) +
+         " batch=" + std::to_string(pt.batch) +
          " threads=" + (pt.threads ? std::to_string(pt.threads) : "all");
 }
 
@@ -75,7 +79,8 @@ class Bench {
     Backend* b = backend_for(row, pt.threads, report);
     if (!b) return;
     BenchRow base = row_for(row.name, pt);
-    if (std::string why = b->unsupported(pt.params); !why.empty()) return note(base, "n/a: " + why, report);
+    if (std::string why = b->unsupported(pt.params); !why.empty())
+      return note(base, "n/a: " + why, report);
     std::vector<PoiRecord> got(expected.size());
     std::memset(got.data(), 0xA5, got.size() * sizeof(PoiRecord));
     OpCounts counts;
@@ -95,7 +100,9 @@ class Bench {
     std::vector<double> host_ns, tsc, device_ns, device_cycles;
     std::string device_source;
     const auto start = std::chrono::steady_clock::now();
-    for (int rep = 1; host_ns.size() < 3 || (seconds_since(start) < o_.min_seconds && static_cast<int>(host_ns.size()) < o_.max_repeats); ++rep) {
+    for (int rep = 1; host_ns.size() < 3 || (seconds_since(start) < o_.min_seconds &&
+                                             static_cast<int>(host_ns.size()) < o_.max_repeats);
+         ++rep) {
       const std::uint64_t c0 = tsc_now();
       const auto t0 = std::chrono::steady_clock::now();
       b->run(in.batch_for(rep), pt.params, got, counts);
@@ -140,8 +147,10 @@ class Bench {
   static BenchRow row_for(const std::string& backend, const BenchPoint& pt) {
     BenchRow r;
     r.backend = backend, r.sweep = pt.sweep, r.setting = pt.setting;
-    r.width = pt.params.width, r.height = pt.params.height, r.search_radius = pt.params.search_radius;
-    r.batch = pt.batch, r.threads = pt.threads ? pt.threads : static_cast<int>(std::thread::hardware_concurrency());
+    r.width = pt.params.width, r.height = pt.params.height,
+    r.search_radius = pt.params.search_radius;
+    r.batch = pt.batch,
+    r.threads = pt.threads ? pt.threads : static_cast<int>(std::thread::hardware_concurrency());
     r.pois_per_frame = static_cast<long>(poi_count(pt.params));
     return r;
   }
@@ -164,11 +173,13 @@ class Bench {
 
   void emit(const BenchRow& r, BenchReport& report) {
     char line[256];
-    std::snprintf(line, sizeof line, "  %-14s %-22s %12.0f ns/frame (%0.f..%0.f)  %10.1f frames/s  %8.1f ns/POI",
+    std::snprintf(line, sizeof line,
+                  "  %-14s %-22s %12.0f ns/frame (%0.f..%0.f)  %10.1f frames/s  %8.1f ns/POI",
                   r.backend.c_str(), r.source.c_str(), r.median_ns_per_frame, r.min_ns_per_frame,
                   r.max_ns_per_frame, r.frames_per_s, r.ns_per_poi);
     out_ << line;
-    if (r.cycles_per_frame > 0) out_ << "  " << static_cast<long>(r.cycles_per_frame) << " cycles/frame";
+    if (r.cycles_per_frame > 0)
+      out_ << "  " << static_cast<long>(r.cycles_per_frame) << " cycles/frame";
     out_ << "\n" << std::flush;
     report.rows.push_back(r);
   }
@@ -189,15 +200,16 @@ void add_bound_ratios(BenchReport& r, std::ostream& out) {
     r.bound_name = bound->name;
     r.bound_clock = bound->clock;
     r.bound_bytes_per_cycle = bound->bytes_per_cycle;
-    out << "bound: " << bound->name << ", " << bound->bytes_per_cycle << " bytes per " << bound->clock
-        << " cycle\n";
+    out << "bound: " << bound->name << ", " << bound->bytes_per_cycle << " bytes per "
+        << bound->clock << " cycle\n";
     for (auto& row : r.rows) {
       if (row.cycles_per_frame <= 0 || row.source.find(bound->clock) == std::string::npos) continue;
-      row.bound_ratio = row.cycles_per_frame / bound->cycles_per_frame(row.pois_per_frame, row.search_radius);
+      row.bound_ratio =
+          row.cycles_per_frame / bound->cycles_per_frame(row.pois_per_frame, row.search_radius);
       char line[160];
       std::snprintf(line, sizeof line, "  %-14s %dx%d S=%d batch=%d threads=%d: %.2fx the bound\n",
-                    row.backend.c_str(), row.width, row.height, row.search_radius, row.batch, row.threads,
-                    row.bound_ratio);
+                    row.backend.c_str(), row.width, row.height, row.search_radius, row.batch,
+                    row.threads, row.bound_ratio);
       out << line;
     }
     return;
@@ -211,8 +223,8 @@ void add_speedups(BenchReport& r) {
     for (const auto& ref : r.rows)
       if (ref.backend == "ref-original" && ref.source == row.source && ref.sweep == row.sweep &&
           ref.setting == row.setting && ref.width == row.width && ref.height == row.height &&
-          ref.search_radius == row.search_radius && ref.batch == row.batch && ref.threads == row.threads &&
-          ref.median_ns_per_frame > 0)
+          ref.search_radius == row.search_radius && ref.batch == row.batch &&
+          ref.threads == row.threads && ref.median_ns_per_frame > 0)
         row.speedup_vs_reference = ref.median_ns_per_frame / row.median_ns_per_frame;
   }
 }
@@ -262,12 +274,23 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
 Json bench_json(const BenchReport& r) {
   Json rows = Json::array();
   for (const auto& b : r.rows) {
-    Json j{{"backend", b.backend}, {"sweep", b.sweep}, {"profile", b.setting}, {"width", b.width},
-           {"height", b.height}, {"search_radius", b.search_radius}, {"batch", b.batch},
-           {"threads", b.threads}, {"source", b.source}, {"note", b.note}, {"repeats", b.repeats},
-           {"pois_per_frame", b.pois_per_frame}, {"median_ns_per_frame", b.median_ns_per_frame},
-           {"min_ns_per_frame", b.min_ns_per_frame}, {"max_ns_per_frame", b.max_ns_per_frame},
-           {"frames_per_s", b.frames_per_s}, {"ns_per_poi", b.ns_per_poi}};
+    Json j{{"backend", b.backend},
+           {"sweep", b.sweep},
+           {"profile", b.setting},
+           {"width", b.width},
+           {"height", b.height},
+           {"search_radius", b.search_radius},
+           {"batch", b.batch},
+           {"threads", b.threads},
+           {"source", b.source},
+           {"note", b.note},
+           {"repeats", b.repeats},
+           {"pois_per_frame", b.pois_per_frame},
+           {"median_ns_per_frame", b.median_ns_per_frame},
+           {"min_ns_per_frame", b.min_ns_per_frame},
+           {"max_ns_per_frame", b.max_ns_per_frame},
+           {"frames_per_s", b.frames_per_s},
+           {"ns_per_poi", b.ns_per_poi}};
     if (b.cycles_per_frame > 0) j["cycles_per_frame"] = b.cycles_per_frame;
     if (b.speedup_vs_reference > 0) j["speedup_vs_ref_original"] = b.speedup_vs_reference;
     if (b.bound_ratio > 0) j["bound_ratio"] = b.bound_ratio;
@@ -275,7 +298,9 @@ Json bench_json(const BenchReport& r) {
   }
   Json j{{"rows", rows}, {"skipped", r.skipped}};
   if (r.bound_bytes_per_cycle > 0)
-    j["bound"] = {{"name", r.bound_name}, {"clock", r.bound_clock}, {"bytes_per_cycle", r.bound_bytes_per_cycle}};
+    j["bound"] = {{"name", r.bound_name},
+                  {"clock", r.bound_clock},
+                  {"bytes_per_cycle", r.bound_bytes_per_cycle}};
   return j;
 }
 

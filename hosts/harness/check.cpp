@@ -13,8 +13,8 @@
 
 #include "errors.hpp"
 #include "estimate.hpp"
-#include "grid.hpp"
 #include "exactness.hpp"
+#include "grid.hpp"
 #include "registry.hpp"
 
 namespace pxflow {
@@ -41,10 +41,12 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
     c.backend = std::move(opened.backend);
     const std::string why = opened.why_not;
     if (!why.empty()) {
-      const bool required = all || std::find(o.require.begin(), o.require.end(), c.row->name) != o.require.end();
+      const bool required =
+          all || std::find(o.require.begin(), o.require.end(), c.row->name) != o.require.end();
       c.outcome.state = required ? BackendState::kFailed : BackendState::kSkipped;
       c.outcome.reason = why;
-      if (required) c.outcome.failures.push_back("FAIL " + c.row->name + ": required but cannot run: " + why);
+      if (required)
+        c.outcome.failures.push_back("FAIL " + c.row->name + ": required but cannot run: " + why);
     }
   }
   return out;
@@ -56,7 +58,9 @@ std::string block_dump(const FrameView& f, int x, int y) {
     s << "      ";
     for (int c = 0; c < 8; ++c) {
       const int xx = x + c, yy = y + r;
-      s << ' ' << ((xx >= 0 && yy >= 0 && xx < f.width && yy < f.height) ? std::to_string(f.at(xx, yy)) : "--");
+      s << ' '
+        << ((xx >= 0 && yy >= 0 && xx < f.width && yy < f.height) ? std::to_string(f.at(xx, yy))
+                                                                  : "--");
     }
     s << '\n';
   }
@@ -84,10 +88,12 @@ class Checker {
     } catch (const std::exception& ex) {
       return fail(k, c, std::string("error: ") + ex.what());
     }
-    k.outcome.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    k.outcome.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     k.outcome.pairs += static_cast<long>(c.pairs.size());
     RecordDetail detail;
-    if (o_.verbose) detail = [&](std::size_t pair, const PoiRecord& want) { return blocks(c.pairs[pair], want); };
+    if (o_.verbose)
+      detail = [&](std::size_t pair, const PoiRecord& want) { return blocks(c.pairs[pair], want); };
     const Comparison cmp =
         compare_with_reference(label(k, c), names, c.params, e, got, o_.max_lines_per_case, detail);
     for (const std::string& line : cmp.lines) emit(k, line);
@@ -101,7 +107,9 @@ class Checker {
   }
 
  private:
-  static CaseLabel label(const Contender& k, const CheckCase& c) { return {k.row->name, c.name, c.setting}; }
+  static CaseLabel label(const Contender& k, const CheckCase& c) {
+    return {k.row->name, c.name, c.setting};
+  }
   bool fail(Contender& k, const CheckCase& c, const std::string& what) {
     emit(k, label(k, c).prefix() + " " + what);
     ++k.outcome.failed;
@@ -133,9 +141,12 @@ void progress(const std::string& text) {
 
 const char* state_name(BackendState s) {
   switch (s) {
-    case BackendState::kPassed: return "passed";
-    case BackendState::kFailed: return "failed";
-    case BackendState::kSkipped: return "skipped";
+    case BackendState::kPassed:
+      return "passed";
+    case BackendState::kFailed:
+      return "failed";
+    case BackendState::kSkipped:
+      return "skipped";
   }
   return "?";
 }
@@ -157,8 +168,10 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
     next_case = [&](CheckCase& c) {
       if (fuzz_done >= o.fuzz_pairs) return false;
       const int n = static_cast<int>(std::min<long>(256, o.fuzz_pairs - fuzz_done));
-      const auto& [setting, p] = settings[(fuzz_done / 256) % 2];  // alternate the two 64x64 profiles
-      c = fuzz_case(setting, p, o.corpus.seed * 1000000007ull + static_cast<std::uint64_t>(fuzz_done), n);
+      const auto& [setting, p] =
+          settings[(fuzz_done / 256) % 2];  // alternate the two 64x64 profiles
+      c = fuzz_case(setting, p,
+                    o.corpus.seed * 1000000007ull + static_cast<std::uint64_t>(fuzz_done), n);
       c.name = "fuzz";
       fuzz_done += n;
       return true;
@@ -218,9 +231,15 @@ Json check_json(const CheckReport& r) {
   j["not_applicable"] = r.not_applicable;
   j["backends"] = Json::array();
   for (const auto& b : r.backends)
-    j["backends"].push_back({{"name", b.name}, {"state", state_name(b.state)}, {"reason", b.reason},
-                             {"passed", b.passed}, {"failed", b.failed}, {"not_applicable", b.not_applicable},
-                             {"pairs", b.pairs}, {"seconds", b.seconds}, {"failures", b.failures}});
+    j["backends"].push_back({{"name", b.name},
+                             {"state", state_name(b.state)},
+                             {"reason", b.reason},
+                             {"passed", b.passed},
+                             {"failed", b.failed},
+                             {"not_applicable", b.not_applicable},
+                             {"pairs", b.pairs},
+                             {"seconds", b.seconds},
+                             {"failures", b.failures}});
   return j;
 }
 

@@ -29,10 +29,10 @@ const char* state_name(BackendState s);  // "passed", "failed", "skipped"
 struct BackendOutcome {
   std::string name;
   BackendState state = BackendState::kPassed;
-  std::string reason;            // why skipped
+  std::string reason;                               // why skipped
   long passed = 0, failed = 0, not_applicable = 0;  // cases
   long pairs = 0;
-  double seconds = 0;  // host time inside run()
+  double seconds = 0;                 // host time inside run()
   std::vector<std::string> failures;  // the mismatch lines printed
 };
 

@@ -20,11 +20,14 @@ OwnedPair owned(std::string name, const Frame& a, const Frame& b) {
 
 Frame from_mat(const cv::Mat& gray) {
   Frame f{gray.cols, gray.rows, std::vector<std::uint8_t>(gray.total())};
-  for (int y = 0; y < gray.rows; ++y) std::copy_n(gray.ptr<std::uint8_t>(y), gray.cols, f.pixels.data() + y * gray.cols);
+  for (int y = 0; y < gray.rows; ++y)
+    std::copy_n(gray.ptr<std::uint8_t>(y), gray.cols, f.pixels.data() + y * gray.cols);
   return f;
 }
 
-cv::Mat to_mat(const Frame& f) { return cv::Mat(f.height, f.width, CV_8UC1, const_cast<std::uint8_t*>(f.pixels.data())).clone(); }
+cv::Mat to_mat(const Frame& f) {
+  return cv::Mat(f.height, f.width, CV_8UC1, const_cast<std::uint8_t*>(f.pixels.data())).clone();
+}
 
 // The PX4FLOW camera bins its 752x480 sensor 4x4 and reads a 64x64 window from the middle.
 Frame px4flow_camera(const Frame& full) {
@@ -42,15 +45,20 @@ std::vector<std::pair<std::string, std::pair<Frame, Frame>>> real_pairs(const Co
     return p;
   };
   for (const char* stem : {"rubberwhale", "basketball"})
-    out.push_back({stem, {load_frame(path((std::string(stem) + "1.png").c_str()), std::nullopt),
-                          load_frame(path((std::string(stem) + "2.png").c_str()), std::nullopt)}});
-  for (auto [video, first] : {std::pair{"vtest.avi", 0}, {"vtest.avi", 120}, {"tree.avi", 0}, {"tree.avi", 30}}) {
+    out.push_back({stem,
+                   {load_frame(path((std::string(stem) + "1.png").c_str()), std::nullopt),
+                    load_frame(path((std::string(stem) + "2.png").c_str()), std::nullopt)}});
+  for (auto [video, first] :
+       {std::pair{"vtest.avi", 0}, {"vtest.avi", 120}, {"tree.avi", 0}, {"tree.avi", 30}}) {
     cv::VideoCapture cap(path(video));
     cv::Mat frame, gray[2];
     for (int n = 0; n <= first + 1 && cap.read(frame); ++n)
       if (n >= first) cv::cvtColor(frame, gray[n - first], cv::COLOR_BGR2GRAY);
-    if (gray[1].empty()) throw InputError(std::string(video) + ": cannot read frames " + std::to_string(first) + ".." + std::to_string(first + 1));
-    out.push_back({std::string(video) + "#" + std::to_string(first), {from_mat(gray[0]), from_mat(gray[1])}});
+    if (gray[1].empty())
+      throw InputError(std::string(video) + ": cannot read frames " + std::to_string(first) + ".." +
+                       std::to_string(first + 1));
+    out.push_back(
+        {std::string(video) + "#" + std::to_string(first), {from_mat(gray[0]), from_mat(gray[1])}});
   }
   return out;
 }
@@ -64,7 +72,8 @@ struct Motion {
 // Known motion applied with OpenCV (bilinear warp), then the camera's ills.
 Frame moved(const Frame& src, const Motion& m, std::uint64_t seed) {
   const cv::Mat a = to_mat(src);
-  cv::Mat M = cv::getRotationMatrix2D(cv::Point2f(src.width / 2.0f, src.height / 2.0f), m.angle_deg, m.scale);
+  cv::Mat M = cv::getRotationMatrix2D(cv::Point2f(src.width / 2.0f, src.height / 2.0f), m.angle_deg,
+                                      m.scale);
   M.at<double>(0, 2) += m.tx;
   M.at<double>(1, 2) += m.ty;
   cv::Mat b;
@@ -84,12 +93,18 @@ Frame moved(const Frame& src, const Motion& m, std::uint64_t seed) {
 }
 
 const Motion kMotions[] = {
-    {"translate(+2,-1)", 2, -1, 0, 1, 0, 0, 1, 0},       {"translate(+1.5,+2)", 1.5, 2, 0, 1, 0, 0, 1, 0},
-    {"translate(+0.5,+0.5)", 0.5, 0.5, 0, 1, 0, 0, 1, 0}, {"translate(-0.3,+0.7)", -0.3, 0.7, 0, 1, 0, 0, 1, 0},
-    {"translate(+3.25,-2.75)", 3.25, -2.75, 0, 1, 0, 0, 1, 0}, {"rotate(2deg)", 0, 0, 2, 1, 0, 0, 1, 0},
-    {"rotate(-3deg)", 0, 0, -3, 1, 0, 0, 1, 0},           {"zoom(1.03)", 0, 0, 0, 1.03, 0, 0, 1, 0},
-    {"zoom(0.97)", 0, 0, 0, 0.97, 0, 0, 1, 0},            {"translate+noise", 1.5, -0.5, 0, 1, 4, 0, 1, 0},
-    {"translate+blur", -1, 1.5, 0, 1, 0, 1.0, 1, 0},      {"translate+brighter", 1, 1, 0, 1, 0, 0, 1.1, 12},
+    {"translate(+2,-1)", 2, -1, 0, 1, 0, 0, 1, 0},
+    {"translate(+1.5,+2)", 1.5, 2, 0, 1, 0, 0, 1, 0},
+    {"translate(+0.5,+0.5)", 0.5, 0.5, 0, 1, 0, 0, 1, 0},
+    {"translate(-0.3,+0.7)", -0.3, 0.7, 0, 1, 0, 0, 1, 0},
+    {"translate(+3.25,-2.75)", 3.25, -2.75, 0, 1, 0, 0, 1, 0},
+    {"rotate(2deg)", 0, 0, 2, 1, 0, 0, 1, 0},
+    {"rotate(-3deg)", 0, 0, -3, 1, 0, 0, 1, 0},
+    {"zoom(1.03)", 0, 0, 0, 1.03, 0, 0, 1, 0},
+    {"zoom(0.97)", 0, 0, 0, 0.97, 0, 0, 1, 0},
+    {"translate+noise", 1.5, -0.5, 0, 1, 4, 0, 1, 0},
+    {"translate+blur", -1, 1.5, 0, 1, 0, 1.0, 1, 0},
+    {"translate+brighter", 1, 1, 0, 1, 0, 0, 1.1, 12},
 };
 
 // Features exactly at FT - 1, FT and FT + 1 (one bump in a POI's central 4x4), moved by (1, 1).
@@ -103,7 +118,8 @@ OwnedPair feature_threshold_pair(const Params& p) {
     const auto [cx, cy, neighbours] = bumps[n % 3];
     const int target = p.feature_threshold + static_cast<int>(n % 5) - 2;  // FT-2 .. FT+2
     const int bump = std::max(1, target / neighbours);
-    px[(pois[n].y + 2 + cy) * W + pois[n].x + 2 + cx] = static_cast<std::uint8_t>(std::min(255, 100 + bump));
+    px[(pois[n].y + 2 + cy) * W + pois[n].x + 2 + cx] =
+        static_cast<std::uint8_t>(std::min(255, 100 + bump));
   }
   OwnedPair op{"threshold/feature-near-FT", W, H, px, {}};
   shift_into(px, op.next, W, H, 1, 1, 3);
@@ -143,12 +159,18 @@ std::vector<std::pair<std::string, Params>> check_settings() {
   return {{"px4flow-64", profile("px4flow-64")},
           {"px4flow-head", profile("px4flow-head")},
           {"320x240 S=7 B=16", big(320, 240, 7, 16)},
-          {"640x480 S=6 B=32 HF off", [&] { Params p = big(640, 480, 6, 32); p.hist_filter = false; return p; }()}};
+          {"640x480 S=6 B=32 HF off", [&] {
+             Params p = big(640, 480, 6, 32);
+             p.hist_filter = false;
+             return p;
+           }()}};
 }
 
-CheckCase fuzz_case(const std::string& setting, const Params& p, std::uint64_t first_seed, int count) {
+CheckCase fuzz_case(const std::string& setting, const Params& p, std::uint64_t first_seed,
+                    int count) {
   CheckCase c{"random", setting, p, {}};
-  for (int n = 0; n < count; ++n) c.pairs.push_back(random_pair(p.width, p.height, p.search_radius, first_seed + n));
+  for (int n = 0; n < count; ++n)
+    c.pairs.push_back(random_pair(p.width, p.height, p.search_radius, first_seed + n));
   return c;
 }
 
@@ -181,11 +203,16 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o) {
     binned_head.pairs.push_back(owned("real/" + name + "/camera-64x64", a, b));
     // Full size, one case each (frames differ in size): the profile's B and a dense grid.
     Params dense = sized(profile("px4flow-64"), fr.first.width, fr.first.height);
-    cases.push_back({"real/full-size", "px4flow-64 " + std::to_string(dense.width) + "x" + std::to_string(dense.height),
-                     dense, {owned("real/" + name + "/full", fr.first, fr.second)}});
+    cases.push_back(
+        {"real/full-size",
+         "px4flow-64 " + std::to_string(dense.width) + "x" + std::to_string(dense.height),
+         dense,
+         {owned("real/" + name + "/full", fr.first, fr.second)}});
     dense.search_radius = 7, dense.blocks = 32;
-    cases.push_back({"real/full-size", "S=7 B=32 " + std::to_string(dense.width) + "x" + std::to_string(dense.height),
-                     dense, {owned("real/" + name + "/full", fr.first, fr.second)}});
+    cases.push_back({"real/full-size",
+                     "S=7 B=32 " + std::to_string(dense.width) + "x" + std::to_string(dense.height),
+                     dense,
+                     {owned("real/" + name + "/full", fr.first, fr.second)}});
   }
   cases.push_back(std::move(binned64));
   cases.push_back(std::move(binned_head));
@@ -198,9 +225,11 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o) {
   CheckCase s320{"synthetic/320x240", settings[2].first, settings[2].second, {}};
   std::uint64_t seed = o.seed;
   for (const Motion& m : kMotions) {
-    s64.pairs.push_back(owned(std::string("synthetic/") + m.name + "/seed=" + std::to_string(seed), base64, moved(base64, m, seed)));
+    s64.pairs.push_back(owned(std::string("synthetic/") + m.name + "/seed=" + std::to_string(seed),
+                              base64, moved(base64, m, seed)));
     s64h.pairs.push_back(s64.pairs.back());
-    s320.pairs.push_back(owned(std::string("synthetic/") + m.name + "/seed=" + std::to_string(seed), base320, moved(base320, m, seed)));
+    s320.pairs.push_back(owned(std::string("synthetic/") + m.name + "/seed=" + std::to_string(seed),
+                               base320, moved(base320, m, seed)));
     ++seed;
   }
   cases.push_back(std::move(s64));

@@ -31,7 +31,8 @@ struct CorpusOptions {
 std::vector<CheckCase> build_check_corpus(const CorpusOptions& o);
 
 // A fuzz batch: `count` random pairs with seeds first_seed.., at the given parameters.
-CheckCase fuzz_case(const std::string& setting, const Params& p, std::uint64_t first_seed, int count);
+CheckCase fuzz_case(const std::string& setting, const Params& p, std::uint64_t first_seed,
+                    int count);
 
 // The larger parameter sets the corpus uses beside the two profiles.
 std::vector<std::pair<std::string, Params>> check_settings();

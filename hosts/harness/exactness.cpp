@@ -78,8 +78,8 @@ Comparison compare_with_reference(const CaseLabel& label, std::span<const std::s
     }
     const FrameResult r = estimate_flow(got.subspan(pair * per, per), p);
     const FrameResult& e = want.results[pair];
-    for (auto [field, a, b] : {std::tuple{"flow_x", e.flow_x, r.flow_x},
-                               std::tuple{"flow_y", e.flow_y, r.flow_y}})
+    for (auto [field, a, b] :
+         {std::tuple{"flow_x", e.flow_x, r.flow_x}, std::tuple{"flow_y", e.flow_y, r.flow_y}})
       if (std::bit_cast<std::uint32_t>(a) != std::bit_cast<std::uint32_t>(b))
         emit(where + " field=" + field + " expected=" + bits_hex(a) + " got=" + bits_hex(b));
   }

@@ -19,9 +19,14 @@ std::optional<FieldDiff> first_difference(const PoiRecord& e, const PoiRecord& g
   };
   // SPEC §4's order, then the padding.
   const std::pair<const char*, std::pair<long, long>> fields[] = {
-      {"x", {e.x, g.x}},          {"y", {e.y, g.y}},       {"status", {e.status, g.status}},
-      {"feature", {e.feature, g.feature}}, {"dx", {e.dx, g.dx}}, {"dy", {e.dy, g.dy}},
-      {"sad", {e.sad, g.sad}},    {"dir", {e.dir, g.dir}},
+      {"x", {e.x, g.x}},
+      {"y", {e.y, g.y}},
+      {"status", {e.status, g.status}},
+      {"feature", {e.feature, g.feature}},
+      {"dx", {e.dx, g.dx}},
+      {"dy", {e.dy, g.dy}},
+      {"sad", {e.sad, g.sad}},
+      {"dir", {e.dir, g.dir}},
   };
   for (const auto& [name, v] : fields)
     if (auto d = diff(name, v.first, v.second)) return d;

@@ -58,15 +58,23 @@ std::string num(double v, const char* f = "%.1f") {
 }
 
 Section conformance(const Json& check, const std::string& cmd) {
-  Section s{"Conformance", "Every backend against `ref-original`, records byte for byte and flow by bits, on " +
-                               std::to_string(check.value("cases", 0)) + " cases (" + std::to_string(check.value("pairs", 0)) +
-                               " frame pairs), seed " + std::to_string(check.value("seed", 0)) + ". Command: `" + cmd + "`.",
-            {"backend", "result", "cases passed", "cases failed", "n/a", "pairs", "note"}, {}, "", {}};
+  Section s{"Conformance",
+            "Every backend against `ref-original`, records byte for byte and flow by bits, on " +
+                std::to_string(check.value("cases", 0)) + " cases (" +
+                std::to_string(check.value("pairs", 0)) + " frame pairs), seed " +
+                std::to_string(check.value("seed", 0)) + ". Command: `" + cmd + "`.",
+            {"backend", "result", "cases passed", "cases failed", "n/a", "pairs", "note"},
+            {},
+            "",
+            {}};
   for (const auto& b : check["backends"])
-    s.rows.push_back({b["name"], b["state"], std::to_string(b["passed"].get<long>()), std::to_string(b["failed"].get<long>()),
-                      std::to_string(b["not_applicable"].get<long>()), std::to_string(b["pairs"].get<long>()), b["reason"]});
-  s.text += " Totals: " + std::to_string(check.value("passed", 0)) + " passed, " + std::to_string(check.value("failed", 0)) +
-            " failed, " + std::to_string(check.value("skipped", 0)) + " skipped.";
+    s.rows.push_back({b["name"], b["state"], std::to_string(b["passed"].get<long>()),
+                      std::to_string(b["failed"].get<long>()),
+                      std::to_string(b["not_applicable"].get<long>()),
+                      std::to_string(b["pairs"].get<long>()), b["reason"]});
+  s.text += " Totals: " + std::to_string(check.value("passed", 0)) + " passed, " +
+            std::to_string(check.value("failed", 0)) + " failed, " +
+            std::to_string(check.value("skipped", 0)) + " skipped.";
   return s;
 }
 
@@ -75,11 +83,13 @@ std::string base64(const std::string& bytes) {
   std::string out;
   std::size_t i = 0;
   for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = (unsigned char)bytes[i] << 16 | (unsigned char)bytes[i + 1] << 8 | (unsigned char)bytes[i + 2];
+    const unsigned v = (unsigned char)bytes[i] << 16 | (unsigned char)bytes[i + 1] << 8 |
+                       (unsigned char)bytes[i + 2];
     out += {k[v >> 18], k[(v >> 12) & 63], k[(v >> 6) & 63], k[v & 63]};
   }
   if (i < bytes.size()) {
-    const unsigned v = (unsigned char)bytes[i] << 16 | (i + 1 < bytes.size() ? (unsigned char)bytes[i + 1] << 8 : 0);
+    const unsigned v = (unsigned char)bytes[i] << 16 |
+                       (i + 1 < bytes.size() ? (unsigned char)bytes[i + 1] << 8 : 0);
     out += {k[v >> 18], k[(v >> 12) & 63], i + 1 < bytes.size() ? k[(v >> 6) & 63] : '=', '='};
   }
   return out;
@@ -91,10 +101,15 @@ std::string slurp(const std::filesystem::path& p) {
 }
 
 Section accuracy_section(const ReportInputs& in) {
-  Section s{"Accuracy", "Frame flow against known motion (synthetic pairs) and agreement with OpenCV's DIS on real "
-                        "video, beside OpenCV's pyramidal Lucas-Kanade and DIS, timed in the same run. Command: `" +
-                            in.accuracy_command + "`; method details in docs/accuracy.md.",
-            in.accuracy.front(), {in.accuracy.begin() + 1, in.accuracy.end()}, "", in.pictures};
+  Section s{
+      "Accuracy",
+      "Frame flow against known motion (synthetic pairs) and agreement with OpenCV's DIS on real "
+      "video, beside OpenCV's pyramidal Lucas-Kanade and DIS, timed in the same run. Command: `" +
+          in.accuracy_command + "`; method details in docs/accuracy.md.",
+      in.accuracy.front(),
+      {in.accuracy.begin() + 1, in.accuracy.end()},
+      "",
+      in.pictures};
   return s;
 }
 
@@ -107,29 +122,47 @@ Section throughput(const Json& bench, const std::string& cmd) {
     if (timed(r) && r["sweep"] == "batch" && r["batch"] == 256) pick = &r;
   if (!pick)
     for (const auto& r : bench["rows"])
-      if (timed(r)) { pick = &r; break; }
-  Section s{"Throughput", "", {"backend", "clock", "ns/frame (median)", "min..max", "frames/s", "ns/POI", "cycles/frame", "x bound", "vs ref-original"}, {}, "", {}};
+      if (timed(r)) {
+        pick = &r;
+        break;
+      }
+  Section s{"Throughput",
+            "",
+            {"backend", "clock", "ns/frame (median)", "min..max", "frames/s", "ns/POI",
+             "cycles/frame", "x bound", "vs ref-original"},
+            {},
+            "",
+            {}};
   if (!pick) return s.text = "No timed rows.", s;
   auto same_point = [&](const Json& r) {
-    return timed(r) && r["sweep"] == (*pick)["sweep"] && r["batch"] == (*pick)["batch"] && r["width"] == (*pick)["width"] &&
-           r["search_radius"] == (*pick)["search_radius"] && r["threads"] == (*pick)["threads"];
+    return timed(r) && r["sweep"] == (*pick)["sweep"] && r["batch"] == (*pick)["batch"] &&
+           r["width"] == (*pick)["width"] && r["search_radius"] == (*pick)["search_radius"] &&
+           r["threads"] == (*pick)["threads"];
   };
   std::vector<std::pair<std::string, double>> bars;
   for (const auto& r : bench["rows"]) {
     if (!same_point(r)) continue;
-    s.rows.push_back({r["backend"], r["source"], num(r["median_ns_per_frame"], "%.0f"),
-                      num(r["min_ns_per_frame"], "%.0f") + ".." + num(r["max_ns_per_frame"], "%.0f"),
-                      num(r["frames_per_s"]), num(r["ns_per_poi"]), r.contains("cycles_per_frame") ? num(r["cycles_per_frame"], "%.0f") : "-",
-                      r.contains("bound_ratio") ? num(r["bound_ratio"], "%.2f") : "-",
-                      r.contains("speedup_vs_ref_original") ? num(r["speedup_vs_ref_original"], "%.2fx") : "-"});
-    if (r["source"].get<std::string>().rfind("host", 0) == 0) bars.push_back({r["backend"], r["frames_per_s"]});
+    s.rows.push_back(
+        {r["backend"], r["source"], num(r["median_ns_per_frame"], "%.0f"),
+         num(r["min_ns_per_frame"], "%.0f") + ".." + num(r["max_ns_per_frame"], "%.0f"),
+         num(r["frames_per_s"]), num(r["ns_per_poi"]),
+         r.contains("cycles_per_frame") ? num(r["cycles_per_frame"], "%.0f") : "-",
+         r.contains("bound_ratio") ? num(r["bound_ratio"], "%.2f") : "-",
+         r.contains("speedup_vs_ref_original") ? num(r["speedup_vs_ref_original"], "%.2fx") : "-"});
+    if (r["source"].get<std::string>().rfind("host", 0) == 0)
+      bars.push_back({r["backend"], r["frames_per_s"]});
   }
-  const std::string point = (*pick)["profile"].get<std::string>() + ", " + std::to_string((*pick)["width"].get<int>()) + "x" +
-                            std::to_string((*pick)["height"].get<int>()) + ", batch " + std::to_string((*pick)["batch"].get<int>()) +
-                            ", " + std::to_string((*pick)["threads"].get<int>()) + " threads";
+  const std::string point = (*pick)["profile"].get<std::string>() + ", " +
+                            std::to_string((*pick)["width"].get<int>()) + "x" +
+                            std::to_string((*pick)["height"].get<int>()) + ", batch " +
+                            std::to_string((*pick)["batch"].get<int>()) + ", " +
+                            std::to_string((*pick)["threads"].get<int>()) + " threads";
   s.title += " (" + point + ")";
-  s.text = "Median of repeated runs after a warm-up run whose records matched ref-original. Speed-ups compare rows of "
-           "the same clock only. Command: `" + cmd + "`.";
+  s.text =
+      "Median of repeated runs after a warm-up run whose records matched ref-original. Speed-ups "
+      "compare rows of "
+      "the same clock only. Command: `" +
+      cmd + "`.";
   s.svg = svg_bar_chart("Frames per second, host clock (" + point + ")", bars, "frames/s");
   return s;
 }
@@ -141,10 +174,13 @@ Section scaling(const Json& bench, const std::string& sweep, const std::string& 
   std::map<std::string, std::map<double, std::string>> cells;
   std::map<double, std::string> columns;
   for (const auto& r : bench["rows"]) {
-    if (!timed(r) || r["sweep"] != sweep || r["source"].get<std::string>().rfind("host", 0) != 0) continue;
-    const double x = by_batch ? r["batch"].get<double>() : r["width"].get<double>() * r["height"].get<double>();
+    if (!timed(r) || r["sweep"] != sweep || r["source"].get<std::string>().rfind("host", 0) != 0)
+      continue;
+    const double x =
+        by_batch ? r["batch"].get<double>() : r["width"].get<double>() * r["height"].get<double>();
     columns[x] = by_batch ? std::to_string(r["batch"].get<int>())
-                          : std::to_string(r["width"].get<int>()) + "x" + std::to_string(r["height"].get<int>());
+                          : std::to_string(r["width"].get<int>()) + "x" +
+                                std::to_string(r["height"].get<int>());
     const double y = by_batch ? r["frames_per_s"].get<double>() : r["ns_per_poi"].get<double>();
     auto& se = by_backend[r["backend"]];
     se.name = r["backend"];
@@ -161,8 +197,9 @@ Section scaling(const Json& bench, const std::string& sweep, const std::string& 
   }
   std::vector<Series> series;
   for (auto& [_, se] : by_backend) series.push_back(se);
-  s.text = by_batch ? "Frames per second by batch size (host clock, same inputs for every backend)."
-                    : "Nanoseconds per POI by frame size (host clock, same inputs for every backend).";
+  s.text = by_batch
+               ? "Frames per second by batch size (host clock, same inputs for every backend)."
+               : "Nanoseconds per POI by frame size (host clock, same inputs for every backend).";
   s.svg = by_batch ? svg_line_chart(title, series, "batch size (frame pairs per run)", "frames/s")
                    : svg_line_chart(title, series, "frame size (pixels)", "ns per POI");
   return s;
@@ -191,24 +228,30 @@ std::string render_md(const std::vector<Section>& secs, const std::string& intro
 std::string render_html(const std::vector<Section>& secs, const std::string& intro,
                         const std::filesystem::path& dir) {
   std::ostringstream o;
-  o << "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>pxflow report</title><style>"
+  o << "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>pxflow "
+       "report</title><style>"
        "body{font-family:sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;color:#222}"
-       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px 8px;font-size:13px}"
-       "th{background:#f0f0f0}code{background:#f4f4f4;padding:1px 4px}td.failed{color:#b00;font-weight:bold}"
+       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px "
+       "8px;font-size:13px}"
+       "th{background:#f0f0f0}code{background:#f4f4f4;padding:1px "
+       "4px}td.failed{color:#b00;font-weight:bold}"
        "td.passed{color:#070}</style></head><body><h1>pxflow report</h1><p>"
     << html_escape(intro) << "</p>";
   for (const auto& s : secs) {
     o << "<h2>" << html_escape(s.title) << "</h2><p>" << html_escape(s.text) << "</p>" << s.svg;
     for (const auto& p : s.pictures)  // inlined, so the page stays one self-contained file
-      o << "<figure><img alt='" << html_escape(p.caption) << "' style='max-width:100%' src='data:image/png;base64,"
-        << base64(slurp(dir / p.file)) << "'><figcaption>" << html_escape(p.caption) << "</figcaption></figure>";
+      o << "<figure><img alt='" << html_escape(p.caption)
+        << "' style='max-width:100%' src='data:image/png;base64," << base64(slurp(dir / p.file))
+        << "'><figcaption>" << html_escape(p.caption) << "</figcaption></figure>";
     if (s.rows.empty()) continue;
     o << "<table><tr>";
     for (const auto& h : s.header) o << "<th>" << html_escape(h) << "</th>";
     o << "</tr>";
     for (const auto& r : s.rows) {
       o << "<tr>";
-      for (const auto& c : r) o << "<td class='" << (c == "failed" || c == "passed" ? c : "") << "'>" << html_escape(c) << "</td>";
+      for (const auto& c : r)
+        o << "<td class='" << (c == "failed" || c == "passed" ? c : "") << "'>" << html_escape(c)
+          << "</td>";
       o << "</tr>";
     }
     o << "</table>";
@@ -218,9 +261,25 @@ std::string render_html(const std::vector<Section>& secs, const std::string& int
 }
 
 std::string csv(const Json& bench) {
-  const char* cols[] = {"backend", "sweep", "profile", "width", "height", "search_radius", "batch", "threads", "source",
-                        "repeats", "median_ns_per_frame", "min_ns_per_frame", "max_ns_per_frame", "frames_per_s",
-                        "ns_per_poi", "cycles_per_frame", "bound_ratio", "speedup_vs_ref_original", "note"};
+  const char* cols[] = {"backend",
+                        "sweep",
+                        "profile",
+                        "width",
+                        "height",
+                        "search_radius",
+                        "batch",
+                        "threads",
+                        "source",
+                        "repeats",
+                        "median_ns_per_frame",
+                        "min_ns_per_frame",
+                        "max_ns_per_frame",
+                        "frames_per_s",
+                        "ns_per_poi",
+                        "cycles_per_frame",
+                        "bound_ratio",
+                        "speedup_vs_ref_original",
+                        "note"};
   std::ostringstream o;
   for (std::size_t i = 0; i < std::size(cols); ++i) o << (i ? "," : "") << cols[i];
   o << "\n";
@@ -247,10 +306,12 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
 void write_report(const std::string& out_dir, const ReportInputs& in) {
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
-  if (ec || !std::filesystem::is_directory(out_dir)) throw InputError("--out " + out_dir + ": cannot create the folder");
+  if (ec || !std::filesystem::is_directory(out_dir))
+    throw InputError("--out " + out_dir + ": cannot create the folder");
   const Json m = machine();
-  const std::string intro = "Made by `" + in.report_command + "` on " + m["host"].get<std::string>() + " (" +
-                            m["cpu"].get<std::string>() + ", " + std::to_string(m["cores"].get<unsigned>()) + " cores, " +
+  const std::string intro = "Made by `" + in.report_command + "` on " +
+                            m["host"].get<std::string>() + " (" + m["cpu"].get<std::string>() +
+                            ", " + std::to_string(m["cores"].get<unsigned>()) + " cores, " +
                             m["os"].get<std::string>() + ") at " + m["date"].get<std::string>() +
                             ". Raw data: results.json and results.csv beside this file.";
   std::vector<Section> secs;
@@ -261,7 +322,8 @@ void write_report(const std::string& out_dir, const ReportInputs& in) {
     secs.push_back(scaling(in.bench, "size", "Scaling with frame size"));
   }
   if (!in.accuracy.empty()) secs.push_back(accuracy_section(in));
-  Json commands{{"check", in.check_command}, {"bench", in.bench_command}, {"report", in.report_command}};
+  Json commands{
+      {"check", in.check_command}, {"bench", in.bench_command}, {"report", in.report_command}};
   Json results{{"machine", m}, {"commands", nullptr}, {"check", in.check}, {"bench", in.bench}};
   for (const auto& s : in.sections) {
     for (const auto& t : s.tables) secs.push_back({t.title, t.text, t.header, t.rows, t.svg, {}});

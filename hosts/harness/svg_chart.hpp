@@ -12,7 +12,8 @@ struct Series {
 };
 
 // Horizontal bars, one per label, on a log scale (values span orders of magnitude).
-std::string svg_bar_chart(const std::string& title, const std::vector<std::pair<std::string, double>>& bars,
+std::string svg_bar_chart(const std::string& title,
+                          const std::vector<std::pair<std::string, double>>& bars,
                           const std::string& unit);
 
 // Lines on log-log axes.

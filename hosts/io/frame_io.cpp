@@ -1,5 +1,8 @@
 #include "frame_io.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -8,9 +11,6 @@
 #include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 #include "errors.hpp"
 #include "image_header.hpp"
@@ -81,7 +81,8 @@ class StderrSilenced {
 };
 
 Frame load_image(const std::string& path) {
-  if (auto declared = declared_image_size(path)) check_size_limits(path, declared->width, declared->height);
+  if (auto declared = declared_image_size(path))
+    check_size_limits(path, declared->width, declared->height);
   cv::Mat img;
   try {
     StderrSilenced quiet;
@@ -97,9 +98,15 @@ Frame load_image(const std::string& path) {
   check_size_limits(path, img.cols, img.rows);
   cv::Mat gray;
   switch (img.channels()) {
-    case 1: gray = img; break;
-    case 3: cv::cvtColor(img, gray, cv::COLOR_BGR2GRAY); break;  // OpenCV's weights
-    case 4: cv::cvtColor(img, gray, cv::COLOR_BGRA2GRAY); break;
+    case 1:
+      gray = img;
+      break;
+    case 3:
+      cv::cvtColor(img, gray, cv::COLOR_BGR2GRAY);
+      break;  // OpenCV's weights
+    case 4:
+      cv::cvtColor(img, gray, cv::COLOR_BGRA2GRAY);
+      break;
     default:
       throw InputError(path + ": " + std::to_string(img.channels()) +
                        "-channel image; expected gray, BGR or BGRA");
@@ -127,7 +134,8 @@ FrameSize parse_frame_size(std::string_view text) {
 
 bool is_raw_path(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext == ".raw";
 }
 

@@ -11,7 +11,8 @@ namespace {
 using Bytes = std::vector<unsigned char>;
 
 std::uint32_t be32(const Bytes& b, std::size_t at) {
-  return std::uint32_t{b[at]} << 24 | std::uint32_t{b[at + 1]} << 16 | std::uint32_t{b[at + 2]} << 8 | b[at + 3];
+  return std::uint32_t{b[at]} << 24 | std::uint32_t{b[at + 1]} << 16 |
+         std::uint32_t{b[at + 2]} << 8 | b[at + 3];
 }
 std::uint32_t be16(const Bytes& b, std::size_t at) { return std::uint32_t{b[at]} << 8 | b[at + 1]; }
 std::int64_t le32s(const Bytes& b, std::size_t at) {
@@ -21,7 +22,9 @@ std::int64_t le32s(const Bytes& b, std::size_t at) {
 
 FrameSize clamp_size(std::int64_t w, std::int64_t h) {
   // Report absurd values as the largest int so the caller's limit check catches them.
-  auto c = [](std::int64_t v) { return static_cast<int>(v < 0 ? -v : (v > INT32_MAX ? INT32_MAX : v)); };
+  auto c = [](std::int64_t v) {
+    return static_cast<int>(v < 0 ? -v : (v > INT32_MAX ? INT32_MAX : v));
+  };
   return {c(w), c(h)};
 }
 
@@ -37,7 +40,8 @@ std::optional<FrameSize> pnm_size(const Bytes& b) {
         ++at;
     }
     if (at >= b.size() || !std::isdigit(b[at])) return std::nullopt;
-    while (at < b.size() && std::isdigit(b[at]) && out < (std::int64_t{1} << 40)) out = out * 10 + (b[at++] - '0');
+    while (at < b.size() && std::isdigit(b[at]) && out < (std::int64_t{1} << 40))
+      out = out * 10 + (b[at++] - '0');
   }
   return clamp_size(v[0], v[1]);
 }

@@ -14,9 +14,9 @@ std::string float_bits_hex(float f) {
 Json record_json(const PoiRecord& r) {
   Json sub = Json::array();
   for (auto s : r.sub) sub.push_back(s);
-  return Json{{"x", r.x},     {"y", r.y},     {"status", r.status}, {"feature", r.feature},
-              {"dx", r.dx},   {"dy", r.dy},   {"sad", r.sad},       {"dir", r.dir},
-              {"sub", sub},   {"hx", r.hx},   {"hy", r.hy}};
+  return Json{{"x", r.x},   {"y", r.y},   {"status", r.status}, {"feature", r.feature},
+              {"dx", r.dx}, {"dy", r.dy}, {"sad", r.sad},       {"dir", r.dir},
+              {"sub", sub}, {"hx", r.hx}, {"hy", r.hy}};
 }
 
 Json params_json(const Params& p) {

@@ -5,13 +5,14 @@
 #include <opencv2/imgproc.hpp>
 
 #include "estimators.hpp"
+#include "sample_data.hpp"
 #include "truth_pairs.hpp"
 
 using namespace pxflow::accuracy;
 
 namespace {
 
-const std::string kData = "/usr/share/doc/opencv-doc/examples/data";
+const std::string kData = pxflow::kSampleDataDir;
 
 // 1 - the normalised correlation of next with prev moved by `motion`, over the interior: 0 for
 // a perfect explanation whatever the brightness change, about 1 for an unrelated image.

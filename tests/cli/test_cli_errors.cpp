@@ -1,7 +1,6 @@
 // Bad input to `pxflow flow`: one clear line on stderr naming the culprit, exit code 2, and
 // nothing on stdout (no partial JSON). Runs the real binary.
 #include <catch2/catch.hpp>
-
 #include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -83,7 +82,8 @@ TEST_CASE("raw files need --size and exactly W*H bytes", "[cli][errors]") {
   Files f;
   require_bad_input({"flow", f.raw, f.raw}, "needs --size");
   require_bad_input({"flow", "--size", "64x32", f.raw, f.raw}, "holds 4096 bytes");
-  require_bad_input({"flow", "--size", "64x64", f.good, f.good2}, "--size applies to .raw files only");
+  require_bad_input({"flow", "--size", "64x64", f.good, f.good2},
+                    "--size applies to .raw files only");
 }
 
 TEST_CASE("frames that do not fit each other or the profile", "[cli][errors]") {
@@ -96,7 +96,8 @@ TEST_CASE("frames that do not fit each other or the profile", "[cli][errors]") {
 
 TEST_CASE("unknown names and malformed parameters", "[cli][errors]") {
   Files f;
-  require_bad_input({"flow", "--profile", "px4flow-99", f.good, f.good2}, "unknown profile 'px4flow-99'");
+  require_bad_input({"flow", "--profile", "px4flow-99", f.good, f.good2},
+                    "unknown profile 'px4flow-99'");
   require_bad_input({"flow", "--set", "colour=1", f.good, f.good2}, "unknown parameter 'colour'");
   require_bad_input({"flow", "--set", "search_radius", f.good, f.good2}, "KEY=VALUE");
   require_bad_input({"flow", "--set", "search_radius=four", f.good, f.good2}, "search_radius");
@@ -105,7 +106,8 @@ TEST_CASE("unknown names and malformed parameters", "[cli][errors]") {
   require_bad_input({"flow", "--set", "tile=16", f.good, f.good2}, "tile");
   require_bad_input({"flow", "--set", "hist_filter=2", f.good, f.good2}, "hist_filter");
   require_bad_input({"flow", "--set", "sad_threshold=70000", f.good, f.good2}, "sad_threshold");
-  require_bad_input({"flow", "--backend", "cuda-magic", f.good, f.good2}, "unknown backend 'cuda-magic'");
+  require_bad_input({"flow", "--backend", "cuda-magic", f.good, f.good2},
+                    "unknown backend 'cuda-magic'");
   require_bad_input({"flow", "--frobnicate", f.good, f.good2}, "frobnicate");
   require_bad_input({"flow", f.good}, "NEXT");
   require_bad_input({"teleport"}, "teleport");

@@ -1,8 +1,7 @@
 // `pxflow flow` on good input: the JSON contract of the foundation issue, text output, and the
 // same answer from PNG, raw and colour versions of one frame pair.
-#include <catch2/catch.hpp>
-
 #include <bit>
+#include <catch2/catch.hpp>
 #include <cstring>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
@@ -54,9 +53,10 @@ TEST_CASE("flow --json prints the documented object", "[cli][json]") {
   ShiftedPair sp;
   for (const char* backend : {"ref-original", "ref-local", "ref-global"}) {
     CAPTURE(backend);
-    const json j = flow_json({"flow", "--json", "--backend", backend, sp.dir.path("prev.png"), sp.dir.path("next.png")});
-    for (const char* key : {"flow_x", "flow_y", "flow_x_bits", "flow_y_bits", "quality", "meancount",
-                            "histx", "histy", "counts", "pois"})
+    const json j = flow_json(
+        {"flow", "--json", "--backend", backend, sp.dir.path("prev.png"), sp.dir.path("next.png")});
+    for (const char* key : {"flow_x", "flow_y", "flow_x_bits", "flow_y_bits", "quality",
+                            "meancount", "histx", "histy", "counts", "pois"})
       REQUIRE(j.contains(key));
     CHECK(j["flow_x"].get<double>() == 2.0);
     CHECK(j["flow_y"].get<double>() == -1.0);
@@ -70,7 +70,8 @@ TEST_CASE("flow --json prints the documented object", "[cli][json]") {
     CHECK(j["counts"]["sad_ops"] == 91520);
     REQUIRE(j["pois"].size() == 64);
     const json& p = j["pois"][9];
-    for (const char* key : {"x", "y", "status", "feature", "dx", "dy", "sad", "dir", "sub", "hx", "hy"})
+    for (const char* key :
+         {"x", "y", "status", "feature", "dx", "dy", "sad", "dir", "sub", "hx", "hy"})
       REQUIRE(p.contains(key));
     CHECK(p["x"] == 11);
     CHECK(p["y"] == 11);
@@ -83,24 +84,29 @@ TEST_CASE("flow --json prints the documented object", "[cli][json]") {
     CHECK(p["hx"] == 4);
     CHECK(p["hy"] == -2);
   }
-  CHECK(flow_json({"flow", "--json", "--backend", "ref-local", sp.dir.path("prev.png"), sp.dir.path("next.png")})["counts"]["interpolations"] == 19200);
+  CHECK(flow_json({"flow", "--json", "--backend", "ref-local", sp.dir.path("prev.png"),
+                   sp.dir.path("next.png")})["counts"]["interpolations"] == 19200);
 }
 
 TEST_CASE("PNG, raw and colour inputs give identical JSON", "[cli][json]") {
   ShiftedPair sp;
   const json png = flow_json({"flow", "--json", sp.dir.path("prev.png"), sp.dir.path("next.png")});
-  const json raw = flow_json({"flow", "--json", "--size", "64x64", sp.dir.path("prev.raw"), sp.dir.path("next.raw")});
-  const json bgr = flow_json({"flow", "--json", sp.dir.path("prev-bgr.png"), sp.dir.path("next-bgr.png")});
+  const json raw = flow_json(
+      {"flow", "--json", "--size", "64x64", sp.dir.path("prev.raw"), sp.dir.path("next.raw")});
+  const json bgr =
+      flow_json({"flow", "--json", sp.dir.path("prev-bgr.png"), sp.dir.path("next-bgr.png")});
   CHECK(png == raw);
   CHECK(png == bgr);
 }
 
 TEST_CASE("profile and --set reach the kernel", "[cli][json]") {
   ShiftedPair sp;
-  const json head = flow_json({"flow", "--json", "--profile", "px4flow-head", sp.dir.path("prev.png"), sp.dir.path("next.png")});
+  const json head = flow_json({"flow", "--json", "--profile", "px4flow-head",
+                               sp.dir.path("prev.png"), sp.dir.path("next.png")});
   CHECK(head["pois"].size() == 25);
   CHECK(head["histx"].size() == 2 * (2 * 8 + 1) + 1);
-  const json strict = flow_json({"flow", "--json", "--set", "feature_threshold=6121", sp.dir.path("prev.png"), sp.dir.path("next.png")});
+  const json strict = flow_json({"flow", "--json", "--set", "feature_threshold=6121",
+                                 sp.dir.path("prev.png"), sp.dir.path("next.png")});
   CHECK(strict["meancount"] == 0);  // no feature can reach 6121 (max 6120)
   CHECK(strict["quality"] == 0);
 }

@@ -15,5 +15,4 @@ std::vector<OwnedPair> gap8_real_pairs(int w, int h);
 // `n` seeded random pairs, every hostile pattern and the real pairs, at p's size.
 std::vector<OwnedPair> gap8_corpus(const Params& p, int n_random, std::uint64_t seed);
 
-
 }  // namespace pxflow::test

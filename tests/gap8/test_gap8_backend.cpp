@@ -5,12 +5,12 @@
 
 #include "errors.hpp"
 #include "estimate.hpp"
+#include "exact_check.hpp"
 #include "gap8_backend.hpp"
 #include "gap8_test_util.hpp"
+#include "gap8_variants.hpp"
 #include "grid.hpp"
 #include "registry.hpp"
-#include "exact_check.hpp"
-#include "gap8_variants.hpp"
 #include "run_helpers.hpp"
 
 namespace pxflow::test {
@@ -117,7 +117,8 @@ TEST_CASE("gap8 batch of several cluster runs: same bytes and cycles on 1 and 2 
   // are simulated side by side and merged in order.
   const Params p = profile("px4flow-64");
   std::vector<OwnedPair> owned;
-  for (int i = 0; i < 100; ++i) owned.push_back(random_pair(p.width, p.height, p.search_radius, 2026 + i));
+  for (int i = 0; i < 100; ++i)
+    owned.push_back(random_pair(p.width, p.height, p.search_radius, 2026 + i));
   std::vector<FramePair> views;
   for (const OwnedPair& o : owned) views.push_back(o.view());
   std::vector<std::string> names;
@@ -136,8 +137,8 @@ TEST_CASE("gap8 batch of several cluster runs: same bytes and cycles on 1 and 2 
     results.push_back(backend.last_stats().pairs);
   }
   for (const auto& g : got) {
-    const Comparison c =
-        compare_with_reference({"gap8-original", "100 random pairs", "px4flow-64"}, names, p, want, g, 5);
+    const Comparison c = compare_with_reference({"gap8-original", "100 random pairs", "px4flow-64"},
+                                                names, p, want, g, 5);
     INFO(c.text());
     REQUIRE(c.ok());
   }

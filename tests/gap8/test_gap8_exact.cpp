@@ -3,10 +3,10 @@
 // still fits L1.
 #include <catch2/catch.hpp>
 
+#include "exact_check.hpp"
 #include "gap8_backend.hpp"
 #include "gap8_test_util.hpp"
 #include "grid.hpp"
-#include "exact_check.hpp"
 
 namespace pxflow::test {
 namespace {
@@ -17,8 +17,8 @@ void check_variant(const Gap8VariantInfo& v, int cores, const std::string& setti
   Gap8Backend backend(v.id, gap8_host::RunOptions{cores, true, false});
   REQUIRE(backend.unsupported(p).empty());
   const std::string who = std::string("gap8-") + v.name + " on " + std::to_string(cores) + " cores";
-  require_exact({who, "gap8 corpus", setting},
-                gap8_corpus(p, n_random, seed), p, batch_run_of(backend));
+  require_exact({who, "gap8 corpus", setting}, gap8_corpus(p, n_random, seed), p,
+                batch_run_of(backend));
 }
 
 }  // namespace
@@ -40,7 +40,8 @@ TEST_CASE("gap8 is bit-exact on a larger frame that fits L1, odd width included"
   p.blocks = 6;
   p.hist_filter = false;
   validate(p);
-  for (const Gap8VariantInfo& v : gap8_variants()) check_variant(v, 8, "101x72 S=7 B=6", p, 3, 3000);
+  for (const Gap8VariantInfo& v : gap8_variants())
+    check_variant(v, 8, "101x72 S=7 B=6", p, 3, 3000);
 }
 
 }  // namespace pxflow::test

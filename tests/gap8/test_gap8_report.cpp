@@ -19,14 +19,18 @@ std::string slurp(const std::string& path) {
 
 // Small check and bench results of ref-original, so the report runs nothing else but the model.
 void make_inputs(const TempDir& dir) {
-  REQUIRE(run_pxflow({"check", "--backends", "ref-original", "--generated-only", "--json", dir.path("c.json")}).exit_code == 0);
-  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0", "--json",
-                      dir.path("b.json")}).exit_code == 0);
+  REQUIRE(run_pxflow({"check", "--backends", "ref-original", "--generated-only", "--json",
+                      dir.path("c.json")})
+              .exit_code == 0);
+  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
+                      "--json", dir.path("b.json")})
+              .exit_code == 0);
 }
 
 RunResult report(const TempDir& dir, const std::string& out, std::vector<std::string> extra) {
-  std::vector<std::string> args{"report", "--out", dir.path(out), "--check-json", dir.path("c.json"),
-                                "--bench-json", dir.path("b.json"), "--no-accuracy"};
+  std::vector<std::string> args{
+      "report",           "--out",        dir.path(out),      "--check-json",
+      dir.path("c.json"), "--bench-json", dir.path("b.json"), "--no-accuracy"};
   args.insert(args.end(), extra.begin(), extra.end());
   return run_pxflow(args);
 }
@@ -40,14 +44,15 @@ TEST_CASE("pxflow report shows the GAP8 model beside the paper's Tables I-III", 
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   const std::string md = slurp(dir.path("all/report.md"));
-  for (const char* heading : {"## GAP8 model: Table I:", "## GAP8 model: Table II:", "## GAP8 model: Table III:",
-                              "## GAP8 model: every core count"})
+  for (const char* heading : {"## GAP8 model: Table I:", "## GAP8 model: Table II:",
+                              "## GAP8 model: Table III:", "## GAP8 model: every core count"})
     CHECK(md.find(heading) != std::string::npos);
   CHECK(md.find("`pxflow gap8 --cores 1-8`") != std::string::npos);
   CHECK(md.find("| 4-byte SAD ops | original | 91520 | 91520 | +0.0% |") != std::string::npos);
   CHECK(md.find("| cycles, 1 core(s) | original |") != std::string::npos);
-  CHECK(md.find("| cycles, 2 core(s) |") == std::string::npos);  // the paper's tables: 1 and 8 cores
-  CHECK(md.find("| local | 5 |") != std::string::npos);          // every count in the last table
+  CHECK(md.find("| cycles, 2 core(s) |") ==
+        std::string::npos);                              // the paper's tables: 1 and 8 cores
+  CHECK(md.find("| local | 5 |") != std::string::npos);  // every count in the last table
 
   const auto j = nlohmann::json::parse(slurp(dir.path("all/results.json")));
   CHECK(j["commands"]["gap8"] == "pxflow gap8 --cores 1-8");
@@ -57,16 +62,19 @@ TEST_CASE("pxflow report shows the GAP8 model beside the paper's Tables I-III", 
   CHECK(eight["speedup"].get<double>() <= eight["amdahl_limit"].get<double>());
   // The table shows the figure of the JSON.
   char cycles[32];
-  std::snprintf(cycles, sizeof cycles, "| cycles, 8 core(s) | original | %.1fk |", eight["cycles"].get<double>() / 1000);
+  std::snprintf(cycles, sizeof cycles, "| cycles, 8 core(s) | original | %.1fk |",
+                eight["cycles"].get<double>() / 1000);
   CHECK(md.find(cycles) != std::string::npos);
   const std::string html = slurp(dir.path("all/report.html"));
   CHECK(html.find("<title>GAP8 model: speed-up over 1 core</title>") != std::string::npos);
 }
 
-TEST_CASE("pxflow report leaves the GAP8 section out for other backends or with --no-gap8", "[gap8][report]") {
+TEST_CASE("pxflow report leaves the GAP8 section out for other backends or with --no-gap8",
+          "[gap8][report]") {
   TempDir dir;
   make_inputs(dir);
-  for (const auto& extra : {std::vector<std::string>{"--backends", "ref-original"}, std::vector<std::string>{"--no-gap8"}}) {
+  for (const auto& extra : {std::vector<std::string>{"--backends", "ref-original"},
+                            std::vector<std::string>{"--no-gap8"}}) {
     const RunResult r = report(dir, "without", extra);
     INFO(r.out << r.err);
     REQUIRE(r.exit_code == 0);

@@ -18,7 +18,8 @@ enum class Fault { kFlipBit, kSkipRecord, kNone };
 class Damaged final : public Backend {
  public:
   Damaged(Fault f, int max_side) : fault_(f), max_side_(max_side) {}
-  void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out, OpCounts& c) override {
+  void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
+           OpCounts& c) override {
     const std::size_t per = poi_count(p);
     for (std::size_t n = 0; n < pairs.size(); ++n) {
       auto recs = out.subspan(n * per, per);
@@ -32,7 +33,8 @@ class Damaged final : public Backend {
     }
   }
   std::string unsupported(const Params& p) const override {
-    if (p.width > max_side_ || p.height > max_side_) return "frames larger than " + std::to_string(max_side_) + " pixels";
+    if (p.width > max_side_ || p.height > max_side_)
+      return "frames larger than " + std::to_string(max_side_) + " pixels";
     return {};
   }
 

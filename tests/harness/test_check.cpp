@@ -1,7 +1,6 @@
 // pxflow check against backends that are wrong on purpose: the mismatch line, the counts, the
 // exit code, skips, --require, n/a cases, fuzz campaigns and the JSON file.
 #include <catch2/catch.hpp>
-
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -19,7 +18,8 @@ pxflow::test::RunResult check(std::vector<std::string> args) {
 std::string last_line(const std::string& out) {
   const auto end = out.find_last_not_of('\n');
   const auto start = out.rfind('\n', end);
-  return out.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
+  return out.substr(start == std::string::npos ? 0 : start + 1,
+                    end - (start == std::string::npos ? 0 : start + 1) + 1);
 }
 
 }  // namespace
@@ -41,7 +41,8 @@ TEST_CASE("a backend that flips one bit fails with one line naming the field", "
 TEST_CASE("an unwritten record is caught by the sentinel", "[check]") {
   const auto r = check({"--backends", "test-unwritten", "--generated-only"});
   CHECK(r.exit_code == 1);
-  CHECK(r.out.find("poi=5 (x=35,y=5) field=record expected=written got=never written") != std::string::npos);
+  CHECK(r.out.find("poi=5 (x=35,y=5) field=record expected=written got=never written") !=
+        std::string::npos);
 }
 
 TEST_CASE("correct backends pass; the summary line counts cases", "[check]") {
@@ -53,12 +54,14 @@ TEST_CASE("correct backends pass; the summary line counts cases", "[check]") {
   CHECK(last_line(r.out) == "32 passed, 0 failed, 0 skipped");
 }
 
-TEST_CASE("a backend that cannot run is skipped with its reason, or fails when required", "[check]") {
+TEST_CASE("a backend that cannot run is skipped with its reason, or fails when required",
+          "[check]") {
   auto r = check({"--backends", "test-unavailable,ref-local", "--generated-only"});
   CHECK(r.exit_code == 0);
   CHECK(r.out.find("skip test-unavailable (no such device here (test row))") != std::string::npos);
   CHECK(last_line(r.out) == "16 passed, 0 failed, 16 skipped");
-  r = check({"--backends", "test-unavailable,ref-local", "--require", "test-unavailable", "--generated-only"});
+  r = check({"--backends", "test-unavailable,ref-local", "--require", "test-unavailable",
+             "--generated-only"});
   CHECK(r.exit_code == 1);
   CHECK(r.out.find("FAIL test-unavailable: required but cannot run") != std::string::npos);
   r = check({"--backends", "test-unavailable", "--require", "all", "--generated-only"});
@@ -70,12 +73,13 @@ TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   INFO(r.out);
   CHECK(r.exit_code == 0);
   CHECK(last_line(r.out) == "8 passed, 0 failed, 0 skipped");  // the 8 cases at 64x64
-  CHECK(r.out.find("       8 ") != std::string::npos);          // the n/a column
+  CHECK(r.out.find("       8 ") != std::string::npos);         // the n/a column
 }
 
 TEST_CASE("fuzz campaign, JSON file, and bad arguments", "[check]") {
   pxflow::test::TempDir dir;
-  const auto r = check({"--backends", "ref-local", "--cases", "600", "--seed", "7", "--json", dir.path("c.json")});
+  const auto r = check(
+      {"--backends", "ref-local", "--cases", "600", "--seed", "7", "--json", dir.path("c.json")});
   INFO(r.out);
   CHECK(r.exit_code == 0);
   CHECK(last_line(r.out) == "3 passed, 0 failed, 0 skipped");  // 256 + 256 + 88 pairs
@@ -95,11 +99,14 @@ TEST_CASE("fuzz campaign, JSON file, and bad arguments", "[check]") {
 
 TEST_CASE("bench times only checked backends and writes the documented JSON rows", "[bench]") {
   pxflow::test::TempDir dir;
-  const auto r = run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--backends", "ref-original,ref-local,test-bitflip,test-unavailable",
-                                                     "--batch", "1,3", "--min-time", "0", "--json", dir.path("b.json")});
+  const auto r =
+      run_program(PXFLOW_WITH_TEST_ROWS,
+                  {"bench", "--backends", "ref-original,ref-local,test-bitflip,test-unavailable",
+                   "--batch", "1,3", "--min-time", "0", "--json", dir.path("b.json")});
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
-  CHECK(r.out.find("test-bitflip: not timed: records differ from ref-original") != std::string::npos);
+  CHECK(r.out.find("test-bitflip: not timed: records differ from ref-original") !=
+        std::string::npos);
   CHECK(r.out.find("skipped test-unavailable: no such device here") != std::string::npos);
   std::ifstream in(dir.path("b.json"));
   const auto j = nlohmann::json::parse(in);

@@ -25,7 +25,9 @@ std::string slurp(const std::string& path) {
 
 }  // namespace
 
-int RunResult::err_lines() const { return static_cast<int>(std::count(err.begin(), err.end(), '\n')); }
+int RunResult::err_lines() const {
+  return static_cast<int>(std::count(err.begin(), err.end(), '\n'));
+}
 
 RunResult run_program(const std::string& binary, const std::vector<std::string>& args) {
   TempDir io;

@@ -15,7 +15,9 @@ RunResult run_program(const std::string& binary, const std::vector<std::string>&
 
 #ifdef PXFLOW_BINARY
 // The pxflow binary of this build.
-inline RunResult run_pxflow(const std::vector<std::string>& args) { return run_program(PXFLOW_BINARY, args); }
+inline RunResult run_pxflow(const std::vector<std::string>& args) {
+  return run_program(PXFLOW_BINARY, args);
+}
 #endif
 
 // A fresh temporary directory for one test's files (removed when the object dies).

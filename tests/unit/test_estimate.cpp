@@ -1,8 +1,7 @@
 // SPEC §5: histograms, MINCOUNT, the histogram filter's window, the plain mean, quality, and
 // gyro compensation, on hand-made record sets whose answers are worked out in the comments.
-#include <catch2/catch.hpp>
-
 #include <bit>
+#include <catch2/catch.hpp>
 
 #include "estimate.hpp"
 
@@ -53,7 +52,8 @@ TEST_CASE("MINCOUNT: exactly MINCOUNT accepted POIs give zero flow and quality",
   }
 }
 
-TEST_CASE("histogram filter: five bins around the first maximum, clipped at the ends", "[estimate]") {
+TEST_CASE("histogram filter: five bins around the first maximum, clipped at the ends",
+          "[estimate]") {
   Params p;  // S = 4: 19 bins, bin = h + 9
   REQUIRE(hist_bins(4) == 19);
   // Peak at bin 9 (h = 0) with 6, bins 7..11 weigh in: h = -2 x1, -1 x2, 0 x6, +1 x3, +3 x5.

@@ -1,8 +1,7 @@
 // SPEC §8: the known answers, from the firmware compiled on a PC, for every reference variant.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
 #include <bit>
+#include <catch2/catch.hpp>
 
 #include "estimate.hpp"
 #include "run_helpers.hpp"
@@ -20,7 +19,9 @@ FrameResult estimate_with(RefVariant v, const OwnedPair& pair, const Params& p) 
 }
 
 // Bits, not closeness: 2.0f and 1.9999999f are different answers.
-void require_bits(float got, float expected) { REQUIRE(std::bit_cast<std::uint32_t>(got) == std::bit_cast<std::uint32_t>(expected)); }
+void require_bits(float got, float expected) {
+  REQUIRE(std::bit_cast<std::uint32_t>(got) == std::bit_cast<std::uint32_t>(expected));
+}
 
 // A smooth texture sampled twice at 2x resolution: next is prev moved by (+1.5, +2) exactly,
 // in the continuous sense, without any averaging of our own.
@@ -34,7 +35,9 @@ OwnedPair smooth_half_pixel_pair() {
     for (int y = 0; y < HH; ++y)
       for (int x = 0; x < HW; ++x) {
         int sum = 0;
-        for (int d = -1; d <= 1; ++d) sum += hi[y * HW + std::clamp(x + d, 0, HW - 1)] + hi[std::clamp(y + d, 0, HH - 1) * HW + x];
+        for (int d = -1; d <= 1; ++d)
+          sum +=
+              hi[y * HW + std::clamp(x + d, 0, HW - 1)] + hi[std::clamp(y + d, 0, HH - 1) * HW + x];
         out[y * HW + x] = sum / 6;
       }
     hi = out;
@@ -45,7 +48,8 @@ OwnedPair smooth_half_pixel_pair() {
     const int v = hi[std::clamp(y, 0, HH - 1) * HW + std::clamp(x, 0, HW - 1)];
     return static_cast<std::uint8_t>((v - lo) * 255 / std::max(1, top - lo));
   };
-  OwnedPair op{"smooth(+1.5,+2)", W, H, std::vector<std::uint8_t>(W * H), std::vector<std::uint8_t>(W * H)};
+  OwnedPair op{"smooth(+1.5,+2)", W, H, std::vector<std::uint8_t>(W * H),
+               std::vector<std::uint8_t>(W * H)};
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       op.prev[y * W + x] = T(2 * x, 2 * y);
@@ -90,7 +94,8 @@ TEST_CASE("smoothed texture shifted by (+1.5, +2) gives flow (1.5, 2) with HF of
 }
 
 TEST_CASE("a constant image gives flow 0, quality 0", "[known]") {
-  OwnedPair op{"constant", 64, 64, std::vector<std::uint8_t>(64 * 64, 77), std::vector<std::uint8_t>(64 * 64, 77)};
+  OwnedPair op{"constant", 64, 64, std::vector<std::uint8_t>(64 * 64, 77),
+               std::vector<std::uint8_t>(64 * 64, 77)};
   for (RefVariant v : kVariants)
     for (bool hf : {true, false}) {
       Params p;

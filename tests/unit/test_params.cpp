@@ -71,7 +71,8 @@ TEST_CASE("validation rejects every invalid combination of SPEC §1", "[params]"
     return p;
   };
   CHECK_THROWS_WITH(validate(bad([](Params& p) { p.tile = 16; })), Catch::Contains("tile"));
-  CHECK_THROWS_WITH(validate(bad([](Params& p) { p.search_radius = 0; })), Catch::Contains("search_radius"));
+  CHECK_THROWS_WITH(validate(bad([](Params& p) { p.search_radius = 0; })),
+                    Catch::Contains("search_radius"));
   CHECK_THROWS_AS(validate(bad([](Params& p) { p.search_radius = 32; })), InputError);
   CHECK_THROWS_WITH(validate(bad([](Params& p) { p.blocks = 0; })), Catch::Contains("blocks"));
   CHECK_THROWS_AS(validate(bad([](Params& p) { p.blocks = 256; })), InputError);
@@ -81,9 +82,12 @@ TEST_CASE("validation rejects every invalid combination of SPEC §1", "[params]"
   CHECK_THROWS_AS(validate(bad([](Params& p) { p.width = 100000; })), InputError);
   CHECK_THROWS_AS(validate(bad([](Params& p) { p.width = p.height = 10000; })), InputError);
   // S = 31 needs 2*32+8+1 = 73 pixels per side: 64x64 is too small, 73x73 is enough.
-  CHECK_THROWS_WITH(validate(bad([](Params& p) { p.search_radius = 31; })), Catch::Contains("too small"));
+  CHECK_THROWS_WITH(validate(bad([](Params& p) { p.search_radius = 31; })),
+                    Catch::Contains("too small"));
   CHECK_NOTHROW(validate(bad([](Params& p) { p.search_radius = 31, p.width = p.height = 73; })));
-  CHECK_THROWS_AS(validate(bad([](Params& p) { p.search_radius = 31, p.width = 72, p.height = 73; })), InputError);
+  CHECK_THROWS_AS(
+      validate(bad([](Params& p) { p.search_radius = 31, p.width = 72, p.height = 73; })),
+      InputError);
   CHECK_NOTHROW(validate(Params{}));
 }
 

@@ -20,7 +20,7 @@ TEST_CASE("uhadd8 is the floor average in every lane, for every byte pair", "[pr
       REQUIRE(avg_floor(static_cast<std::uint8_t>(a), static_cast<std::uint8_t>(b)) == (a + b) / 2);
     }
   CHECK(uhadd8(0x00000001u, 0x00000002u) == 0x00000001u);  // round-up would give 2
-  CHECK(uhadd8(0xFFFFFFFFu, 0xFFFFFFFFu) == 0xFFFFFFFFu);   // 9-bit intermediate, no overflow
+  CHECK(uhadd8(0xFFFFFFFFu, 0xFFFFFFFFu) == 0xFFFFFFFFu);  // 9-bit intermediate, no overflow
 }
 
 TEST_CASE("usad8 sums four absolute differences; usada8 wraps mod 2^32", "[primitives]") {
@@ -29,7 +29,8 @@ TEST_CASE("usad8 sums four absolute differences; usada8 wraps mod 2^32", "[primi
   CHECK(usada8(0xFF00FF00u, 0x00FF00FFu, 0xFFFFFFFFu) == 1019);  // 2^32-1 + 1020 wraps
   Rng rng(5);
   for (int n = 0; n < 10000; ++n) {
-    const auto a = static_cast<std::uint32_t>(rng.next()), b = static_cast<std::uint32_t>(rng.next());
+    const auto a = static_cast<std::uint32_t>(rng.next()),
+               b = static_cast<std::uint32_t>(rng.next());
     std::uint32_t expect = 0;
     for (int s = 0; s < 32; s += 8) {
       const int d = int((a >> s) & 0xFF) - int((b >> s) & 0xFF);

@@ -1,8 +1,7 @@
 // The traps a port falls into (SPEC §3, §7): round-up averaging, the diagonal formula, tie order
 // in the search and in the half-pixel vote, values exactly at the thresholds, canonical zeros.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cstring>
 
 #include "run_helpers.hpp"
@@ -19,7 +18,8 @@ constexpr RefVariant kVariants[] = {RefVariant::kOriginal, RefVariant::kLocal, R
 // next tiles rows (1, 0) over (1, 2): every horizontal pair sums to an odd number (floor and
 // round-up differ) and every 2x2 window is SPEC §3's diagonal example in some orientation.
 OwnedPair trap_pair() {
-  OwnedPair op{"trap", 64, 64, std::vector<std::uint8_t>(64 * 64), std::vector<std::uint8_t>(64 * 64)};
+  OwnedPair op{"trap", 64, 64, std::vector<std::uint8_t>(64 * 64),
+               std::vector<std::uint8_t>(64 * 64)};
   Rng rng(3);
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x) {
@@ -77,7 +77,8 @@ TEST_CASE("sub[] matches the spec oracle on random pairs at every profile", "[tr
       const OwnedPair op = random_pair(64, 64, base.search_radius, seed);
       for (const auto& r : run_ref(RefVariant::kOriginal, op.view(), base)) {
         if (r.status != kAccepted) continue;
-        for (int k = 0; k < 8; ++k) REQUIRE(r.sub[k] == half_sad(op.view(), r.x, r.y, r.dx, r.dy, k, {}));
+        for (int k = 0; k < 8; ++k)
+          REQUIRE(r.sub[k] == half_sad(op.view(), r.x, r.y, r.dx, r.dy, k, {}));
         ++checked;
       }
     }
@@ -93,7 +94,8 @@ TEST_CASE("integer search: a tie keeps the first candidate in raster order", "[t
     for (int odd : {0, 1}) {
       std::vector<std::uint8_t> px(64 * 64);
       for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) px[y * 64 + x] = static_cast<std::uint8_t>(40 * (x & 1) + 90 * (y & 1));
+        for (int x = 0; x < 64; ++x)
+          px[y * 64 + x] = static_cast<std::uint8_t>(40 * (x & 1) + 90 * (y & 1));
       OwnedPair op{"periodic", 64, 64, px, px};
       if (odd) shift_into(px, op.next, 64, 64, 1, 0, 0);  // ties now at odd dx
       for (RefVariant v : kVariants)

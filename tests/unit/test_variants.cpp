@@ -1,12 +1,12 @@
 // The three reference variants produce identical records (SPEC §6) on seeded random pairs,
 // hostile patterns and real frames, at both profiles and at larger frames.
 #include <catch2/catch.hpp>
-
 #include <cstring>
 
 #include "frame_io.hpp"
 #include "frame_ops.hpp"
 #include "run_helpers.hpp"
+#include "sample_data.hpp"
 #include "synthetic.hpp"
 
 using namespace pxflow;
@@ -44,7 +44,7 @@ void require_variants_agree(const FramePair& f, const Params& p, const std::stri
 }
 
 Frame real_frame(const char* name) {
-  return load_frame(std::string(PXFLOW_OPENCV_DATA) + "/" + name, std::nullopt);
+  return load_frame(std::string(kSampleDataDir) + "/" + name, std::nullopt);
 }
 
 }  // namespace

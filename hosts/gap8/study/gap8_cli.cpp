@@ -1,6 +1,7 @@
 // The GAP8 family's CLI extension: `pxflow gap8` and the report's section beside the paper.
-#include "cli_extension.hpp"
 #include "gap8_cli.hpp"
+
+#include "cli_extension.hpp"
 
 namespace pxflow::cli {
 

@@ -5,9 +5,9 @@
 #include <fstream>
 #include <memory>
 
-#include "gap8_cli.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
+#include "gap8_cli.hpp"
 #include "gap8_study.hpp"
 
 namespace pxflow::cli {
@@ -83,7 +83,8 @@ int run_gap8(const Gap8Options& o) {
   gap8_study::print_tables(study);
   if (!o.json_path.empty()) {
     std::ofstream out(o.json_path);
-    if (!(out << gap8_study::to_json(study).dump(2) << "\n")) throw InputError("cannot write " + o.json_path);
+    if (!(out << gap8_study::to_json(study).dump(2) << "\n"))
+      throw InputError("cannot write " + o.json_path);
   }
   return 0;
 }
@@ -95,8 +96,7 @@ Command add_gap8_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "gap8", "The GAP8 kernel on the cluster model beside the ISCAS 2022 paper's tables");
   o->problem.add_to(*sub);
-  sub->add_option("--variant", o->variant,
-                  gap8_variant_names() + ", or all (the paper's three)")
+  sub->add_option("--variant", o->variant, gap8_variant_names() + ", or all (the paper's three)")
       ->capture_default_str();
   sub->add_option("--cores", o->cores, "Core counts, e.g. 1,8 or 1-8")->capture_default_str();
   sub->add_option("--mhz", o->mhz, "Cluster clock for fps and latency")->capture_default_str();

@@ -44,10 +44,12 @@ std::optional<PaperFigures> paper(Gap8Variant variant, int cores) {
     Gap8Variant variant;
     double interp, instr, cyc1, cyc8, speedup8, flow1, flow8, amdahl8;
   };
-  static const Row rows[] = {
-      {Gap8Variant::kOriginal, 49152, 624.2 * k, 717.2 * k, 99.0 * k, 7.24, 711.5 * k, 93.3 * k, 7.578},
-      {Gap8Variant::kLocal, 19200, 585.9 * k, 681.8 * k, 94.5 * k, 7.21, 676.1 * k, 88.8 * k, 7.558},
-      {Gap8Variant::kGlobal, 12288, 594.3 * k, 691.3 * k, 96.4 * k, 7.17, 685.6 * k, 90.7 * k, 7.563}};
+  static const Row rows[] = {{Gap8Variant::kOriginal, 49152, 624.2 * k, 717.2 * k, 99.0 * k, 7.24,
+                              711.5 * k, 93.3 * k, 7.578},
+                             {Gap8Variant::kLocal, 19200, 585.9 * k, 681.8 * k, 94.5 * k, 7.21,
+                              676.1 * k, 88.8 * k, 7.558},
+                             {Gap8Variant::kGlobal, 12288, 594.3 * k, 691.3 * k, 96.4 * k, 7.17,
+                              685.6 * k, 90.7 * k, 7.563}};
   for (const Row& r : rows) {
     if (variant != r.variant || (cores != 1 && cores != 8)) continue;
     PaperFigures f;
@@ -87,7 +89,8 @@ NamedFrames default_pair(const Params& p) {
       std::vector<PoiRecord> rec(poi_count(p));
       OpCounts counts;
       reference_flow(RefVariant::kOriginal, {f.prev.view(), f.next.view()}, p, rec, counts);
-      if (std::all_of(rec.begin(), rec.end(), [](const PoiRecord& r) { return r.status == 2; })) {
+      if (std::all_of(rec.begin(), rec.end(),
+                      [](const PoiRecord& r) { return r.status == kAccepted; })) {
         f.name = "rubberwhale1/2 binned 2x2, window at (" + std::to_string(x) + ", " +
                  std::to_string(y) + ")";
         return f;

@@ -47,13 +47,15 @@ double per_core_sum(const Measure& m, int event) {
 
 std::vector<PaperTable> paper_tables(const Study& s) {
   std::vector<PaperTable> out(3);
-  out[0].title = "Table I: interpolations and instructions per frame (instructions: 1 core, whole run)";
+  out[0].title =
+      "Table I: interpolations and instructions per frame (instructions: 1 core, whole run)";
   for (const auto& [v, by] : in_order(s)) {
     const auto p1 = paper(v, 1);
     const Measure& m = by.at(1);
+    out[0].lines.push_back(line("interpolations", v, m.interpolations,
+                                p1 ? p1->interpolations : std::nullopt, "%.0f", 1));
     out[0].lines.push_back(
-        line("interpolations", v, m.interpolations, p1 ? p1->interpolations : std::nullopt, "%.0f", 1));
-    out[0].lines.push_back(line("instructions", v, m.instructions, p1 ? p1->instructions : std::nullopt));
+        line("instructions", v, m.instructions, p1 ? p1->instructions : std::nullopt));
     out[0].lines.push_back(
         line("4-byte SAD ops", v, m.sad_ops, p1 ? p1->sad_ops : std::nullopt, "%.0f", 1));
   }
@@ -65,7 +67,8 @@ std::vector<PaperTable> paper_tables(const Study& s) {
                                   pp ? pp->cycles : std::nullopt));
       if (cores == 1) continue;
       out[1].lines.push_back(line("speed-up, " + std::to_string(cores) + " cores", v,
-                                  speedup(s, v, cores), pp ? pp->speedup : std::nullopt, "%.2fx", 1));
+                                  speedup(s, v, cores), pp ? pp->speedup : std::nullopt, "%.2fx",
+                                  1));
     }
   }
   out[2].title = "Table III: cycles per phase (1 core), ideal 8-core flow, Amdahl's limit";
@@ -84,14 +87,15 @@ std::vector<PaperTable> paper_tables(const Study& s) {
     t.push_back(line("records to L2 (not in paper)", v, m.phases.output, std::nullopt));
     const auto p8 = paper(v, 8);
     const auto flow = phase(&Phases::flow);
-    t.push_back(line("flow, 8 cores ideal", v, m.phases.flow / 8, flow ? std::optional(*flow / 8) : std::nullopt));
+    t.push_back(line("flow, 8 cores ideal", v, m.phases.flow / 8,
+                     flow ? std::optional(*flow / 8) : std::nullopt));
     if (by.count(8)) {
       t.push_back(line("flow, 8 cores actual", v, by.at(8).phases.flow,
                        p8 && p8->phases ? std::optional(p8->phases->flow) : std::nullopt));
       t.push_back(line("Amdahl's limit, 8 cores", v, amdahl_limit(s, v, 8),
                        p8 ? p8->amdahl_limit : std::nullopt, "%.3fx", 1));
-      t.push_back(line("actual speed-up, 8 cores", v, speedup(s, v, 8), p8 ? p8->speedup : std::nullopt,
-                       "%.2fx", 1));
+      t.push_back(line("actual speed-up, 8 cores", v, speedup(s, v, 8),
+                       p8 ? p8->speedup : std::nullopt, "%.2fx", 1));
     }
   }
   return out;
@@ -115,9 +119,9 @@ void print_tables(const Study& s) {
   for (const auto& [v, by] : in_order(s))
     for (const auto& [cores, m] : by) {
       const double seconds = m.cycles / (s.options.mhz * 1e6);
-      std::printf("  %-9s %5d %10.0f %8.1f %7.3fms %7.1fuJ %7.2fx %7.2fx %10.0f %9.0f\n", gap8_variant(v).name,
-                  cores, m.cycles, fps(s, m.cycles), seconds * 1e3, seconds * kPaperPowerW * 1e6,
-                  speedup(s, v, cores), amdahl_limit(s, v, cores),
+      std::printf("  %-9s %5d %10.0f %8.1f %7.3fms %7.1fuJ %7.2fx %7.2fx %10.0f %9.0f\n",
+                  gap8_variant(v).name, cores, m.cycles, fps(s, m.cycles), seconds * 1e3,
+                  seconds * kPaperPowerW * 1e6, speedup(s, v, cores), amdahl_limit(s, v, cores),
                   per_core_sum(m, GAP8_EVT_TCDM_CONT), per_core_sum(m, GAP8_EVT_LD_STALL));
     }
   std::printf(
