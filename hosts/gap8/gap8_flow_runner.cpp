@@ -17,6 +17,8 @@ namespace pxflow::gap8_host {
 namespace {
 
 static_assert(sizeof(pxflow_gap8_record) == sizeof(PoiRecord));
+static_assert(PXFLOW_GAP8_DROPPED == kDropped && PXFLOW_GAP8_REJECTED == kRejected &&
+              PXFLOW_GAP8_ACCEPTED == kAccepted);
 static_assert(sizeof(pxflow_gap8_params) == 15 * 4);
 
 constexpr std::uint32_t kAlign = 8;

@@ -45,6 +45,11 @@ typedef struct {
   uint32_t reserved;
 } pxflow_gap8_result;
 
+/* A record's status (SPEC §4; reference/record.hpp's PoiStatus, which the host asserts equal). */
+#define PXFLOW_GAP8_DROPPED 0u  /* feature < FT */
+#define PXFLOW_GAP8_REJECTED 1u /* best integer SAD >= VT */
+#define PXFLOW_GAP8_ACCEPTED 2u
+
 /* SPEC §4's 32-byte record, little-endian on both sides. */
 typedef struct {
   uint16_t x, y;

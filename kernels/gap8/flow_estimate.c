@@ -28,7 +28,7 @@ void flow_estimate(const pxflow_gap8_record *records, uint32_t pois, const pxflo
   int count = 0, sum_hx = 0, sum_hy = 0;
   for (uint32_t n = 0; n < pois; ++n) {
     const pxflow_gap8_record *r = &records[n];
-    if (r->status != 2) continue;
+    if (r->status != PXFLOW_GAP8_ACCEPTED) continue;
     ++count;
     ++histx[r->hx + 2 * s + 1];
     ++histy[r->hy + 2 * s + 1];

@@ -53,17 +53,17 @@ static void flow_poi(const flow_ctx *c, uint32_t n) {
   rec->y = (uint16_t)y;
   rec->dir = 8;
   rec->feature = (uint16_t)feature(blk, w);
-  if (rec->feature < c->feature_threshold) return; /* status 0 */
+  if (rec->feature < c->feature_threshold) return; /* PXFLOW_GAP8_DROPPED */
   int bx = 0, by = 0;
   const uint32_t best = flow_integer_search(c, blk, x, y, &bx, &by);
   rec->dx = (int8_t)bx;
   rec->dy = (int8_t)by;
   rec->sad = (uint16_t)best;
   if (best >= c->sad_threshold) {
-    rec->status = 1;
+    rec->status = PXFLOW_GAP8_REJECTED;
     return;
   }
-  rec->status = 2;
+  rec->status = PXFLOW_GAP8_ACCEPTED;
   uint32_t sub[8];
   variant_half_sads(c, blk, x + bx, y + by, sub);
   select_direction(rec, best, sub);
