@@ -4,6 +4,7 @@
 
 #include "accuracy_run.hpp"
 #include "commands.hpp"
+#include "list_option.hpp"
 #include "registry.hpp"
 
 namespace pxflow::cli {
@@ -34,7 +35,8 @@ Command add_accuracy_command(CLI::App& app) {
                   "Real frame pairs per video (vtest.avi, tree.avi); 0 = none")
       ->capture_default_str()
       ->check(CLI::Range(0, 40));
-  sub->add_option("--seed", o->seed, "Seed of the synthetic motions")->capture_default_str();
+  sub->add_option("--seed", o->seed, "Seed of the synthetic motions")
+      ->check(seed_value())->capture_default_str();
   sub->add_option("--threads", o->threads, "Threads for OpenCV and the backend alike")
       ->capture_default_str()
       ->check(CLI::Range(1, 1024));

@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
+#include "output_file.hpp"
 #include "pxflow_app.hpp"
 #include "registry.hpp"
 
@@ -56,11 +57,18 @@ int run_pxflow(int argc, char** argv) {
     for (std::size_t i = 0; i < family_options.size(); ++i)
       if (family_flags[i]->count() > 0) family_options[i].first->apply(family_options[i].second);
     for (const auto& c : commands)
-      if (c.app->parsed()) return c.run();
+      if (c.app->parsed()) {
+        const int code = c.run();
+        check_stdout();  // output that was lost is a failure, never a silent exit 0
+        return code;
+      }
     return 2;
   } catch (const InputError& e) {
     std::fprintf(stderr, "pxflow: error: %s\n", e.what());
     return 2;
+  } catch (const OutputError& e) {
+    std::fprintf(stderr, "pxflow: error: %s\n", e.what());
+    return 1;
   } catch (const BackendError& e) {
     std::fprintf(stderr, "pxflow: backend failed: %s\n", e.what());
     return 1;

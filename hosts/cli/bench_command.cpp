@@ -2,6 +2,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "output_file.hpp"
 #include "bench.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
@@ -26,6 +27,11 @@ std::vector<int> int_list(const std::string& text, const char* what, int lo, int
 
 // Explicit sweep flags give the cartesian product of their lists; none gives the default sweeps.
 std::vector<BenchPoint> bench_points(const BenchArgs& a) {
+  // A sweep flag and a --set of the same parameter would silently overrule one another.
+  if (!a.radii.empty() && a.problem.sets_key("search_radius"))
+    throw InputError("--radius and --set search_radius both set the search radius; give one");
+  if (!a.sizes.empty() && (a.problem.sets_key("width") || a.problem.sets_key("height")))
+    throw InputError("--size and --set width/height both set the frame size; give one");
   const Params base = a.problem.resolve(std::nullopt);
   if (a.batches.empty() && a.threads.empty() && a.sizes.empty() && a.radii.empty())
     return default_bench_points(base, a.problem.profile);
@@ -57,16 +63,12 @@ int run_bench_command(const BenchArgs& a) {
   o.points = bench_points(a);
   o.min_seconds = a.min_time;
   o.backend_options = a.backend_options;
-  std::ofstream json_file;
-  if (!a.json_path.empty()) {
-    json_file.open(a.json_path);
-    if (!json_file) throw InputError("--json " + a.json_path + ": cannot open for writing");
-  }
+  if (!a.json_path.empty()) check_output_path("--json", a.json_path);
   std::cout << "pxflow bench: " << o.points.size() << " points; each backend's records are checked "
             << "against ref-original before it is timed; ns/frame is the median over repeats "
                "(min..max)\n";
   const BenchReport r = run_bench(o, std::cout);
-  if (json_file.is_open()) json_file << bench_json(r).dump(2) << "\n";
+  if (!a.json_path.empty()) write_output_file(a.json_path, bench_json(r).dump(2) + "\n");
   return 0;
 }
 
@@ -79,10 +81,12 @@ Command add_bench_command(CLI::App& app) {
   a->problem.add_to(*sub);
   sub->add_option("--backends", a->backends,
                   "Comma-separated backends (default: all that can run)");
-  sub->add_option("--batch", a->batches, "Batch sizes, N[,N...] (frame pairs per run)");
-  sub->add_option("--threads", a->threads, "Thread counts, N[,N...] (0 = all cores)");
-  sub->add_option("--size", a->sizes, "Frame sizes, WxH[,WxH...]");
-  sub->add_option("--radius", a->radii, "Search radii, S[,S...]");
+  sub->add_option("--batch", a->batches, "Batch sizes, N[,N...] (frame pairs per run)")
+      ->check(non_empty_list());
+  sub->add_option("--threads", a->threads, "Thread counts, N[,N...] (0 = all cores)")
+      ->check(non_empty_list());
+  sub->add_option("--size", a->sizes, "Frame sizes, WxH[,WxH...]")->check(non_empty_list());
+  sub->add_option("--radius", a->radii, "Search radii, S[,S...]")->check(non_empty_list());
   sub->add_option("--min-time", a->min_time, "Seconds of repeats per point and backend")
       ->check(CLI::Range(0.0, 600.0))
       ->capture_default_str();

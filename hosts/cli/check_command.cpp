@@ -2,6 +2,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "output_file.hpp"
 #include "check.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
@@ -28,15 +29,10 @@ int run_check_command(const CheckArgs& a) {
   o.corpus.seed = a.seed;
   o.corpus.data_dir = a.data_dir;
   o.corpus.real = !a.generated_only;
-  std::ofstream json_file;
-  if (!a.json_path.empty()) {
-    json_file.open(a.json_path);
-    if (!json_file) throw InputError("--json " + a.json_path + ": cannot open for writing");
-  }
-  std::cout << "pxflow check: seed " << a.seed
-            << (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
-                            : ", fixed corpus")
-            << "\n";
+  if (!a.json_path.empty()) check_output_path("--json", a.json_path);
+  o.banner = "pxflow check: seed " + std::to_string(a.seed) +
+             (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
+                          : ", fixed corpus");
   const CheckReport r = run_check(o, std::cout);
 
   std::printf("\n%-14s %-8s %7s %7s %5s %9s  %s\n", "backend", "result", "cases", "pairs", "n/a",
@@ -45,7 +41,9 @@ int run_check_command(const CheckArgs& a) {
     std::printf("%-14s %-8s %7ld %7ld %5ld %8.2fs  %s\n", b.name.c_str(), state_name(b.state),
                 b.passed + b.failed, b.pairs, b.not_applicable, b.seconds, b.reason.c_str());
   std::printf("%ld passed, %ld failed, %ld skipped\n", r.passed, r.failed, r.skipped);
-  if (json_file.is_open()) json_file << check_json(r).dump(2) << "\n";
+  if (r.compared == 0)
+    std::printf("nothing was checked: no backend but the reference ran a case (see the skips above)\n");
+  if (!a.json_path.empty()) write_output_file(a.json_path, check_json(r).dump(2) + "\n");
   return r.ok() ? 0 : 1;
 }
 
@@ -60,6 +58,7 @@ Command add_check_command(CLI::App& app) {
   sub->add_option("--require", a->require,
                   "Backends that must run (comma-separated, or 'all'): their skips fail");
   sub->add_option("--seed", a->seed, "Seed of the random pairs (printed; reproduces any failure)")
+      ->check(seed_value())
       ->capture_default_str();
   sub->add_option("--cases", a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
       ->check(CLI::Range(1L, 100000000L));

@@ -33,6 +33,7 @@ struct ProblemOptions {
   // The profile with every --set applied in order; width/height default to `frame` when given
   // and not set explicitly (an explicit value that differs from the frame is an error). Valid.
   Params resolve(std::optional<std::pair<int, int>> frame) const;
+  bool sets_key(std::string_view key) const;  // whether a --set names this key
 };
 
 }  // namespace pxflow::cli

@@ -17,10 +17,11 @@ namespace {
 struct FlowOptions {
   ProblemOptions problem;
   std::string size;
-  std::string backend = "ref-original";
+  std::string backend = default_backend().name;
   BackendOptions backend_options;
   bool json = false;
-  std::string draw;  // PNG path, empty = no picture
+  std::string draw;  // PNG path
+  bool draw_given = false;
   std::string prev_path, next_path;
 };
 
@@ -57,7 +58,12 @@ void print_summary(const FlowOptions& o, const Params& p, const FrameResult& r,
 
 int run_flow(const FlowOptions& o) {
   const BackendRow& row = find_backend(o.backend);  // unknown names fail before any work
-  if (!o.draw.empty()) check_draw_path(o.draw);
+  const BackendRow* const rows[] = {&row};
+  check_device_option(rows, o.backend_options.device);
+  if (o.draw_given) {
+    const std::string inputs[] = {o.prev_path, o.next_path};
+    check_draw_path(o.draw, inputs);
+  }
   std::optional<FrameSize> raw_size;
   if (!o.size.empty()) raw_size = parse_frame_size(o.size);
   const Frame prev = load_frame(o.prev_path, raw_size);
@@ -76,7 +82,7 @@ int run_flow(const FlowOptions& o) {
   OpCounts counts;
   backend->run({&pair, 1}, p, records, counts);
   const FrameResult result = estimate_flow(records, p);
-  if (!o.draw.empty()) {
+  if (o.draw_given) {
     const auto file = [](const std::string& path) {
       return std::filesystem::path(path).filename().string();
     };
@@ -109,11 +115,14 @@ Command add_flow_command(CLI::App& app) {
                   "Device index or name substring (GPU backends)");
   sub->add_flag("--json", o->json,
                 "Print one JSON object: flow, bits, histograms, counts, records");
-  sub->add_option("--draw", o->draw,
-                  "Also draw the POIs, their vectors and the frame flow into FILE (.png)");
+  CLI::Option* draw = sub->add_option(
+      "--draw", o->draw, "Also draw the POIs, their vectors and the frame flow into FILE (.png)");
   sub->add_option("PREV", o->prev_path, "First frame (image file or .raw)")->required();
   sub->add_option("NEXT", o->next_path, "Second frame (same size)")->required();
-  return {sub, [o] { return run_flow(*o); }};
+  return {sub, [o, draw] {
+           o->draw_given = draw->count() > 0;
+           return run_flow(*o);
+         }};
 }
 
 }  // namespace pxflow::cli

@@ -36,8 +36,18 @@ Params ProblemOptions::resolve(std::optional<std::pair<int, int>> frame) const {
     p.width = w;
     p.height = h;
   }
+  if (p.gyro_comp)
+    throw InputError("--set gyro_comp=1: pxflow takes no gyro rates, so the compensation would "
+                     "have nothing to add; leave gyro_comp at 0");
   validate(p);
   return p;
+}
+
+bool ProblemOptions::sets_key(std::string_view key) const {
+  for (const auto& kv : sets)
+    if (kv.size() > key.size() && kv.compare(0, key.size(), key) == 0 && kv[key.size()] == '=')
+      return true;
+  return false;
 }
 
 }  // namespace pxflow::cli

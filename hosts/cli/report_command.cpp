@@ -142,7 +142,11 @@ int run_report(const ReportArgs& a) {
   add_family_sections(in, a);
   write_report(a.out_dir, in);
   std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json, results.csv\n";
-  return in.check.value("failed", 0) == 0 ? 0 : 1;
+  // As `pxflow check`: a failure, or a check that compared nothing, is not green.
+  const bool green = in.check.value("failed", 0) == 0 && in.check.value("compared", 0) > 0;
+  if (in.check.value("compared", 0) == 0)
+    std::cout << "the check compared nothing but the reference: the report is not a pass\n";
+  return green ? 0 : 1;
 }
 
 }  // namespace
@@ -157,7 +161,8 @@ Command add_report_command(CLI::App& app) {
   sub->add_option("--bench-json", a->bench_json,
                   "Use this `pxflow bench --json` file instead of running the bench");
   sub->add_option("--backends", a->backends, "Comma-separated backends (default: all)");
-  sub->add_option("--seed", a->seed, "Seed of the check's random pairs")->capture_default_str();
+  sub->add_option("--seed", a->seed, "Seed of the check's random pairs")
+      ->check(seed_value())->capture_default_str();
   sub->add_flag("--quick", a->quick,
                 "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
   sub->add_flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");

@@ -55,7 +55,7 @@ const BackendRow& find_backend(std::string_view name) {
 const BackendRow& default_backend() {
   for (const auto& row : backend_rows())
     if (row.preferred && row.probe().empty()) return row;
-  return find_backend("ref-original");
+  return find_backend(kReferenceBackend);
 }
 
 OpenedBackend open_backend(const BackendRow& row, const BackendOptions& options) {
@@ -64,6 +64,8 @@ OpenedBackend open_backend(const BackendRow& row, const BackendOptions& options)
   if (!o.why_not.empty()) return o;
   try {
     o.backend = row.create(options);
+  } catch (const InputError&) {
+    throw;  // the user's choice is wrong (e.g. --device 7 when there is no device 7): not a skip
   } catch (const std::exception& e) {
     o.why_not = std::string("set-up failed: ") + e.what();
   }
@@ -78,6 +80,17 @@ std::unique_ptr<Backend> open_backend_for(const BackendRow& row, const BackendOp
   if (const std::string why = b->unsupported(p); !why.empty())
     throw InputError("backend " + row.name + " does not support this problem: " + why);
   return b;
+}
+
+void check_device_option(std::span<const BackendRow* const> rows, const std::string& device) {
+  if (device.empty()) return;
+  std::string with;
+  for (const BackendRow* r : rows)
+    if (r->has_devices) return;
+  for (const BackendRow& r : backend_rows())
+    if (r.has_devices) with += (with.empty() ? "" : ", ") + r.name;
+  throw InputError("--device " + device + ": no selected backend has devices to choose from (" +
+                   (with.empty() ? std::string("none in this build does") : "only " + with + " do") + ")");
 }
 
 void check_batch(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out) {

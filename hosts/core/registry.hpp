@@ -10,6 +10,9 @@
 
 namespace pxflow {
 
+// The row whose records are the answer (SPEC §8: the firmware's way, scalar).
+inline constexpr const char* kReferenceBackend = "ref-original";
+
 const std::vector<BackendRow>& backend_rows();
 
 // Every family of this build (the reference first) with its rows, options and extensions.
@@ -28,7 +31,7 @@ const BackendRow& default_backend();
 
 // Opening a backend, the one way every command does it: the probe, then create(). A backend
 // that cannot run leaves `backend` null and says why in `why_not` (check and bench report it
-// as skipped).
+// as skipped); an InputError from create() (a device that does not exist) propagates.
 struct OpenedBackend {
   std::unique_ptr<Backend> backend;
   std::string why_not;  // empty when opened
@@ -40,6 +43,10 @@ OpenedBackend open_backend(const BackendRow& row, const BackendOptions& options)
 // set-up is the backend's BackendError.
 std::unique_ptr<Backend> open_backend_for(const BackendRow& row, const BackendOptions& options,
                                           const Params& p);
+
+// --device applies only to rows that have devices (BackendRow::has_devices): an InputError when
+// `device` is given and none of `rows` has any, so the option cannot silently do nothing.
+void check_device_option(std::span<const BackendRow* const> rows, const std::string& device);
 
 // Checks that `out` and every frame of `pairs` fit `p`; throws InputError otherwise. The entry
 // points (CLI, harness) call it once so that backends can trust their inputs.

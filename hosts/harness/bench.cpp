@@ -11,6 +11,7 @@
 #endif
 
 #include "grid.hpp"
+#include "exactness.hpp"
 #include "registry.hpp"
 #include "synthetic.hpp"
 
@@ -81,8 +82,7 @@ class Bench {
     BenchRow base = row_for(row.name, pt);
     if (std::string why = b->unsupported(pt.params); !why.empty())
       return note(base, "n/a: " + why, report);
-    std::vector<PoiRecord> got(expected.size());
-    std::memset(got.data(), 0xA5, got.size() * sizeof(PoiRecord));
+    std::vector<PoiRecord> got = sentinel_records(expected.size());
     OpCounts counts;
     // Warm-up and check in one: the first run's records must equal ref-original's.
     const auto w0 = std::chrono::steady_clock::now();
@@ -221,7 +221,7 @@ void add_speedups(BenchReport& r) {
   for (auto& row : r.rows) {
     if (row.median_ns_per_frame <= 0) continue;
     for (const auto& ref : r.rows)
-      if (ref.backend == "ref-original" && ref.source == row.source && ref.sweep == row.sweep &&
+      if (ref.backend == kReferenceBackend && ref.source == row.source && ref.sweep == row.sweep &&
           ref.setting == row.setting && ref.width == row.width && ref.height == row.height &&
           ref.search_radius == row.search_radius && ref.batch == row.batch &&
           ref.threads == row.threads && ref.median_ns_per_frame > 0)
@@ -255,6 +255,7 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
     for (const auto& r : backend_rows()) rows.push_back(&r);
   else
     for (const auto& n : o.backends) rows.push_back(&find_backend(n));
+  check_device_option(rows, o.backend_options.device);
   Bench bench(o, out);
   for (const auto& pt : o.points) {
     validate(pt.params);
@@ -262,7 +263,7 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
     const Inputs in = make_inputs(pt.params, pt.batch);
     std::vector<PoiRecord> expected(poi_count(pt.params) * static_cast<std::size_t>(pt.batch));
     OpCounts counts;
-    find_backend("ref-original").create({})->run(in.batch_for(0), pt.params, expected, counts);
+    find_backend(kReferenceBackend).create({})->run(in.batch_for(0), pt.params, expected, counts);
     for (const BackendRow* row : rows) bench.measure(*row, pt, in, expected, report);
   }
   add_speedups(report);

@@ -33,10 +33,23 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
   else
     for (const auto& name : o.backends) out.push_back({&find_backend(name), nullptr, {}});
   const bool all = std::find(o.require.begin(), o.require.end(), "all") != o.require.end();
-  for (const auto& name : o.require)
-    if (name != "all") find_backend(name);  // unknown names are bad input
+  for (const auto& name : o.require) {
+    if (name == "all") continue;
+    find_backend(name);  // unknown names are bad input
+    if (std::none_of(out.begin(), out.end(), [&](const Contender& c) { return c.row->name == name; }))
+      throw InputError("--require " + name +
+                       ": not among the backends of this run (add it to --backends)");
+  }
+  std::vector<const BackendRow*> rows;
+  for (const auto& c : out) rows.push_back(c.row);
+  check_device_option(rows, o.backend_options.device);
   for (auto& c : out) {
     c.outcome.name = c.row->name;
+    if (c.row->name == kReferenceBackend) {
+      // The answer every other backend is checked against is not checked against itself.
+      c.outcome.state = BackendState::kReference;
+      continue;
+    }
     OpenedBackend opened = open_backend(*c.row, o.backend_options);
     c.backend = std::move(opened.backend);
     const std::string why = opened.why_not;
@@ -147,6 +160,8 @@ const char* state_name(BackendState s) {
       return "failed";
     case BackendState::kSkipped:
       return "skipped";
+    case BackendState::kReference:
+      return "reference";
   }
   return "?";
 }
@@ -155,6 +170,7 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
   CheckReport report;
   report.seed = o.corpus.seed;
   std::vector<Contender> contenders = select_backends(o);
+  if (!o.banner.empty()) out << o.banner << "\n";
   Checker checker(o, out);
 
   // The cases come from the fixed corpus or, for a fuzz campaign, are made batch by batch so
@@ -185,7 +201,7 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
     };
   }
   for (auto& k : contenders) {
-    if (k.backend) continue;
+    if (k.backend || k.outcome.state == BackendState::kReference) continue;
     if (k.outcome.state == BackendState::kFailed)
       out << k.outcome.failures.front() << "\n";
     else
@@ -208,12 +224,15 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
 
   for (auto& k : contenders) {
     BackendOutcome& b = k.outcome;
-    if (!k.backend) {
+    if (b.state == BackendState::kReference) {
+      b.reason = "the answer the others are checked against";
+    } else if (!k.backend) {
       (b.state == BackendState::kFailed ? report.failed : report.skipped) += report.cases;
     } else {
       report.passed += b.passed;
       report.failed += b.failed;
       report.not_applicable += b.not_applicable;
+      report.compared += b.passed + b.failed;
     }
     report.backends.push_back(b);
   }
@@ -229,6 +248,7 @@ Json check_json(const CheckReport& r) {
   j["failed"] = r.failed;
   j["skipped"] = r.skipped;
   j["not_applicable"] = r.not_applicable;
+  j["compared"] = r.compared;
   j["backends"] = Json::array();
   for (const auto& b : r.backends)
     j["backends"].push_back({{"name", b.name},

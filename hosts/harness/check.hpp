@@ -20,11 +20,15 @@ struct CheckOptions {
   int max_lines_per_case = 5;
   BackendOptions backend_options;
   CorpusOptions corpus;
+  // Printed once the backends are chosen and opened, so that bad input (an unknown or absent
+  // backend, a device that does not exist) leaves no partial output.
+  std::string banner;
 };
 
 // How a backend came out of a check (JSON and reports spell it with state_name()).
-enum class BackendState { kPassed, kFailed, kSkipped };
-const char* state_name(BackendState s);  // "passed", "failed", "skipped"
+// kReference: ref-original, whose records are the answer (never counted as checked).
+enum class BackendState { kPassed, kFailed, kSkipped, kReference };
+const char* state_name(BackendState s);  // "passed", "failed", "skipped", "reference"
 
 struct BackendOutcome {
   std::string name;
@@ -41,7 +45,10 @@ struct CheckReport {
   long cases = 0, pairs = 0;
   std::vector<BackendOutcome> backends;
   long passed = 0, failed = 0, skipped = 0, not_applicable = 0;
-  bool ok() const { return failed == 0; }
+  long compared = 0;  // (backend, case) comparisons made, the reference's own not counted
+  // A check passes when nothing failed and something was compared: a run in which every
+  // backend was skipped or n/a tested nothing and is not green.
+  bool ok() const { return failed == 0 && compared > 0; }
 };
 
 // Runs the check, printing progress lines to `out` as it goes (and a live counter to stderr

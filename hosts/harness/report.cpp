@@ -1,3 +1,4 @@
+#include "output_file.hpp"
 #include "report.hpp"
 
 #include <unistd.h>
@@ -297,8 +298,7 @@ std::string csv(const Json& bench) {
 }
 
 void write_file(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream out(p);
-  if (!(out << text)) throw InputError(p.string() + ": cannot write");
+  write_output_file(p.string(), text);
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include "output_file.hpp"
 #include "draw_flow.hpp"
 
 #include <algorithm>
@@ -135,8 +136,9 @@ void draw_caption(cv::Mat& img, int top, const FrameResult& result,
 
 }  // namespace
 
-void check_draw_path(const std::string& path) {
+void check_draw_path(const std::string& path, std::span<const std::string> inputs) {
   namespace fs = std::filesystem;
+  check_output_path("--draw", path, inputs);
   const fs::path p(path);
   std::string ext = p.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -164,13 +166,15 @@ void draw_flow(const std::string& path, const FrameView& prev, const Params& p,
   arrow(img, centre, centre + flow * (l.scale * l.flow_gain), kColourFlow,
         std::max(3, l.scale / 2));
   draw_caption(img, frame.rows, result, records, caption, l);
-  bool written = false;
+  std::vector<std::uint8_t> png;
+  bool encoded = false;
   try {
-    written = cv::imwrite(path, img);
+    encoded = cv::imencode(".png", img, png);
   } catch (const cv::Exception&) {
-    written = false;
+    encoded = false;
   }
-  if (!written) throw InputError("--draw " + path + ": cannot write the picture");
+  if (!encoded) throw OutputError("--draw " + path + ": cannot encode the picture as PNG");
+  write_output_file(path, {reinterpret_cast<const char*>(png.data()), png.size()});
 }
 
 }  // namespace pxflow

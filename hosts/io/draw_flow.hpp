@@ -11,7 +11,7 @@
 namespace pxflow {
 
 // Throws InputError unless `path` ends in .png and its folder exists: checked before any work.
-void check_draw_path(const std::string& path);
+void check_draw_path(const std::string& path, std::span<const std::string> inputs = {});
 
 struct DrawCaption {
   std::string frames;   // e.g. "rubberwhale1.png -> rubberwhale2.png"

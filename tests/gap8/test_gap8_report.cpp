@@ -19,7 +19,7 @@ std::string slurp(const std::string& path) {
 
 // Small check and bench results of ref-original, so the report runs nothing else but the model.
 void make_inputs(const TempDir& dir) {
-  REQUIRE(run_pxflow({"check", "--backends", "ref-original", "--generated-only", "--json",
+  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
                       dir.path("c.json")})
               .exit_code == 0);
   REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
@@ -81,6 +81,18 @@ TEST_CASE("pxflow report leaves the GAP8 section out for other backends or with 
     CHECK(slurp(dir.path("without/report.md")).find("GAP8 model") == std::string::npos);
     CHECK(nlohmann::json::parse(slurp(dir.path("without/results.json")))["gap8"].is_null());
   }
+}
+
+}  // namespace pxflow::test
+
+namespace pxflow::test {
+
+TEST_CASE("gap8 at another profile shows no paper figures beside the model", "[gap8]") {
+  const auto r = run_pxflow({"gap8", "--profile", "px4flow-head", "--variant", "original",
+                             "--cores", "1"});
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("no paper figure is shown") != std::string::npos);
+  CHECK(r.out.find("717.2k") == std::string::npos);  // the paper's 1-core cycles
 }
 
 }  // namespace pxflow::test

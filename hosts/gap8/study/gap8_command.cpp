@@ -7,6 +7,7 @@
 
 #include "errors.hpp"
 #include "frame_io.hpp"
+#include "output_file.hpp"
 #include "gap8_cli.hpp"
 #include "gap8_study.hpp"
 
@@ -60,6 +61,7 @@ std::vector<Gap8Variant> parse_variants(const std::string& v) {
 }
 
 int run_gap8(const Gap8Options& o) {
+  if (!o.json_path.empty()) check_output_path("--json", o.json_path, o.frames);
   gap8_study::Options options;
   options.variants = parse_variants(o.variant);
   options.cores = parse_cores(o.cores);
@@ -78,14 +80,11 @@ int run_gap8(const Gap8Options& o) {
       throw InputError("PREV and NEXT differ in size");
   }
   const Params p = o.problem.resolve(std::pair{frames.prev.width, frames.prev.height});
+  options.paper_problem = p == profile("px4flow-64");
   const FramePair pair{frames.prev.view(), frames.next.view()};
   const gap8_study::Study study = gap8_study::run_study(pair, frames.name, p, options);
   gap8_study::print_tables(study);
-  if (!o.json_path.empty()) {
-    std::ofstream out(o.json_path);
-    if (!(out << gap8_study::to_json(study).dump(2) << "\n"))
-      throw InputError("cannot write " + o.json_path);
-  }
+  if (!o.json_path.empty()) write_output_file(o.json_path, gap8_study::to_json(study).dump(2) + "\n");
   return 0;
 }
 

@@ -41,6 +41,8 @@ struct Options {
   double mhz = 50;
   bool contention = true;
   bool chunked = false;
+  // The problem is the paper's (px4flow-64, 64x64): only then are the paper's figures shown.
+  bool paper_problem = true;
 };
 
 struct Study {

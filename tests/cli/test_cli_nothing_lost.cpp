@@ -1,0 +1,98 @@
+// Nothing lost, nothing green that tested nothing (issue 15's first items), by running the
+// binary: an output never overwrites an input, a lost write is an error (files and stdout), an
+// output file is replaced only when complete, options that would have no effect are refused,
+// and a check that compared nothing is not a pass.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "bad_input.hpp"
+#include "run_program.hpp"
+#include "sample_data.hpp"
+
+using namespace pxflow;
+using test::require_bad_input;
+using test::run_pxflow;
+
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const std::string kPrev = std::string(kSampleDataDir) + "/rubberwhale1.png";
+const std::string kNext = std::string(kSampleDataDir) + "/rubberwhale2.png";
+
+}  // namespace
+
+TEST_CASE("an output path that is one of the inputs is refused before any work", "[cli][lost]") {
+  test::TempDir dir;
+  const std::string a = dir.path("a.png"), b = dir.path("b.png");
+  dir.write("a.png", slurp(kPrev));
+  dir.write("b.png", slurp(kNext));
+  const std::string before = slurp(a);
+  require_bad_input({"flow", "--draw", a, a, b}, "is an input");
+  CHECK(slurp(a) == before);
+  // The same file under another name (a hard link's inode) is the same input.
+  REQUIRE(::link(a.c_str(), dir.path("same.png").c_str()) == 0);
+  require_bad_input({"flow", "--draw", dir.path("same.png"), a, b}, "is an input");
+  require_bad_input({"gap8", "--json", a, a, b}, "is an input");
+}
+
+TEST_CASE("a failed write is an error: stdout and files", "[cli][lost]") {
+  const auto to_full = test::run_program("/bin/sh", {"-c", std::string(PXFLOW_BINARY) +
+                                                              " flow --json " + kPrev + " " + kNext +
+                                                              " > /dev/full"});
+  CHECK(to_full.exit_code == 1);
+  CHECK(to_full.err.find("cannot write to standard output") != std::string::npos);
+  const auto check = run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only",
+                                 "--json", "/dev/full"});
+  CHECK(check.exit_code == 1);
+  CHECK(check.err.find("cannot write /dev/full") != std::string::npos);
+}
+
+TEST_CASE("a JSON file is replaced only when complete; a failed run leaves it intact",
+          "[cli][lost]") {
+  test::TempDir dir;
+  const std::string json = dir.path("prev.json");
+  dir.write("prev.json", "{\"previous\": true}\n");
+  // Bad input after the path was accepted: the previous file stays as it was.
+  require_bad_input({"check", "--backends", "ref-local", "--require", "ref-global", "--json", json},
+                    "not among the backends");
+  CHECK(slurp(json) == "{\"previous\": true}\n");
+  // A good run replaces it whole, and leaves no temporary beside it.
+  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
+                      json})
+              .exit_code == 0);
+  CHECK(slurp(json).find("\"backends\"") != std::string::npos);
+  CHECK(run_pxflow({"check", "--help"}).exit_code == 0);
+  const auto ls = test::run_program("/bin/ls", {dir.path("")});
+  CHECK(ls.out == "prev.json\n");
+}
+
+TEST_CASE("a check that compared nothing but the reference is not a pass", "[cli][green]") {
+  const auto r = run_pxflow({"check", "--backends", "ref-original", "--generated-only"});
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("nothing was checked") != std::string::npos);
+  CHECK(r.out.find("ref-original   reference") != std::string::npos);
+}
+
+TEST_CASE("options that would have no effect are refused", "[cli][green]") {
+  require_bad_input({"check", "--backends", "ref-local", "--require", "ref-global"},
+                    "--require ref-global: not among the backends");
+  require_bad_input({"flow", "--backend", "ref-local", "--device", "0", kPrev, kNext},
+                    "no selected backend has devices");
+  require_bad_input({"check", "--backends", "ref-original,ref-local", "--device", "1"},
+                    "no selected backend has devices");
+  require_bad_input({"flow", "--draw", "", kPrev, kNext}, "--draw needs a file name");
+  require_bad_input({"flow", "--set", "gyro_comp=1", kPrev, kNext}, "gyro_comp=1");
+  require_bad_input({"bench", "--batch", ""}, "--batch: needs at least one value");
+  require_bad_input({"bench", "--set", "search_radius=6", "--radius", "2"},
+                    "--radius and --set search_radius");
+  require_bad_input({"check", "--seed", "-1"}, "--seed: must be a whole number");
+  require_bad_input({"check", "--seed", "18446744073709551616"}, "--seed: must be a whole number");
+}
