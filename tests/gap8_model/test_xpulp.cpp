@@ -20,10 +20,14 @@ TEST_CASE("pv.sub.b / pv.add.b wrap per byte; .sc uses rs2's low byte") {
   CHECK(f.RunR(Simd(0x00, true), 0x01020304u, 0x10u) == 0x11121314u);
 }
 
-TEST_CASE("pv.avgu.b rounds down with a 9-bit intermediate") {
+TEST_CASE("pv.avgu.b adds in the 8-bit lane (carry lost), then shifts") {
   CoreFixture f;
-  CHECK(f.RunR(Simd(0x06, false), 0x80FF1203u, 0x7F01F004u) == 0x7F808103u);
-  CHECK(f.RunR(Simd(0x06, false), 0xFFFFFFFFu, 0xFFFFFFFEu) == 0xFFFFFFFEu);
+  // pulp-platform/riscv-tests (xpulp-dev) pv_avgu; a 9-bit floor average would give 0xB66DB3AC.
+  CHECK(f.RunR(Simd(0x06, false), 0x8F75F8E9u, 0xDD666F70u) == 0x366D332Cu);
+  // Lanes: 0x80+0x7F=0xFF -> 0x7F; 0xFF+0x01 wraps to 0 -> 0; 0x12+0xF0 wraps to 0x02 -> 1;
+  // 0x03+0x04 -> 3. Floor-of-9-bit would give 0x7F808103.
+  CHECK(f.RunR(Simd(0x06, false), 0x80FF1203u, 0x7F01F004u) == 0x7F000103u);
+  CHECK(f.RunR(Simd(0x06, false), 0xFFFFFFFFu, 0xFFFFFFFEu) == 0x7F7F7F7Fu);
 }
 
 TEST_CASE("pv.abs.b: per signed byte, -128 stays 0x80") {
