@@ -168,6 +168,7 @@ uint32_t Core::Execute(const Decoded& d) {
     case Op::kBgeu:
       return ExecuteBranch(d, a >= b);
     case Op::kLoad:
+    case Op::kElw:
     case Op::kStore:
     case Op::kLoadPostImm:
     case Op::kLoadRegReg:

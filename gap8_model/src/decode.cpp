@@ -109,6 +109,13 @@ Decoded DecodeLoad(uint32_t w) {
     d.width = width;
     return d;
   }
+  if (f3 == 6) {  // p.elw rd, imm(rs1) [GVSOC p_elw_exec: "a regular load whose park puts the
+                  // whole core to sleep until the event unit answers"]: the model's blocking
+                  // peripheral reads already sleep, so it is lw with its own op
+    Decoded d = WithImm(Base(w, Op::kElw), ImmI(w), false);
+    d.width = 2;
+    return d;
+  }
   if (!ValidLoadWidth(f3)) return Illegal(w);
   Decoded d = WithImm(Base(w, Op::kLoad), ImmI(w), false);
   d.width = f3;
@@ -224,6 +231,7 @@ Decoded DecodeFields(uint32_t bits) {
 void AddAccessFacts(Decoded& d) {
   switch (d.op) {
     case Op::kLoad:
+    case Op::kElw:
       d.access = kAccessLoad | kAccessImmOffset;
       break;
     case Op::kStore:

@@ -137,6 +137,51 @@ Decoded DecodeShuffleI(uint32_t w, uint32_t k) {
   return d;
 }
 
+// GAP8's own SIMD extensions [GVSOC of gap_sdk, isa_riscv_gen.py subset `gap8`]; Illegal when
+// the encoding is none of them. The .sc/.sci forms of pv.cplxmul.s and pv.vitop.max/sel stay
+// illegal: their semantics are not established by the sources the model uses.
+Decoded DecodeGap8Simd(uint32_t w) {
+  const uint32_t f3 = Bits(w, 14, 12), f7 = Bits(w, 31, 25);
+  auto make = [&](Op op, int32_t shift) {
+    Decoded d = Base(w, op);
+    d.imm = shift;
+    return d;
+  };
+  if (f3 == 2 || f3 == 3) {  // the .div2 / .div4 forms: funct7 selects, funct3 011 = .b
+    const bool b = f3 == 3;
+    switch (f7) {
+      case 0x00:
+        return make(b ? Op::kPvAddDivB : Op::kPvAddDivH, 1);
+      case 0x01:
+        return make(b ? Op::kPvAddDivB : Op::kPvAddDivH, 2);
+      case 0x04:
+        return make(b ? Op::kPvSubDivB : Op::kPvSubDivH, 1);
+      case 0x05:
+        return make(b ? Op::kPvSubDivB : Op::kPvSubDivH, 2);
+      case 0x2A:
+        return b ? Illegal(w) : make(Op::kPvCplxMulS, 16);
+      case 0x2B:
+        return b ? Illegal(w) : make(Op::kPvCplxMulS, 17);
+      case 0x36:
+        return b ? Illegal(w) : make(Op::kPvSubRotmjH, 1);
+      case 0x37:
+        return b ? Illegal(w) : make(Op::kPvSubRotmjH, 2);
+      default:
+        return Illegal(w);
+    }
+  }
+  if (f3 == 0 && (f7 >> 1) == 0x15) return make(Op::kPvCplxMulS, 15);
+  if (f3 == 0 && (f7 >> 1) == 0x1B) return make(Op::kPvSubRotmjH, 0);
+  if (f3 == 0 && f7 == 0x2E && Bits(w, 24, 20) == 0) {
+    Decoded d = make(Op::kPvCplxConjH, 0);
+    d.src_mask = RegBit(d.rs1);
+    return d;
+  }
+  if ((f7 >> 1) == 0x34 && f3 == 6) return make(Op::kPvPackHH, 0);  // pv.pack.h.h
+  if ((f7 >> 1) == 0x34 && f3 == 4) return make(Op::kPvPackH, 0);   // pv.pack.l.h
+  return Illegal(w);
+}
+
 }  // namespace
 
 Decoded DecodeXpulpSimd(uint32_t w) {
@@ -148,11 +193,10 @@ Decoded DecodeXpulpSimd(uint32_t w) {
     if (funct6 == 0x3E) return DecodeShuffleI(w, 3);
   }
   const SimdEntry e = SimdTable(funct6);
-  // funct3 010 and 011 hold GAP8-only and PULP-NN extensions the model does not implement.
-  if ((e.forms & (1u << f3)) == 0) return Illegal(w);
+  if ((e.forms & (1u << f3)) == 0) return DecodeGap8Simd(w);
   const bool half = (f3 & 1) == 0;
   const Op op = half ? e.h : e.b;
-  if (op == Op::kIllegal) return Illegal(w);
+  if (op == Op::kIllegal) return DecodeGap8Simd(w);
   // pv.abs and pv.pack.h have bit 25 fixed to 0 (funct7 0111000, 1101000) [GVSOC].
   if ((op == Op::kPvAbsB || op == Op::kPvAbsH || op == Op::kPvPackH) && Bits(w, 25, 25) != 0)
     return Illegal(w);

@@ -144,6 +144,22 @@ uint32_t EvaluateXpulp(const Decoded& d, uint32_t a, uint32_t b, uint32_t c) {
       return Compare<u8>(a, b, le);
     case Op::kPvCmpLeuH:
       return Compare<u16>(a, b, le);
+    case Op::kPvAddDivH:
+      return AddShift<s16>(a, b, d.imm);
+    case Op::kPvAddDivB:
+      return AddShift<s8>(a, b, d.imm);
+    case Op::kPvSubDivH:
+      return SubShift<s16>(a, b, d.imm);
+    case Op::kPvSubDivB:
+      return SubShift<s8>(a, b, d.imm);
+    case Op::kPvCplxMulS:
+      return CplxMul(a, b, d.imm);
+    case Op::kPvCplxConjH:
+      return CplxConj(a);
+    case Op::kPvSubRotmjH:
+      return SubRotmj(a, b, d.imm);
+    case Op::kPvPackHH:
+      return PackHighHalves(a, b);
     case Op::kPAvgu:
       return AvguW(a, b);
     case Op::kPSlet:

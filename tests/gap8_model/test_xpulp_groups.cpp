@@ -309,6 +309,16 @@ TEST_CASE("p.l*/p.s* of every width: post-increment and register-offset forms") 
   }
 }
 
+// p.elw rd, imm(rs1): GVSOC p_elw_exec, "a regular load whose park puts the whole core to sleep
+// until the event unit answers"; the model's blocking peripheral reads do the sleeping.
+TEST_CASE("p.elw loads a word like lw") {
+  CoreFixture f;
+  const uint32_t data = GAP8_L1_BASE + 0x100, word = 0x89ABCDEFu;
+  f.memory.Write(data + 8, &word, 4);
+  CHECK(f.RunR(EncodeI(0x03, 6, 10, 11, 8), data, 0) == word);
+  CHECK(f.core.reg(11) == data);
+}
+
 // RI5CY "Immediate Branching": branch when rs1 equals (p.beqimm) or differs from (p.bneimm)
 // the sign-extended 5-bit immediate.
 TEST_CASE("p.beqimm / p.bneimm compare with a signed 5-bit immediate") {
@@ -332,33 +342,54 @@ TEST_CASE("p.beqimm / p.bneimm compare with a signed 5-bit immediate") {
   }
 }
 
+// GAP8's own SIMD extensions, from their one source: gap_sdk's GVSOC (isa_riscv_gen.py subset
+// `gap8`, rvXgap8.hpp; lib_* bodies in isa_lib/int.h). Complex values: im high, re low half.
+TEST_CASE("GAP8-only: pv.add/sub .div2/.div4, pv.cplxmul.s, pv.cplxconj.h, pv.subrotmj.h, pack") {
+  CheckRows({
+      {"pv.add.h.div2", 0, 0x7FFF0003u, 0x00010004u, 0, 0xC0000003u},  // 0x8000 is -32768
+      {"pv.add.h.div4", 0, 0x7FFF0003u, 0x00010004u, 0, 0xE0000001u},
+      {"pv.add.b.div2", 0, 0x7F010203u, 0x01010101u, 0, 0xC0010102u},
+      {"pv.sub.h.div2", 0, 0x80000000u, 0x00010002u, 0, 0x3FFFFFFFu},
+      {"pv.sub.b.div4", 0, 0x00100080u, 0x01010101u, 0, 0xFF03FF1Fu},
+      {"pv.cplxmul.s", 0, 0x00004000u, 0x40004000u, 0, 0x20002000u},  // 0.5 x (0.5 + 0.5j)
+      {"pv.cplxmul.s", 0, 0x80000000u, 0x80000000u, 0, 0x00008000u},  // -j x -j = -1
+      {"pv.cplxmul.s.div2", 0, 0x00004000u, 0x40004000u, 0, 0x10001000u},
+      {"pv.cplxmul.s.div4", 0, 0x00004000u, 0x40004000u, 0, 0x08000800u},
+      {"pv.cplxconj.h", 0, 0x12345678u, 0, 0, 0xEDCC5678u},
+      {"pv.cplxconj.h", 0, 0x80000001u, 0, 0, 0x80000001u},            // -(-32768) wraps
+      {"pv.subrotmj.h", 0, 0x00050003u, 0x00020009u, 0, 0x00060003u},  // (a - b) * -j
+      {"pv.subrotmj.h.div2", 0, 0x00050003u, 0x00020009u, 0, 0x00030001u},
+      {"pv.subrotmj.h.div4", 0, 0x00050003u, 0x00020009u, 0, 0x00010000u},
+      {"pv.pack.h.h", 0, 0x1234ABCDu, 0x5678EF01u, 0, 0x12345678u},
+      {"pv.pack.l.h", 0, 0x1234ABCDu, 0x5678EF01u, 0, 0xABCDEF01u},
+  });
+}
+
 // What the model leaves out must stop the run with the illegal-instruction fault on exactly
-// that instruction: the GAP8-only SIMD extensions (pv.cplxmul, pv.subrotmj, pv.vitop,
-// pv.cplxconj, pv.add/sub.div2/div4 in funct3 010/011, pv.pack.h.h/l.h), the event-unit load
-// p.elw, and the holes of every PULPv2 opcode.
+// that instruction: the GAP8-only pv.cplxmul.s .sc/.sci forms and pv.vitop.max/sel (their
+// semantics are not established by the sources), and the holes of every PULPv2 opcode.
 TEST_CASE("unimplemented encodings are illegal instructions, on that instruction") {
   const uint32_t words[] = {
-      EncodeR(0x57, 0, 0x2A, 10, 11, 12),  // pv.cplxmul.s (funct6 010101)
-      EncodeR(0x57, 0, 0x36, 10, 11, 12),  // pv.subrotmj.h (011011)
-      EncodeR(0x57, 1, 0x32, 10, 11, 12),  // pv.vitop.max (011001)
-      EncodeR(0x57, 0, 0x2E, 10, 11, 0),   // pv.cplxconj.h (0101110)
-      EncodeR(0x57, 2, 0x00, 10, 11, 12),  // pv.add.h.div2 (funct3 010)
-      EncodeR(0x57, 3, 0x04, 10, 11, 12),  // pv.sub.b.div2 (funct3 011)
-      EncodeR(0x57, 6, 0x68, 10, 11, 12),  // pv.pack.h.h (pack funct6, funct3 110)
-      EncodeR(0x57, 4, 0x68, 10, 11, 12),  // pv.pack.l.h (funct3 100)
-      EncodeR(0x57, 1, 0x39, 10, 11, 12),  // pv.abs.b with bit 25 set
-      EncodeR(0x57, 5, 0x3C, 10, 11, 12),  // pv.extract.sc.b: extract is .sci only
-      EncodeR(0x57, 7, 0x64, 10, 11, 12),  // pv.shuffle2.sci.b
-      EncodeI(0x03, 6, 10, 11, 0),         // p.elw (event-unit load)
-      EncodeR(0x33, 0, 0x04, 10, 11, 12),  // funct7 0000100 other than p.ror
-      EncodeR(0x33, 0, 0x08, 10, 11, 12),  // p.ff1 with rs2 != 0
-      EncodeR(0x33, 0, 0x0A, 10, 11, 12),  // p.clip funct3 000
-      EncodeR(0x33, 2, 0x21, 10, 11, 12),  // p.mac funct7, funct3 010
-      EncodeR(0x33, 5, 0x40, 10, 11, 12),  // register bit-field funct3 101
-      EncodeR(0x33, 7, 0x60, 10, 11, 12),  // immediate bit-field funct3 111
-      EncodeR(0x5B, 2, 0x21, 10, 11, 12),  // p.addNr with a non-zero Is3 field
-      EncodeR(0x0B, 3, 0, 10, 11, 12),     // post-increment load funct3 011
-      EncodeR(0x2B, 3, 0, 10, 11, 12),     // post-increment store funct3 011
+      EncodeR(0x57, 4, 0x2A, 10, 11, 12),           // pv.cplxmul.s.sc
+      EncodeR(0x57, 6, 0x2A, 10, 11, 12),           // pv.cplxmul.s.sci
+      EncodeR(0x57, 1, 0x32, 10, 11, 12),           // pv.vitop.max (011001)
+      EncodeR(0x57, 0, 0x32, 10, 11, 12),           // pv.vitop.sel
+      EncodeR(0x57, 3, 0x2A, 10, 11, 12),           // no .b form of pv.cplxmul.s.div2
+      EncodeR(0x57, 2, 0x10, 10, 11, 12),           // funct3 010 with another funct7
+      EncodeR(0x57, 0, 0x2E, 10, 11, 12),           // pv.cplxconj.h with rs2 != 0
+      EncodeR(0x57, 1, 0x39, 10, 11, 12),           // pv.abs.b with bit 25 set
+      EncodeR(0x57, 5, 0x3C, 10, 11, 12),           // pv.extract.sc.b: extract is .sci only
+      EncodeR(0x57, 7, 0x64, 10, 11, 12),           // pv.shuffle2.sci.b
+      EncodeR(0x33, 0, 0x04, 10, 11, 12),           // funct7 0000100 other than p.ror
+      EncodeR(0x33, 0, 0x08, 10, 11, 12),           // p.ff1 with rs2 != 0
+      EncodeR(0x33, 0, 0x0A, 10, 11, 12),           // p.clip funct3 000
+      EncodeR(0x33, 2, 0x21, 10, 11, 12),           // p.mac funct7, funct3 010
+      EncodeR(0x33, 5, 0x40, 10, 11, 12),           // register bit-field funct3 101
+      EncodeR(0x33, 7, 0x60, 10, 11, 12),           // immediate bit-field funct3 111
+      EncodeR(0x5B, 2, 0x21, 10, 11, 12),           // p.addNr with a non-zero Is3 field
+      EncodeR(0x0B, 3, 0, 10, 11, 12),              // post-increment load funct3 011
+      EncodeR(0x2B, 3, 0, 10, 11, 12),              // post-increment store funct3 011
+      EncodeI(0x03, 7, 10, 11, 0) | (0x7Fu << 25),  // register-offset load, bad funct7
   };
   for (uint32_t w : words) {
     CoreFixture f;

@@ -155,9 +155,28 @@ uint32_t Scalar(std::string_view m, uint32_t imm) {
   return 0;
 }
 
+// GAP8's own SIMD extensions [gap_sdk GVSOC isa_riscv_gen.py, subset `gap8`].
+uint32_t Gap8Only(std::string_view m) {
+  const Named table[] = {
+      {"pv.add.h.div2", R(0x57, 2, 0x00)},      {"pv.add.h.div4", R(0x57, 2, 0x01)},
+      {"pv.add.b.div2", R(0x57, 3, 0x00)},      {"pv.add.b.div4", R(0x57, 3, 0x01)},
+      {"pv.sub.h.div2", R(0x57, 2, 0x04)},      {"pv.sub.h.div4", R(0x57, 2, 0x05)},
+      {"pv.sub.b.div2", R(0x57, 3, 0x04)},      {"pv.sub.b.div4", R(0x57, 3, 0x05)},
+      {"pv.cplxmul.s", R(0x57, 0, 0x2A)},       {"pv.cplxmul.s.div2", R(0x57, 2, 0x2A)},
+      {"pv.cplxmul.s.div4", R(0x57, 2, 0x2B)},  {"pv.cplxconj.h", R(0x57, 0, 0x2E, 0)},
+      {"pv.subrotmj.h", R(0x57, 0, 0x36)},      {"pv.subrotmj.h.div2", R(0x57, 2, 0x36)},
+      {"pv.subrotmj.h.div4", R(0x57, 2, 0x37)}, {"pv.pack.h.h", R(0x57, 6, 0x68)},
+      {"pv.pack.l.h", R(0x57, 4, 0x68)},
+  };
+  for (const Named& n : table)
+    if (n.name == m) return n.word;
+  return 0;
+}
+
 }  // namespace
 
 uint32_t Assemble(std::string_view mnemonic, uint32_t imm) {
+  if (const uint32_t w = Gap8Only(mnemonic)) return w;
   const auto parts = Split(mnemonic);
   if (parts.size() >= 2 && parts[0] == "pv") return Simd(parts, imm);
   return Scalar(mnemonic, imm);

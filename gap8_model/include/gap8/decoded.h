@@ -59,6 +59,7 @@ enum class Op : uint8_t {
   kStorePostImm,
   kStoreRegReg,
   kStorePostReg,  // p.s* rs2, imm(rs1!) / rs3(rs1) / rs3(rs1!)
+  kElw,           // p.elw rd, imm(rs1): a word load that sleeps until the event unit answers
   kPAbs,
   kPMin,
   kPMinu,
@@ -172,9 +173,19 @@ enum class Op : uint8_t {
   kPBset,
   kPMac,
   kPMsu,
-  kPMul16,  // p.mul{s,hhs,u,hhu}[R]N, p.mac{...}[R]N: Decoded::width holds Mul16Flags, imm Is3
-  kPAddN,   // p.add[u][R]N, p.sub[u][R]N rD, rs1, rs2, Is3: width holds AddNFlags, imm Is3
-  kPAddNr,  // the register forms: rD = (rD +/- rs1 [+ round]) >> rs2[4:0]
+  // GAP8-only extensions [GVSOC of gap_sdk, isa_riscv_gen.py `gap8` subset, rvXgap8.hpp]:
+  // Decoded::imm holds the right shift (div2 = 1, div4 = 2; cplxmul 15, 16, 17)
+  kPvAddDivH,  // pv.add.h.div2 / .div4: per signed half-word (int16)(a + b) >> shift
+  kPvAddDivB,
+  kPvSubDivH,
+  kPvSubDivB,
+  kPvCplxMulS,  // pv.cplxmul.s[.div2/.div4]: Q15 complex product (re low, im high half)
+  kPvCplxConjH,
+  kPvSubRotmjH,  // pv.subrotmj.h[.div2/.div4]: (a - b) * -j
+  kPvPackHH,     // pv.pack.h.h: rd = rs1[31:16] : rs2[31:16]
+  kPMul16,       // p.mul{s,hhs,u,hhu}[R]N, p.mac{...}[R]N: Decoded::width holds Mul16Flags, imm Is3
+  kPAddN,        // p.add[u][R]N, p.sub[u][R]N rD, rs1, rs2, Is3: width holds AddNFlags, imm Is3
+  kPAddNr,       // the register forms: rD = (rD +/- rs1 [+ round]) >> rs2[4:0]
 };
 
 // Decoded::width of kPMul16 and kPAddN / kPAddNr.

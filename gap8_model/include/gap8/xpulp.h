@@ -146,6 +146,44 @@ inline uint32_t PackLoB(uint32_t c, uint32_t a, uint32_t b) {
   return ((a & 0xFFu) << 8) | (b & 0xFFu) | (c & 0xFFFF0000u);
 }
 
+// ---- GAP8-only SIMD extensions [GVSOC-GAP: gap_sdk's GVSOC, models/cpu/iss isa_riscv_gen.py
+// subset `gap8` and include/rvXgap8.hpp, with gvsoc-core isa_lib/int.h for the lib_* bodies].
+// A single source: GreenWaves' own simulator; neither the RI5CY manual nor its RTL has them.
+// pv.add/sub.{h,b}.div2/div4: the lane sum or difference wrapped in the signed lane, then an
+// arithmetic shift (VEC_OP_DIV2 / DIV4: ((elemType)(a op b)) >> 1 or 2).
+template <typename T>
+uint32_t AddShift(uint32_t a, uint32_t b, int shift) {
+  return Map<T>(a, b, [shift](T x, T y) { return static_cast<T>(static_cast<T>(x + y) >> shift); });
+}
+template <typename T>
+uint32_t SubShift(uint32_t a, uint32_t b, int shift) {
+  return Map<T>(a, b, [shift](T x, T y) { return static_cast<T>(static_cast<T>(x - y) >> shift); });
+}
+// pv.cplxmul.s: complex numbers as (im = high half, re = low half), Q15: re = (a_re b_re -
+// a_im b_im) >> shift, im = (a_im b_re + a_re b_im) >> shift, each truncated to 16 bits, with
+// shift 15 (.div2: 16, .div4: 17) [lib_CPLXMULS, lib_CPLXMULS_DIV2/4].
+inline uint32_t CplxMul(uint32_t a, uint32_t b, int shift) {
+  const int64_t ar = static_cast<int16_t>(a), ai = static_cast<int16_t>(a >> 16);
+  const int64_t br = static_cast<int16_t>(b), bi = static_cast<int16_t>(b >> 16);
+  const auto re = static_cast<uint16_t>((ar * br - ai * bi) >> shift);
+  const auto im = static_cast<uint16_t>((ai * br + ar * bi) >> shift);
+  return (static_cast<uint32_t>(im) << 16) | re;
+}
+// pv.cplxconj.h: the imaginary (high) half negated [lib_CPLX_CONJ_16].
+inline uint32_t CplxConj(uint32_t a) {
+  return (static_cast<uint32_t>(static_cast<uint16_t>(-static_cast<int16_t>(a >> 16))) << 16) |
+         (a & 0xFFFFu);
+}
+// pv.subrotmj.h: (a - b) * -j: re = a_im - b_im, im = b_re - a_re, each in the lane and shifted
+// arithmetically by 0 / 1 / 2 (.div2, .div4) [lib_VEC_ADD_16_ROTMJ*].
+inline uint32_t SubRotmj(uint32_t a, uint32_t b, int shift) {
+  const auto re = static_cast<int16_t>(static_cast<int16_t>((a >> 16) - (b >> 16)) >> shift);
+  const auto im = static_cast<int16_t>(static_cast<int16_t>(b - a) >> shift);
+  return (static_cast<uint32_t>(static_cast<uint16_t>(im)) << 16) | static_cast<uint16_t>(re);
+}
+// pv.pack.h.h: rd = rs1[31:16] : rs2[31:16] [lib_VEC_PACK_SC_H_16]; pv.pack.l.h is pv.pack.h.
+inline uint32_t PackHighHalves(uint32_t a, uint32_t b) { return (a & 0xFFFF0000u) | (b >> 16); }
+
 // ---- Scalar ALU [RI5CY "General ALU Operations", "Bit Manipulation"] ----
 inline uint32_t AbsW(uint32_t a) {
   return static_cast<int32_t>(a) < 0 ? 0u - a : a;  // p.abs of INT32_MIN stays INT32_MIN
