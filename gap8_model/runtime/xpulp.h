@@ -351,6 +351,15 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
 #define GAP8_ASM_PV_MINU_B(rd, a, b) ".insn r 0x57, 1, 0x14, " rd ", " a ", " b "\n\t"
 #define GAP8_ASM_PV_MAXU_B(rd, a, b) ".insn r 0x57, 1, 0x1C, " rd ", " a ", " b "\n\t"
 #define GAP8_ASM_PV_AVGU_B(rd, a, b) ".insn r 0x57, 1, 0x0C, " rd ", " a ", " b "\n\t"
+/* Any packed-SIMD instruction as text: funct6 and funct3 as literals (see GAP8_XPULP_F6_* and
+ * GAP8_XPULP_FORM_*), e.g. GAP8_ASM_PV("0x00", "1", "%[r]", "%[a]", "%[b]") = pv.add.b; the
+ * .sci form takes the 6-bit immediate as a literal, folded into the I-type immediate by the
+ * assembler, e.g. GAP8_ASM_PV_SCI("0x10", "7", "%[r]", "%[a]", "1") = pv.srl.sci.b r, a, 1. */
+#define GAP8_ASM_PV(f6, f3, rd, a, b) ".insn r 0x57, " f3 ", (" f6 ") << 1, " rd ", " a ", " b "\n\t"
+/* (GAS gives | & ^ one precedence, below << and >>: every term is parenthesised.) */
+#define GAP8_ASM_PV_SCI(f6, f3, rd, a, imm)                                                  \
+  ".insn i 0x57, " f3 ", " rd ", " a ", (((((" f6 ") << 6) | (((" imm ") & 1) << 5) | (((" imm \
+  ") >> 1) & 31)) ^ 0x800) - 0x800)\n\t"
 /* rd = dot(a, b's low byte in every lane) */
 #define GAP8_ASM_PV_DOTUP_SC_B(rd, a, b) ".insn r 0x57, 5, 0x40, " rd ", " a ", " b "\n\t"
 /* acc += dot(a, b's low byte in every lane) */

@@ -185,6 +185,20 @@ static void memory(void) {
   check(*(const uint32_t*)(buffer + 12), 0x01020304u);
 }
 
+/* The text macros for asm blocks (hardware-loop bodies): SPEC's floor average of two bytes in
+ * four instructions, (a & b) + ((a ^ b) >> 1) per lane with pv.srl.sci.b and pv.add.b. */
+static void asm_text(void) {
+  const uint32_t a = 0x8F75F8E9u, b = 0xDD666F70u;
+  uint32_t r, t;
+  __asm__ volatile("and %[r], %[a], %[b]\n\t"
+                   "xor %[t], %[a], %[b]\n\t" GAP8_ASM_PV_SCI("0x10", "7", "%[t]", "%[t]", "1")
+                       GAP8_ASM_PV("0x00", "1", "%[r]", "%[r]", "%[t]")
+                   : [r] "=&r"(r), [t] "=&r"(t)
+                   : [a] "r"(a), [b] "r"(b));
+  check(r, 0xB66DB3ACu); /* the 9-bit floor average: what pv.avgu.b does not compute */
+  check(GAP8_XPULP_PV_OP_SCI(SRA, SCI_H, 0x80000010u, 0x3F), 0xFFFF0000u); /* 63 & 15 = 15 */
+}
+
 static void branches(void) {
   uint32_t taken = 0, x = (uint32_t)-1;
   __asm__ volatile(GAP8_ASM_P_BEQIMM("%[x]", "31", "1f") "li %[t], 5\n\t"
@@ -208,6 +222,7 @@ int main(void) {
   gap8_only();
   scalar();
   memory();
+  asm_text();
   branches();
   if (failures) {
     printf("xpulp isa: %d failures, first at check %d\n", failures, first_failure);
