@@ -86,53 +86,53 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
  * ..._SCI_H(a, imm) = pv.add.sci.h. Immediates must be integer constant expressions. */
 
 /* rd = op(rs1, rs2): opcode, funct3, funct7. */
-#define GAP8_XPULP_R(opc, f3, f7, a, b)                                                   \
-  ({                                                                                      \
-    uint32_t r_;                                                                          \
-    __asm__ volatile(".insn r " #opc ", " #f3 ", " #f7 ", %0, %1, %2"                     \
-                     : "=r"(r_)                                                           \
-                     : "r"((uint32_t)(a)), "r"((uint32_t)(b)));                           \
-    r_;                                                                                   \
+#define GAP8_XPULP_R(opc, f3, f7, a, b)                               \
+  ({                                                                  \
+    uint32_t r_;                                                      \
+    __asm__ volatile(".insn r " #opc ", " #f3 ", " #f7 ", %0, %1, %2" \
+                     : "=r"(r_)                                       \
+                     : "r"((uint32_t)(a)), "r"((uint32_t)(b)));       \
+    r_;                                                               \
   })
 /* rd = op(rs1), rs2 field x0. */
-#define GAP8_XPULP_R1(opc, f3, f7, a)                                                     \
-  ({                                                                                      \
-    uint32_t r_;                                                                          \
-    __asm__ volatile(".insn r " #opc ", " #f3 ", " #f7 ", %0, %1, x0"                     \
-                     : "=r"(r_)                                                           \
-                     : "r"((uint32_t)(a)));                                               \
-    r_;                                                                                   \
+#define GAP8_XPULP_R1(opc, f3, f7, a)                                 \
+  ({                                                                  \
+    uint32_t r_;                                                      \
+    __asm__ volatile(".insn r " #opc ", " #f3 ", " #f7 ", %0, %1, x0" \
+                     : "=r"(r_)                                       \
+                     : "r"((uint32_t)(a)));                           \
+    r_;                                                               \
   })
 /* rd = op(rd, rs1, rs2): the instruction reads and writes rd. */
-#define GAP8_XPULP_RACC(opc, f3, f7, acc, a, b)                                           \
-  ({                                                                                      \
-    uint32_t r_ = (uint32_t)(acc);                                                        \
-    __asm__ volatile(".insn r " #opc ", " #f3 ", " #f7 ", %0, %1, %2"                     \
-                     : "+r"(r_)                                                           \
-                     : "r"((uint32_t)(a)), "r"((uint32_t)(b)));                           \
-    r_;                                                                                   \
+#define GAP8_XPULP_RACC(opc, f3, f7, acc, a, b)                       \
+  ({                                                                  \
+    uint32_t r_ = (uint32_t)(acc);                                    \
+    __asm__ volatile(".insn r " #opc ", " #f3 ", " #f7 ", %0, %1, %2" \
+                     : "+r"(r_)                                       \
+                     : "r"((uint32_t)(a)), "r"((uint32_t)(b)));       \
+    r_;                                                               \
   })
 /* An I-type view of an encoding whose bits 31..20 are `imm12` (sign-folded for .insn i). */
 #define GAP8_XPULP_IMM12(imm12) ((((int)(imm12)) ^ 0x800) - 0x800)
-#define GAP8_XPULP_I(opc, f3, imm12, a)                                                   \
-  ({                                                                                      \
-    uint32_t r_;                                                                          \
-    __asm__ volatile(".insn i " #opc ", " #f3 ", %0, %1, %2"                              \
-                     : "=r"(r_)                                                           \
-                     : "r"((uint32_t)(a)), "i"(GAP8_XPULP_IMM12(imm12)));                 \
-    r_;                                                                                   \
+#define GAP8_XPULP_I(opc, f3, imm12, a)                                   \
+  ({                                                                      \
+    uint32_t r_;                                                          \
+    __asm__ volatile(".insn i " #opc ", " #f3 ", %0, %1, %2"              \
+                     : "=r"(r_)                                           \
+                     : "r"((uint32_t)(a)), "i"(GAP8_XPULP_IMM12(imm12))); \
+    r_;                                                                   \
   })
-#define GAP8_XPULP_IACC(opc, f3, imm12, acc, a)                                           \
-  ({                                                                                      \
-    uint32_t r_ = (uint32_t)(acc);                                                        \
-    __asm__ volatile(".insn i " #opc ", " #f3 ", %0, %1, %2"                              \
-                     : "+r"(r_)                                                           \
-                     : "r"((uint32_t)(a)), "i"(GAP8_XPULP_IMM12(imm12)));                 \
-    r_;                                                                                   \
+#define GAP8_XPULP_IACC(opc, f3, imm12, acc, a)                           \
+  ({                                                                      \
+    uint32_t r_ = (uint32_t)(acc);                                        \
+    __asm__ volatile(".insn i " #opc ", " #f3 ", %0, %1, %2"              \
+                     : "+r"(r_)                                           \
+                     : "r"((uint32_t)(a)), "i"(GAP8_XPULP_IMM12(imm12))); \
+    r_;                                                                   \
   })
 /* Packed SIMD (opcode 0x57): funct6, funct3 0 .h, 1 .b, 4 .sc.h, 5 .sc.b, 6 .sci.h, 7 .sci.b;
  * the 6-bit .sci immediate goes to bit 25 (imm[0]) and bits 24..20 (imm[5:1]). */
-#define GAP8_XPULP_SCI12(f6, imm) (((f6) << 6) | (((imm) & 1) << 5) | (((imm) >> 1) & 31))
+#define GAP8_XPULP_SCI12(f6, imm) (((f6) << 6) | (((imm)&1) << 5) | (((imm) >> 1) & 31))
 #define GAP8_XPULP_PV(f6, f3, a, b) GAP8_XPULP_R(0x57, f3, ((f6) << 1), a, b)
 #define GAP8_XPULP_PV_ACC(f6, f3, acc, a, b) GAP8_XPULP_RACC(0x57, f3, ((f6) << 1), acc, a, b)
 #define GAP8_XPULP_PV_SCI(f6, f3, a, imm) GAP8_XPULP_I(0x57, f3, GAP8_XPULP_SCI12(f6, imm), a)
@@ -241,17 +241,16 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
 #define GAP8_XPULP_P_EXTBS(a) GAP8_XPULP_R1(0x33, 6, 0x08, a)
 #define GAP8_XPULP_P_EXTBZ(a) GAP8_XPULP_R1(0x33, 7, 0x08, a)
 /* p.clip / p.clipu rD, rs1, Is2: Is2 in the rs2 field. */
-#define GAP8_XPULP_P_CLIP(a, is2) GAP8_XPULP_I(0x33, 1, ((0x0A << 5) | ((is2) & 31)), a)
-#define GAP8_XPULP_P_CLIPU(a, is2) GAP8_XPULP_I(0x33, 2, ((0x0A << 5) | ((is2) & 31)), a)
+#define GAP8_XPULP_P_CLIP(a, is2) GAP8_XPULP_I(0x33, 1, ((0x0A << 5) | ((is2)&31)), a)
+#define GAP8_XPULP_P_CLIPU(a, is2) GAP8_XPULP_I(0x33, 2, ((0x0A << 5) | ((is2)&31)), a)
 #define GAP8_XPULP_P_CLIPR(a, b) GAP8_XPULP_R(0x33, 5, 0x0A, a, b)
 #define GAP8_XPULP_P_CLIPUR(a, b) GAP8_XPULP_R(0x33, 6, 0x0A, a, b)
 #define GAP8_XPULP_P_MAC(acc, a, b) GAP8_XPULP_RACC(0x33, 0, 0x21, acc, a, b)
 #define GAP8_XPULP_P_MSU(acc, a, b) GAP8_XPULP_RACC(0x33, 1, 0x21, acc, a, b)
 /* Bit fields, immediate forms: Is3 = width - 1 (bits 29..25), Is2 = position (24..20). */
-#define GAP8_XPULP_BITFIELD12(is3, is2) ((3 << 10) | (((is3) & 31) << 5) | ((is2) & 31))
+#define GAP8_XPULP_BITFIELD12(is3, is2) ((3 << 10) | (((is3)&31) << 5) | ((is2)&31))
 #define GAP8_XPULP_P_EXTRACT(a, is3, is2) GAP8_XPULP_I(0x33, 0, GAP8_XPULP_BITFIELD12(is3, is2), a)
-#define GAP8_XPULP_P_EXTRACTU(a, is3, is2) \
-  GAP8_XPULP_I(0x33, 1, GAP8_XPULP_BITFIELD12(is3, is2), a)
+#define GAP8_XPULP_P_EXTRACTU(a, is3, is2) GAP8_XPULP_I(0x33, 1, GAP8_XPULP_BITFIELD12(is3, is2), a)
 #define GAP8_XPULP_P_INSERT(rd, a, is3, is2) \
   GAP8_XPULP_IACC(0x33, 2, GAP8_XPULP_BITFIELD12(is3, is2), rd, a)
 #define GAP8_XPULP_P_BCLR(a, is3, is2) GAP8_XPULP_I(0x33, 3, GAP8_XPULP_BITFIELD12(is3, is2), a)
@@ -267,9 +266,9 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
  * with variant 0 u, 1 hhu, 2 s, 3 hhs (multiplies) or 0 N, 2 uN (add/sub); funct3 0 mul,
  * 4 mul R, 1 mac, 5 mac R, 2 add, 6 add R, 3 sub, 7 sub R. */
 #define GAP8_XPULP_MUL16(f3, variant, is3, a, b) \
-  GAP8_XPULP_R(0x5B, f3, (((variant) << 5) | ((is3) & 31)), a, b)
+  GAP8_XPULP_R(0x5B, f3, (((variant) << 5) | ((is3)&31)), a, b)
 #define GAP8_XPULP_MAC16(f3, variant, is3, acc, a, b) \
-  GAP8_XPULP_RACC(0x5B, f3, (((variant) << 5) | ((is3) & 31)), acc, a, b)
+  GAP8_XPULP_RACC(0x5B, f3, (((variant) << 5) | ((is3)&31)), acc, a, b)
 #define GAP8_XPULP_P_MULS(a, b) GAP8_XPULP_MUL16(0, 2, 0, a, b)
 #define GAP8_XPULP_P_MULHHS(a, b) GAP8_XPULP_MUL16(0, 3, 0, a, b)
 #define GAP8_XPULP_P_MULU(a, b) GAP8_XPULP_MUL16(0, 0, 0, a, b)
@@ -293,56 +292,54 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
 /* Loads and stores of every width (p.lb, p.lbu, p.lh, p.lhu, p.lw = widths 0, 4, 1, 5, 2):
  * rd, imm(rs1!) post-increment; rd, rs2(rs1!) register post-increment; rd, rs2(rs1) register
  * offset (funct7 encodes the width: 0x00 lb, 0x20 lbu, 0x08 lh, 0x28 lhu, 0x10 lw). */
-#define GAP8_XPULP_LOAD_POST_IMM(width, p, imm)                                          \
-  ({                                                                                     \
-    uint32_t r_;                                                                         \
-    __asm__ volatile(".insn i 0x0B, " #width ", %0, %2(%1)"                              \
-                     : "=r"(r_), "+r"(p)                                                 \
-                     : "i"(imm)                                                          \
-                     : "memory");                                                        \
-    r_;                                                                                  \
+#define GAP8_XPULP_LOAD_POST_IMM(width, p, imm)             \
+  ({                                                        \
+    uint32_t r_;                                            \
+    __asm__ volatile(".insn i 0x0B, " #width ", %0, %2(%1)" \
+                     : "=r"(r_), "+r"(p)                    \
+                     : "i"(imm)                             \
+                     : "memory");                           \
+    r_;                                                     \
   })
-#define GAP8_XPULP_LOAD_POST_REG(f7, p, step)                                            \
-  ({                                                                                     \
-    uint32_t r_;                                                                         \
-    __asm__ volatile(".insn r 0x0B, 7, " #f7 ", %0, %1, %2"                              \
-                     : "=r"(r_), "+r"(p)                                                 \
-                     : "r"(step)                                                         \
-                     : "memory");                                                        \
-    r_;                                                                                  \
+#define GAP8_XPULP_LOAD_POST_REG(f7, p, step)               \
+  ({                                                        \
+    uint32_t r_;                                            \
+    __asm__ volatile(".insn r 0x0B, 7, " #f7 ", %0, %1, %2" \
+                     : "=r"(r_), "+r"(p)                    \
+                     : "r"(step)                            \
+                     : "memory");                           \
+    r_;                                                     \
   })
-#define GAP8_XPULP_LOAD_REG(f7, p, offset)                                               \
-  ({                                                                                     \
-    uint32_t r_;                                                                         \
-    __asm__ volatile(".insn r 0x03, 7, " #f7 ", %0, %1, %2"                              \
-                     : "=r"(r_)                                                          \
-                     : "r"(p), "r"(offset)                                               \
-                     : "memory");                                                        \
-    r_;                                                                                  \
+#define GAP8_XPULP_LOAD_REG(f7, p, offset)                  \
+  ({                                                        \
+    uint32_t r_;                                            \
+    __asm__ volatile(".insn r 0x03, 7, " #f7 ", %0, %1, %2" \
+                     : "=r"(r_)                             \
+                     : "r"(p), "r"(offset)                  \
+                     : "memory");                           \
+    r_;                                                     \
   })
 /* p.sb/p.sh/p.sw (widths 0, 1, 2): value, imm(rs1!) / rs3(rs1!) / rs3(rs1). */
-#define GAP8_XPULP_STORE_POST_IMM(width, value, p, imm)                                  \
-  __asm__ volatile(".insn s 0x2B, " #width ", %1, %2(%0)"                                \
-                   : "+r"(p)                                                             \
-                   : "r"(value), "i"(imm)                                                \
+#define GAP8_XPULP_STORE_POST_IMM(width, value, p, imm)   \
+  __asm__ volatile(".insn s 0x2B, " #width ", %1, %2(%0)" \
+                   : "+r"(p)                              \
+                   : "r"(value), "i"(imm)                 \
                    : "memory")
-#define GAP8_XPULP_STORE_POST_REG(width, value, p, step)                                 \
-  __asm__ volatile(".insn r 0x2B, " #width " + 4, 0, %2, %0, %1"                         \
-                   : "+r"(p)                                                             \
-                   : "r"(value), "r"(step)                                               \
+#define GAP8_XPULP_STORE_POST_REG(width, value, p, step)         \
+  __asm__ volatile(".insn r 0x2B, " #width " + 4, 0, %2, %0, %1" \
+                   : "+r"(p)                                     \
+                   : "r"(value), "r"(step)                       \
                    : "memory")
-#define GAP8_XPULP_STORE_REG(width, value, p, offset)                                    \
-  __asm__ volatile(".insn r 0x23, " #width " + 4, 0, %2, %0, %1"                         \
-                   :                                                                     \
-                   : "r"(p), "r"(value), "r"(offset)                                     \
+#define GAP8_XPULP_STORE_REG(width, value, p, offset)            \
+  __asm__ volatile(".insn r 0x23, " #width " + 4, 0, %2, %0, %1" \
+                   :                                             \
+                   : "r"(p), "r"(value), "r"(offset)             \
                    : "memory")
 
 /* p.beqimm / p.bneimm are branches: use them in asm blocks, as text; imm5 is the immediate's
  * 5-bit pattern as a literal 0..31 (31 = -1), it sits in the rs2 field. */
-#define GAP8_ASM_P_BEQIMM(rs1, imm5, label) \
-  ".insn sb 0x63, 2, " rs1 ", x" imm5 ", " label "\n\t"
-#define GAP8_ASM_P_BNEIMM(rs1, imm5, label) \
-  ".insn sb 0x63, 3, " rs1 ", x" imm5 ", " label "\n\t"
+#define GAP8_ASM_P_BEQIMM(rs1, imm5, label) ".insn sb 0x63, 2, " rs1 ", x" imm5 ", " label "\n\t"
+#define GAP8_ASM_P_BNEIMM(rs1, imm5, label) ".insn sb 0x63, 3, " rs1 ", x" imm5 ", " label "\n\t"
 
 /* The same instructions as assembler text, for code that must be a single asm block: the body
  * of a hardware loop, where the compiler must not place code of its own. Operands are strings
@@ -355,9 +352,10 @@ GAP8_LOAD_POST(gap8_p_lw_post, uint32_t, 2)
  * GAP8_XPULP_FORM_*), e.g. GAP8_ASM_PV("0x00", "1", "%[r]", "%[a]", "%[b]") = pv.add.b; the
  * .sci form takes the 6-bit immediate as a literal, folded into the I-type immediate by the
  * assembler, e.g. GAP8_ASM_PV_SCI("0x10", "7", "%[r]", "%[a]", "1") = pv.srl.sci.b r, a, 1. */
-#define GAP8_ASM_PV(f6, f3, rd, a, b) ".insn r 0x57, " f3 ", (" f6 ") << 1, " rd ", " a ", " b "\n\t"
+#define GAP8_ASM_PV(f6, f3, rd, a, b) \
+  ".insn r 0x57, " f3 ", (" f6 ") << 1, " rd ", " a ", " b "\n\t"
 /* (GAS gives | & ^ one precedence, below << and >>: every term is parenthesised.) */
-#define GAP8_ASM_PV_SCI(f6, f3, rd, a, imm)                                                  \
+#define GAP8_ASM_PV_SCI(f6, f3, rd, a, imm)                                                    \
   ".insn i 0x57, " f3 ", " rd ", " a ", (((((" f6 ") << 6) | (((" imm ") & 1) << 5) | (((" imm \
   ") >> 1) & 31)) ^ 0x800) - 0x800)\n\t"
 /* rd = dot(a, b's low byte in every lane) */

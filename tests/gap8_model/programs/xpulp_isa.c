@@ -166,19 +166,19 @@ static void memory(void) {
   check(GAP8_XPULP_LOAD_POST_IMM(5, p, 1), 0x05B4u);     /* p.lhu at buffer + 3 */
   check((uint32_t)(p - buffer), 4u);
   const uint32_t two = 2;
-  check(GAP8_XPULP_LOAD_POST_REG(0x20, p, two), 0x05u);       /* p.lbu rd, rs2(rs1!) */
-  check(GAP8_XPULP_LOAD_POST_REG(0x28, p, two), 0x3827u);     /* p.lhu */
+  check(GAP8_XPULP_LOAD_POST_REG(0x20, p, two), 0x05u);   /* p.lbu rd, rs2(rs1!) */
+  check(GAP8_XPULP_LOAD_POST_REG(0x28, p, two), 0x3827u); /* p.lhu */
   check((uint32_t)(p - buffer), 8u);
   check(GAP8_XPULP_LOAD_REG(0x08, buffer, two), 0xFFFFB4A3u); /* p.lh rd, rs2(rs1) */
   check(GAP8_XPULP_LOAD_REG(0x10, buffer, 4u), 0x38271605u);  /* p.lw */
   check(GAP8_XPULP_LOAD_REG(0x00, buffer, 0u), 0xFFFFFF81u);  /* p.lb */
   uint8_t* q = buffer + 8;
-  GAP8_XPULP_STORE_POST_IMM(0, 0xAAu, q, 1);       /* p.sb */
-  GAP8_XPULP_STORE_POST_IMM(1, 0xBBCCu, q, 2);     /* p.sh at + 9 */
-  GAP8_XPULP_STORE_POST_REG(0, 0xDDu, q, two);     /* p.sb rs2, rs3(rs1!) at + 11 */
+  GAP8_XPULP_STORE_POST_IMM(0, 0xAAu, q, 1);   /* p.sb */
+  GAP8_XPULP_STORE_POST_IMM(1, 0xBBCCu, q, 2); /* p.sh at + 9 */
+  GAP8_XPULP_STORE_POST_REG(0, 0xDDu, q, two); /* p.sb rs2, rs3(rs1!) at + 11 */
   check((uint32_t)(q - buffer), 13u);
-  GAP8_XPULP_STORE_REG(0, 0xEEu, buffer, 13u);     /* p.sb rs2, rs3(rs1) */
-  GAP8_XPULP_STORE_REG(1, 0x1122u, buffer, 14u);   /* p.sh */
+  GAP8_XPULP_STORE_REG(0, 0xEEu, buffer, 13u);   /* p.sb rs2, rs3(rs1) */
+  GAP8_XPULP_STORE_REG(1, 0x1122u, buffer, 14u); /* p.sh */
   check(*(const uint32_t*)(buffer + 8), 0xDDBBCCAAu);
   check(*(const uint32_t*)(buffer + 12), 0x1122EE00u | buffer[12]);
   GAP8_XPULP_STORE_REG(2, 0x01020304u, buffer, 12u); /* p.sw */
@@ -190,11 +190,12 @@ static void memory(void) {
 static void asm_text(void) {
   const uint32_t a = 0x8F75F8E9u, b = 0xDD666F70u;
   uint32_t r, t;
-  __asm__ volatile("and %[r], %[a], %[b]\n\t"
-                   "xor %[t], %[a], %[b]\n\t" GAP8_ASM_PV_SCI("0x10", "7", "%[t]", "%[t]", "1")
-                       GAP8_ASM_PV("0x00", "1", "%[r]", "%[r]", "%[t]")
-                   : [r] "=&r"(r), [t] "=&r"(t)
-                   : [a] "r"(a), [b] "r"(b));
+  __asm__ volatile(
+      "and %[r], %[a], %[b]\n\t"
+      "xor %[t], %[a], %[b]\n\t" GAP8_ASM_PV_SCI("0x10", "7", "%[t]", "%[t]", "1")
+          GAP8_ASM_PV("0x00", "1", "%[r]", "%[r]", "%[t]")
+      : [r] "=&r"(r), [t] "=&r"(t)
+      : [a] "r"(a), [b] "r"(b));
   check(r, 0xB66DB3ACu); /* the 9-bit floor average: what pv.avgu.b does not compute */
   check(GAP8_XPULP_PV_OP_SCI(SRA, SCI_H, 0x80000010u, 0x3F), 0xFFFF0000u); /* 63 & 15 = 15 */
 }
