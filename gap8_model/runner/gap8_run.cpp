@@ -73,6 +73,8 @@ int FaultStatus(gap8::FaultKind kind) {
       return 5;
     case gap8::FaultKind::kDeadlock:
       return 6;
+    case gap8::FaultKind::kHardwareLoop:
+      return 7;
   }
   return 4;
 }

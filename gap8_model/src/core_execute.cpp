@@ -7,15 +7,41 @@
 namespace gap8 {
 namespace {
 
-// pv.*.sc.b: operand b is rs2's low byte in every lane.
-uint32_t SimdOperandB(const Decoded& d, uint32_t rs2_value) {
-  const uint32_t scalar_mask = 0u - (d.scalar != 0);  // a select, not a branch
-  return (xpulp::SplatByte(rs2_value) & scalar_mask) | (rs2_value & ~scalar_mask);
+// Operand b of an Xpulp instruction (see Decoded::scalar): rs2, rs2's low lane replicated
+// (.sc) or the immediate the decoder prepared (.sci, immediate scalar forms).
+uint32_t OperandB(const Decoded& d, uint32_t rs2_value) {
+  if (d.scalar == 0) return rs2_value;
+  if (d.scalar == 2) return static_cast<uint32_t>(d.imm);
+  return d.width ? xpulp::SplatHalf(rs2_value) : xpulp::SplatByte(rs2_value);
 }
+
+// p.beqimm / p.bneimm: the 5-bit signed immediate kept in the rs2 field.
+int32_t BranchImm5(const Decoded& d) { return static_cast<int8_t>(d.rs2 << 3) >> 3; }
 
 }  // namespace
 
+// Hardware-loop rules, in the words of the RI5CY user manual (pulp-platform/riscv
+// doc/user_manual.doc, 2018, chapter "PULP Hardware Loop Extensions" and the "Hardware Loops"
+// table): "the minimum loop size is two instructions and the last instruction cannot be any
+// jump or branch instruction"; "A hardware loop is subject to the following constraints:
+// Minimum of 2 instructions in the loop body. Loop counter has to be bigger than 0, since the
+// loop body is always entered at least once." The hardware raises no exception for these; the
+// model stops the run with a kHardwareLoop fault naming the rule (and, as every fault, the pc).
+// Nothing else is checked: that manual documents no alignment rule and does not forbid a
+// branch out of the body (CV32E40P's later manual adds such rules; they are not RI5CY's).
+[[gnu::cold, gnu::noinline]] void Core::RaiseHwLoop(const char* rule) const {
+  Raise(FaultKind::kHardwareLoop, std::string(rule) + " (RI5CY manual, hardware loops)");
+}
+
+// True when the instruction at pc is the last one of an active hardware loop.
+bool Core::AtActiveLoopEnd() const {
+  return (loop_count_[0] != 0 && pc_ == loop_end_[0]) ||
+         (loop_count_[1] != 0 && pc_ == loop_end_[1]);
+}
+
 uint32_t Core::ExecuteBranch(const Decoded& d, bool taken) {
+  if (loops_armed_ && AtActiveLoopEnd())
+    RaiseHwLoop("the last instruction of a hardware loop must not be a branch");
   ++events_[GAP8_EVT_BRANCH];
   if (!taken) {
     pc_ = NextSequentialPc(pc_ + d.size);
@@ -31,6 +57,8 @@ uint32_t Core::NextSequentialPc(uint32_t next) {
   if (!loops_armed_) return next;
   for (int l = 0; l < 2; ++l) {  // loop 0 is the inner loop: it has priority
     if (loop_count_[l] != 0 && pc_ == loop_end_[l]) {
+      if (loop_start_[l] == loop_end_[l])
+        RaiseHwLoop("a hardware loop body must have at least 2 instructions");
       if (--loop_count_[l] != 0) return loop_start_[l];
     }
   }
@@ -118,6 +146,8 @@ uint32_t Core::Execute(const Decoded& d) {
       break;
     case Op::kJal:
     case Op::kJalr: {
+      if (loops_armed_ && AtActiveLoopEnd())
+        RaiseHwLoop("the last instruction of a hardware loop must not be a jump");
       ++events_[GAP8_EVT_JUMP];
       const uint32_t target = d.op == Op::kJal ? pc_ + imm : (a + imm) & ~1u;
       regs_[d.rd] = pc_ + d.size;
@@ -138,6 +168,7 @@ uint32_t Core::Execute(const Decoded& d) {
     case Op::kBgeu:
       return ExecuteBranch(d, a >= b);
     case Op::kLoad:
+    case Op::kElw:
     case Op::kStore:
     case Op::kLoadPostImm:
     case Op::kLoadRegReg:
@@ -163,53 +194,62 @@ uint32_t Core::Execute(const Decoded& d) {
     case Op::kLpSetupi:
       return ExecuteHwLoopSetup(d);
     // Xpulp arithmetic sits in this switch too: one dispatch per instruction, not two.
+    case Op::kBeqImm:
+      return ExecuteBranch(d, static_cast<int32_t>(a) == BranchImm5(d));
+    case Op::kBneImm:
+      return ExecuteBranch(d, static_cast<int32_t>(a) != BranchImm5(d));
+    // The Xpulp operations the kernels use most sit in this switch too (one dispatch per
+    // instruction, not two); the rest of PULPv2 goes through EvaluateXpulp.
     case Op::kPAbs:
-      result = xpulp::Abs(a);
+      result = xpulp::AbsW(a);
       break;
     case Op::kPMin:
-      result = xpulp::Min(a, b);
+      result = xpulp::MinW(a, b);
       break;
     case Op::kPMinu:
-      result = xpulp::Minu(a, b);
+      result = xpulp::MinuW(a, b);
       break;
     case Op::kPMax:
-      result = xpulp::Max(a, b);
+      result = xpulp::MaxW(a, b);
       break;
     case Op::kPMaxu:
-      result = xpulp::Maxu(a, b);
+      result = xpulp::MaxuW(a, b);
       break;
     case Op::kPvAddB:
-      result = xpulp::AddB(a, SimdOperandB(d, b));
+      result = xpulp::Add<uint8_t>(a, OperandB(d, b));
       break;
     case Op::kPvSubB:
-      result = xpulp::SubB(a, SimdOperandB(d, b));
+      result = xpulp::Sub<uint8_t>(a, OperandB(d, b));
       break;
     case Op::kPvAvguB:
-      result = xpulp::AvguB(a, SimdOperandB(d, b));
+      result = xpulp::Avg<uint8_t>(a, OperandB(d, b));
       break;
     case Op::kPvMinuB:
-      result = xpulp::MinuB(a, SimdOperandB(d, b));
+      result = xpulp::Min<uint8_t>(a, OperandB(d, b));
       break;
     case Op::kPvMaxuB:
-      result = xpulp::MaxuB(a, SimdOperandB(d, b));
+      result = xpulp::Max<uint8_t>(a, OperandB(d, b));
       break;
     case Op::kPvAbsB:
-      result = xpulp::AbsB(a);
+      result = xpulp::Abs<int8_t>(a);
       break;
     case Op::kPvDotupB:
-      result = xpulp::DotupB(a, SimdOperandB(d, b));
+      result = xpulp::Dot<uint8_t, uint8_t>(a, OperandB(d, b));
       break;
     case Op::kPvDotuspB:
-      result = xpulp::DotuspB(a, SimdOperandB(d, b));
+      result = xpulp::Dot<uint8_t, int8_t>(a, OperandB(d, b));
       break;
     case Op::kPvSdotupB:
-      result = xpulp::SdotupB(regs_[d.rd], a, SimdOperandB(d, b));
+      result = regs_[d.rd] + xpulp::Dot<uint8_t, uint8_t>(a, OperandB(d, b));
       break;
     case Op::kPvSdotuspB:
-      result = xpulp::SdotuspB(regs_[d.rd], a, SimdOperandB(d, b));
+      result = regs_[d.rd] + xpulp::Dot<uint8_t, int8_t>(a, OperandB(d, b));
       break;
-    default:  // kIllegal, kUndecoded
-      Raise(FaultKind::kIllegalInstruction, "illegal instruction");
+    default:
+      if (d.op < Op::kXpulpEvaluated)  // kIllegal, kUndecoded
+        Raise(FaultKind::kIllegalInstruction, "illegal instruction");
+      result = EvaluateXpulp(d, a, OperandB(d, b), regs_[d.rd]);
+      break;
   }
   regs_[d.rd] = result;
   regs_[0] = 0;
@@ -244,6 +284,9 @@ uint32_t Core::ExecuteHwLoopSetup(const Decoded& d) {
       loop_end_[l] = pc_ + (static_cast<uint32_t>(d.rs1) << 1);
       break;
   }
+  const bool sets_count = d.op == Op::kLpCount || d.op == Op::kLpCounti || d.op == Op::kLpSetup ||
+                          d.op == Op::kLpSetupi;
+  if (sets_count && loop_count_[l] == 0) RaiseHwLoop("a hardware loop count must be bigger than 0");
   loops_armed_ = loop_count_[0] != 0 || loop_count_[1] != 0;
   pc_ += d.size;
   return timing::kAlu;

@@ -1,9 +1,17 @@
-// Decoder for 32-bit RV32IM and the PULPv2 (Xpulp) subset the model implements.
+// Decoder for 32-bit RV32IM and PULPv2 (Xpulp) loads and stores; the rest of PULPv2 is in
+// decode_xpulp.cpp.
 #include "decode_compressed.h"
 #include "decode_fields.h"
 #include "gap8/decoded.h"
 
 namespace gap8 {
+
+Decoded DecodeXpulpSimd(uint32_t w);
+Decoded DecodeXpulpAlu(uint32_t w);
+Decoded DecodeXpulpMac(uint32_t w);
+Decoded DecodeBranchImm(uint32_t w, int32_t offset);
+Decoded DecodeHwLoop(uint32_t w);
+
 namespace {
 
 int32_t ImmI(uint32_t w) { return SignExtend(Bits(w, 31, 20), 12); }
@@ -89,15 +97,7 @@ Decoded DecodeOp(uint32_t w) {
                                    Op::kDiv, Op::kDivu, Op::kRem,    Op::kRemu};
     return Base(w, kOps[f3]);
   }
-  if (f7 == 0x02) {  // PULPv2 p.abs / p.min / p.max family
-    static constexpr Op kOps[8] = {Op::kPAbs, Op::kIllegal, Op::kIllegal, Op::kIllegal,
-                                   Op::kPMin, Op::kPMinu,   Op::kPMax,    Op::kPMaxu};
-    if (kOps[f3] == Op::kIllegal || (f3 == 0 && Bits(w, 24, 20) != 0)) return Illegal(w);
-    Decoded d = Base(w, kOps[f3]);
-    if (f3 == 0) d.src_mask = RegBit(d.rs1);
-    return d;
-  }
-  return Illegal(w);
+  return DecodeXpulpAlu(w);  // PULPv2's funct7 values, or illegal
 }
 
 Decoded DecodeLoad(uint32_t w) {
@@ -107,6 +107,13 @@ Decoded DecodeLoad(uint32_t w) {
     if (width < 0) return Illegal(w);
     Decoded d = Base(w, Op::kLoadRegReg);
     d.width = width;
+    return d;
+  }
+  if (f3 == 6) {  // p.elw rd, imm(rs1) [GVSOC p_elw_exec: "a regular load whose park puts the
+                  // whole core to sleep until the event unit answers"]: the model's blocking
+                  // peripheral reads already sleep, so it is lw with its own op
+    Decoded d = WithImm(Base(w, Op::kElw), ImmI(w), false);
+    d.width = 2;
     return d;
   }
   if (!ValidLoadWidth(f3)) return Illegal(w);
@@ -153,7 +160,9 @@ Decoded DecodeStore(uint32_t w, bool post) {
 Decoded DecodeBranch(uint32_t w) {
   static constexpr Op kOps[8] = {Op::kBeq, Op::kBne, Op::kIllegal, Op::kIllegal,
                                  Op::kBlt, Op::kBge, Op::kBltu,    Op::kBgeu};
-  Op op = kOps[Bits(w, 14, 12)];
+  const uint32_t f3 = Bits(w, 14, 12);
+  if (f3 == 2 || f3 == 3) return DecodeBranchImm(w, ImmB(w));  // p.beqimm, p.bneimm
+  Op op = kOps[f3];
   if (op == Op::kIllegal) return Illegal(w);
   Decoded d = WithImm(Base(w, op), ImmB(w), true);
   d.rd = 0;
@@ -169,13 +178,6 @@ Decoded DecodeSystem(uint32_t w) {
   }
   return Illegal(w);
 }
-
-}  // namespace
-
-Decoded DecodeXpulpSimd(uint32_t w);
-Decoded DecodeHwLoop(uint32_t w);
-
-namespace {
 
 Decoded DecodeFields(uint32_t bits) {
   if (IsCompressed(bits & 0xFFFFu)) return DecodeCompressed(bits & 0xFFFFu);
@@ -215,6 +217,8 @@ Decoded DecodeFields(uint32_t bits) {
       return DecodeSystem(w);
     case 0x57:
       return DecodeXpulpSimd(w);
+    case 0x5B:
+      return DecodeXpulpMac(w);
     case 0x7B:
       return DecodeHwLoop(w);
     default:
@@ -222,12 +226,12 @@ Decoded DecodeFields(uint32_t bits) {
   }
 }
 
-
 // The access facts of a load or store (see Decoded::access): what TcdmBankBit and ExecuteMemory
 // need, without a switch on op per instruction.
 void AddAccessFacts(Decoded& d) {
   switch (d.op) {
     case Op::kLoad:
+    case Op::kElw:
       d.access = kAccessLoad | kAccessImmOffset;
       break;
     case Op::kStore:

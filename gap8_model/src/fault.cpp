@@ -25,6 +25,8 @@ const char* FaultKindName(FaultKind kind) {
       return "cycle budget exceeded";
     case FaultKind::kDeadlock:
       return "deadlock";
+    case FaultKind::kHardwareLoop:
+      return "hardware loop rule violated";
   }
   return "fault";
 }

@@ -25,6 +25,14 @@ TEST_CASE("illegal instruction") {
   CHECK(f.what == "illegal instruction");
 }
 
+TEST_CASE("hardware loop whose last instruction is a branch") {
+  const gap8::Fault f = ExpectFault("fault_hwloop", OnCores(1), gap8::FaultKind::kHardwareLoop);
+  CHECK((f.insn & 0x7F) == 0x63);  // the branch itself
+  CHECK(f.what ==
+        "the last instruction of a hardware loop must not be a branch (RI5CY manual, hardware "
+        "loops)");
+}
+
 TEST_CASE("load from unmapped memory") {
   const gap8::Fault f = ExpectFault("fault_unmapped", OnCores(2), gap8::FaultKind::kMemory);
   CHECK(f.what == "load of 4 bytes from unmapped address 0x30000000");

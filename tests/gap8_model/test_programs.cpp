@@ -45,6 +45,13 @@ TEST_CASE("Xpulp .insn wrappers run as the intended instructions") {
   REQUIRE(run.ok());
 }
 
+TEST_CASE("every PULPv2 instruction beyond the kernels' subset, through .insn") {
+  ProgramRun run = RunProgram("xpulp_isa", OnCores(1));
+  INFO(run.Describe());
+  REQUIRE(run.ok());
+  CHECK(run.output.rfind("xpulp isa ok: ", 0) == 0);
+}
+
 TEST_CASE("hardware loops and post-increment loads") {
   ProgramRun run = RunProgram("hwloop", OnCores(1));
   INFO(run.Describe());

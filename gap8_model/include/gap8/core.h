@@ -1,4 +1,4 @@
-// One RI5CY-class cluster core: RV32IMC plus the Xpulp subset, with the pipeline hazards and
+// One RI5CY-class cluster core: RV32IMC plus PULPv2 (Xpulp), with the pipeline hazards and
 // per-instruction costs of include/gap8/timing.h. The Cluster schedules cores; a Core alone can
 // also be stepped instruction by instruction (the differential test does that).
 #pragma once
@@ -107,6 +107,8 @@ class Core {
   uint32_t ExecuteHwLoopSetup(const Decoded& d);
   uint32_t ExecuteBranch(const Decoded& d, bool taken);
   uint32_t NextSequentialPc(uint32_t next);
+  bool AtActiveLoopEnd() const;
+  [[noreturn]] void RaiseHwLoop(const char* rule) const;
 
   int id_;
   Memory& mem_;

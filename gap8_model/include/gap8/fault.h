@@ -6,7 +6,8 @@
 
 namespace gap8 {
 
-enum class FaultKind { kIllegalInstruction, kMemory, kCycleBudget, kDeadlock };
+// kHardwareLoop: a hardware loop breaks a rule of the RI5CY manual (see Core::ExecuteHwLoopSetup).
+enum class FaultKind { kIllegalInstruction, kMemory, kCycleBudget, kDeadlock, kHardwareLoop };
 
 struct Fault {
   FaultKind kind;

@@ -95,15 +95,16 @@ int main(void) {
   expect("misaligned", PI_PERF_CYCLES, "CYCLES", 2 + 2);
   expect("misaligned", PI_PERF_LD, "LD", 2);
 
-  /* Hardware loop of 4 iterations over one addi: set-up 1 cycle, back edges free. */
+  /* Hardware loop of 4 iterations over two addi: set-up 1 cycle, back edges free. */
   begin();
   __asm__ volatile(START_STOP_PROLOGUE
                    ".option push\n .option norvc\n"
-                   ".insn i 0x7B, 5, x0, x2, 4\n addi a0, a0, 1\n"
+                   ".insn i 0x7B, 5, x0, x4, 4\n addi a0, a0, 1\n addi a0, a0, 1\n"
                    ".option pop\n" STOP ::REGS
                    : "t0", "t1", "a0", "memory");
-  expect("hwloop", PI_PERF_INSTR, "INSTR", 1 + 4 + 1);
-  expect("hwloop", PI_PERF_CYCLES, "CYCLES", 2 + 1 + 4);
+  /* two body instructions: RI5CY's minimum loop size */
+  expect("hwloop", PI_PERF_INSTR, "INSTR", 1 + 4 * 2 + 1);
+  expect("hwloop", PI_PERF_CYCLES, "CYCLES", 2 + 1 + 4 * 2);
   expect("hwloop", PI_PERF_BRANCH, "BRANCH", 0);
 
   /* A disabled event reads 0; a stopped counter keeps its value. */
