@@ -51,9 +51,10 @@ TEST_CASE("a barrier of a one-core team passes") {
   CHECK(run.ok());
 }
 
-TEST_CASE("waiting for a DMA transfer that was never queued is a deadlock") {
+TEST_CASE("waiting for the DMA event with no transfer in flight is a deadlock") {
   const gap8::Fault f = ExpectFault("fault_dma_wait", OnCores(4), gap8::FaultKind::kDeadlock);
-  CHECK(f.what == "waits for DMA transfer 42 that was never queued");
+  CHECK(f.core == 0);
+  CHECK(f.what == "waits for an event (mask 0x00000100) that nothing will raise");
 }
 
 TEST_CASE("a DMA transfer outside L1 is a memory fault at the push") {

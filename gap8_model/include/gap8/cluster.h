@@ -14,6 +14,7 @@
 #include "gap8/core.h"
 #include "gap8/dma.h"
 #include "gap8/fault.h"
+#include "gap8/icache.h"
 #include "gap8/memory.h"
 
 namespace gap8 {
@@ -36,6 +37,7 @@ class Cluster {
   explicit Cluster(ClusterConfig config);
 
   Memory& memory() { return memory_; }
+  const ICache& icache() const { return icache_; }
   Core& core(int i) { return *cores_[i]; }
   int num_cores() const { return static_cast<int>(cores_.size()); }
 
@@ -45,20 +47,20 @@ class Cluster {
 
   // Peripheral port, used by the cores' loads and stores (32-bit aligned words only).
   bool IsPeripheral(uint32_t addr, uint32_t bytes) const;
-  uint32_t PeripheralRead(Core& core, uint32_t addr);
+  // A read's cycles beyond the access itself (an event-unit wait) go to *extra.
+  uint32_t PeripheralRead(Core& core, uint32_t addr, uint32_t* extra);
   void PeripheralWrite(Core& core, uint32_t addr, uint32_t value);
 
  private:
-  enum class Wait : uint8_t { kNone, kDispatch, kBarrier, kDma };
-  struct Dispatch {
-    uint32_t entry, arg;
-  };
+  enum class Wait : uint8_t { kNone, kDispatch, kBarrier, kEvent };
   struct CoreSide {  // event-unit and DMA state private to one core
     Wait wait = Wait::kNone;
-    uint32_t wait_pc = 0, wait_insn = 0, wait_dma_id = 0;
-    std::deque<Dispatch> mailbox;
-    uint32_t arg = 0;
-    DmaCommand dma;
+    uint32_t wait_pc = 0, wait_insn = 0;
+    std::deque<uint32_t> dispatch;  // values pushed to this core, not yet popped
+    uint32_t evt_mask = 0, evt_status = 0;
+    std::array<uint32_t, 4> dma_words{};  // the DMA command being written
+    uint32_t dma_step = 0;
+    uint32_t dma_counter = 0;  // counter this core allocated last (its channel's current one)
   };
 
   void Advance();
@@ -69,17 +71,28 @@ class Cluster {
   using BankRequests = std::array<uint32_t, GAP8_L1_BANKS + 1>;
 
   void IssueCycle(uint32_t ready);
+  // Cycles the core waits for the instruction at its pc: 0 while the prefetch buffer holds it
+  // (the fast path), else the instruction-cache accesses of FetchLines. Counted in IMISS.
+  uint32_t FetchStall(Core& core) {
+    if (core.pc() - core.prefetch_base <= timing::kPrefetchBytes - timing::kOpcodeMaxBytes)
+      return 0;
+    return FetchLines(core);
+  }
+  uint32_t FetchLines(Core& core);
   uint32_t ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests);
   // Round robin: the core after `id` (the pointer a bank's winner leaves behind).
   int NextCore(int id) const { return id + 1 == num_cores() ? 0 : id + 1; }
   void CompleteDma();
+  void LoseBankToDma(Core& core);
   [[noreturn]] void ReportDeadlock();
   void SleepOn(Core& core, Wait reason);
   void WakeCore(Core& core, uint64_t at, uint32_t value);
-  uint32_t EventUnitRead(Core& core, uint32_t addr);
+  uint32_t EventUnitRead(Core& core, uint32_t addr, uint32_t* extra);
+  uint32_t BarrierWait(Core& core, uint32_t* extra);
   void EventUnitWrite(Core& core, uint32_t addr, uint32_t value);
   uint32_t DmaRead(Core& core, uint32_t addr);
   void DmaWrite(Core& core, uint32_t addr, uint32_t value);
+  void DmaCommandWord(Core& core, uint32_t value);
   void PerfWrite(Core& core, uint32_t addr, uint32_t value);
   [[noreturn]] void BadRegister(Core& core, uint32_t addr);
 
@@ -88,9 +101,13 @@ class Cluster {
   std::vector<std::unique_ptr<Core>> cores_;
   std::vector<CoreSide> side_;
   Dma dma_;
-  uint32_t team_size_ = 1;
-  uint32_t fork_arg_ = 0;
-  uint32_t barrier_arrived_ = 0;                    // bit per core
+  ICache icache_;
+  uint32_t all_cores_ = 1;       // bit per core of the cluster
+  uint32_t dispatch_team_ = 1;   // cores receiving dispatch pushes
+  uint32_t barrier_mask_ = 1;    // cores that must arrive at the barrier
+  uint32_t barrier_target_ = 1;  // cores woken when it completes
+  uint32_t barrier_arrived_ = 0;
+  uint32_t dma_allocated_ = 0;                      // bit per DMA counter
   std::array<int, GAP8_L1_BANKS> bank_priority_{};  // round-robin: core served first next time
   bool schedule_changed_ = false;  // a wake-up or DMA push: the solo loop must yield
   bool exited_ = false;
