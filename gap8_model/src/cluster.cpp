@@ -108,30 +108,13 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
       LoseBankToDma(core);
       continue;
     }
-    const uint32_t fetch = FetchStall(core);
-    core.time += core.Execute(d) + fetch;
-    core.event(GAP8_EVT_IMISS) += fetch;
+    if (const uint32_t fetch = FetchStall(core)) [[unlikely]] {
+      core.time += core.Execute(d) + fetch;
+      core.event(GAP8_EVT_IMISS) += fetch;
+      continue;
+    }
+    core.time += core.Execute(d);
   }
-}
-
-// GVSOC's prefetcher (iss prefetcher.hpp): the buffer holds one aligned 16-byte line and the
-// instruction needs the 4 bytes from its pc; outside the buffer it refills with pc's line, and
-// an instruction at a line's last half-word also needs the next line. As in GVSOC
-// (ISS_EXEC_NO_FETCH_COMMON), the wait is added to the instruction's own cycles (and to IMISS,
-// which GVSOC means to count but zeroes first: exec.hpp resets fetch_cycles before adding it).
-uint32_t Cluster::FetchLines(Core& core) {
-  const uint32_t pc = core.pc();
-  uint32_t stall = 0;
-  auto fetch = [&](uint32_t line) {
-    const bool in_l2 = line - GAP8_L2_BASE < GAP8_L2_SIZE;
-    stall += icache_.Access(line, core.time + stall,
-                            in_l2 ? timing::kIcacheRefill : timing::kIcacheRefillFromL1);
-    core.prefetch_base = line;
-  };
-  if (pc - core.prefetch_base >= timing::kPrefetchBytes) fetch(pc & ~(timing::kPrefetchBytes - 1));
-  if (pc - core.prefetch_base > timing::kPrefetchBytes - timing::kOpcodeMaxBytes)
-    fetch(core.prefetch_base + timing::kPrefetchBytes);
-  return stall;
 }
 
 // The cores in `ready` (two or more, all at the same cycle) issue, in id order: hazards first,

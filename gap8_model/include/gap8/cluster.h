@@ -78,7 +78,7 @@ class Cluster {
       return 0;
     return FetchLines(core);
   }
-  uint32_t FetchLines(Core& core);
+  uint32_t FetchLines(Core& core);  // below the class: inline, the host's hot path
   uint32_t ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests);
   // Round robin: the core after `id` (the pointer a bank's winner leaves behind).
   int NextCore(int id) const { return id + 1 == num_cores() ? 0 : id + 1; }
@@ -114,5 +114,25 @@ class Cluster {
   int exit_code_ = 0;
   uint64_t exit_cycle_ = 0;
 };
+
+// GVSOC's prefetcher (iss prefetcher.hpp): the buffer holds one aligned 16-byte line and the
+// instruction needs the 4 bytes from its pc; outside the buffer it refills with pc's line, and
+// an instruction at a line's last half-word also needs the next line. As in GVSOC
+// (ISS_EXEC_NO_FETCH_COMMON), the wait is added to the instruction's own cycles (and to IMISS,
+// which GVSOC means to count but zeroes first: exec.hpp resets fetch_cycles before adding it).
+inline uint32_t Cluster::FetchLines(Core& core) {
+  const uint32_t pc = core.pc();
+  uint32_t stall = 0;
+  auto fetch = [&](uint32_t line) {
+    const bool in_l2 = line - GAP8_L2_BASE < GAP8_L2_SIZE;
+    stall += icache_.Access(line, core.time + stall,
+                            in_l2 ? timing::kIcacheRefill : timing::kIcacheRefillFromL1);
+    core.prefetch_base = line;
+  };
+  if (pc - core.prefetch_base >= timing::kPrefetchBytes) fetch(pc & ~(timing::kPrefetchBytes - 1));
+  if (pc - core.prefetch_base > timing::kPrefetchBytes - timing::kOpcodeMaxBytes)
+    fetch(core.prefetch_base + timing::kPrefetchBytes);
+  return stall;
+}
 
 }  // namespace gap8

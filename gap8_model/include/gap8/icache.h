@@ -21,7 +21,17 @@ class ICache {
   // a hit whose refill is over, the rest of the refill on a hit whose refill is under way, the
   // wait for the refill in progress plus its own refill on a miss. refill_cycles: what one
   // refill costs from where the line lives (timing.h).
-  uint32_t Access(uint32_t line_addr, uint64_t now, uint32_t refill_cycles);
+  uint32_t Access(uint32_t line_addr, uint64_t now, uint32_t refill_cycles) {
+    const uint32_t tag = line_addr / timing::kIcacheLineBytes;
+    const uint32_t set = tag & (timing::kIcacheSets - 1);
+    for (uint32_t way = 0; way < timing::kIcacheWays; ++way) {
+      if (tags_[set][way] == tag) {
+        const uint64_t ready = ready_at_[set][way];
+        return ready > now ? static_cast<uint32_t>(ready - now) : 0;
+      }
+    }
+    return Refill(set, tag, now, refill_cycles);
+  }
 
   uint64_t refills() const { return refills_; }
 
@@ -34,11 +44,13 @@ class ICache {
     return (lfsr_ >> 1) & (timing::kIcacheWays - 1);
   }
 
-  struct Line {
-    uint32_t tag;
-    uint64_t ready_at;  // cycle its refill completes
-  };
-  std::array<std::array<Line, timing::kIcacheWays>, timing::kIcacheSets> sets_;
+  // A miss: the host's slow path (inline above is only the hit test, run every few
+  // instructions).
+  uint32_t Refill(uint32_t set, uint32_t tag, uint64_t now, uint32_t refill_cycles);
+
+  // Per set and way: the line's tag, and the cycle its refill completes.
+  std::array<std::array<uint32_t, timing::kIcacheWays>, timing::kIcacheSets> tags_;
+  std::array<std::array<uint64_t, timing::kIcacheWays>, timing::kIcacheSets> ready_at_;
   uint8_t lfsr_ = 0;
   uint64_t refill_done_ = 0;  // cycle the refill in progress (if any) completes
   uint64_t refills_ = 0;

@@ -1,15 +1,15 @@
 /* Exact costs of the cluster's timing rules, measured with the counters over hand-written
  * sequences (docs/gap8-model.md derives each expected value). Every sequence runs three times
  * and the last pass is kept, so its code is in the instruction cache, except the icache one,
- * which measures the cold first pass. The host picks the sequence in timing_mode and reads results[]:
- * CYCLES, ACTIVE_CYCLES, INSTR, IMISS of core 0 over the sequence. */
+ * which measures the cold first pass. The host picks the sequence in timing_mode and reads
+ * results[]: CYCLES, ACTIVE_CYCLES, INSTR, IMISS of core 0 over the sequence. */
 #include "pmsis.h"
 
 volatile uint32_t timing_mode = 99; /* in .data: set by the host */
-volatile uint32_t results[4];
+volatile uint32_t results[5];
 
 static uint8_t l2_src[1024];
-static uint8_t l1_dst[1024] PI_L1;
+static uint8_t l1_dst[1024] PI_L1 __attribute__((aligned(4)));
 
 /* The fork's entry: returns at once. */
 __asm__(".text\n .balign 16\n .global timing_entry\n timing_entry: ret\n");
@@ -20,6 +20,7 @@ static void record(void) {
   results[1] = pi_perf_read(PI_PERF_ACTIVE_CYCLES);
   results[2] = pi_perf_read(PI_PERF_INSTR);
   results[3] = pi_perf_read(PI_PERF_IMISS);
+  results[4] = pi_perf_read(PI_PERF_TCDM_CONT);
 }
 
 static void begin(void) {
@@ -96,6 +97,28 @@ static void dma_once(void) {
   record();
 }
 
+/* A 64-byte DMA L2 -> L1 pushed at t0+4 writes its first two words (banks of l1_dst[0] and
+ * [4]) at t0+7; the core loads l1_dst[0] from t0+5 to t0+12, so one load meets the DMA. */
+static void dma_bank_once(void) {
+  const uint32_t cmd =
+      64u | GAP8_DMA_CMD_EXT2LOC | GAP8_DMA_CMD_INCR | GAP8_DMA_CMD_EVENT | GAP8_DMA_CMD_BROADCAST;
+  uint32_t counter;
+  begin();
+  __asm__ volatile(
+      "li t0, %[start]\n li t1, %[stop]\n"
+      "sw zero, 0(t0)\n"
+      "lw %[counter], 0(%[dma])\n"
+      "sw %[cmd], 0(%[dma])\n sw %[loc], 0(%[dma])\n sw %[ext], 0(%[dma])\n"
+      ".rept 8\n lw t2, 0(%[loc])\n .endr\n"
+      "sw zero, 0(t1)\n"
+      : [counter] "=&r"(counter)
+      : [start] "i"(GAP8_PERF_START), [stop] "i"(GAP8_PERF_STOP), [dma] "r"(GAP8_DMA_QUEUE),
+        [cmd] "r"(cmd), [loc] "r"(l1_dst), [ext] "r"(l2_src)
+      : "t0", "t1", "t2", "memory");
+  record();
+  __gap8_dma_wait(counter);
+}
+
 int main(void) {
   const uint32_t mask = (1u << pi_cl_cluster_nb_cores()) - 1u;
   /* Three passes: the workers' start-up code, running during the first, refills lines of the
@@ -104,6 +127,7 @@ int main(void) {
     if (timing_mode == 0 && pass == 0) icache_cold();
     if (timing_mode == 1) fork_once(mask);
     if (timing_mode == 2) dma_once();
+    if (timing_mode == 3) dma_bank_once();
   }
-  return timing_mode > 2 ? 3 : 0;
+  return timing_mode > 3 ? 3 : 0;
 }
