@@ -73,6 +73,10 @@ inline uint32_t Core::Load(const Decoded& d, uint32_t addr, uint32_t* cost) {
     uint32_t extra = 0;
     raw = cluster_->PeripheralRead(*this, addr, &extra);
     *cost = timing::kPeriphAccess + extra;
+    if (Cluster::IsExternalPeripheral(addr)) {  // GVSOC's router counts the answer's latency
+      ++events_[GAP8_EVT_LD_EXT];
+      events_[GAP8_EVT_LD_EXT_CYC] += extra;
+    }
   } else {
     RaiseUnmapped("load of ", bytes, " bytes from unmapped address ", addr);
   }
@@ -96,6 +100,7 @@ inline void Core::Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_
   } else if (cluster_ && cluster_->IsPeripheral(addr, bytes)) {
     *cost = timing::kPeriphAccess;
     cluster_->PeripheralWrite(*this, addr, value);
+    events_[GAP8_EVT_ST_EXT] += Cluster::IsExternalPeripheral(addr);
   } else {
     RaiseUnmapped("store of ", bytes, " bytes to unmapped address ", addr);
   }

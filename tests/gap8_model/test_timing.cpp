@@ -24,9 +24,9 @@ TEST_CASE("timing constants are the sources' numbers") {
   CHECK(kL2Latency == 8u);                // soc_gen.py: ll_ico 'l2' mapping latency
   CHECK(kIcacheRefill == 8u + 16u / 4u);  // + a 16-byte line on a 4-byte/cycle router
   CHECK(kIcacheSets * kIcacheWays * kIcacheLineBytes == 4096u);  // gap8_revc.json: 4 KiB
-  CHECK(kWakeUp == 1u + 6u);              // eu_v3: EU_WAKEUP_REQ_LATENCY, core's + 1
-  CHECK(kEuWaitNoSleep == 1u + 6u + 2u);  // + EU_WAKEUP_LATENCY
-  CHECK(kDmaMaxBurst == 256u);            // mchan_v6.json max_burst_length
+  CHECK(kWakeUp == 1u + 6u);                             // eu_v3: EU_WAKEUP_REQ_LATENCY, core's + 1
+  CHECK(kEuWaitLatency + kEuNoSleepLatency == 6u + 2u);  // + EU_WAKEUP_LATENCY
+  CHECK(kDmaMaxBurst == 256u);                           // mchan_v6.json max_burst_length
 }
 
 TEST_CASE("divider: clz(divisor) + 3, negative clz(-d) + 2, zero 35 (GVSOC rv32m, RI5CY)") {

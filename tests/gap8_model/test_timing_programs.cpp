@@ -7,7 +7,7 @@
 namespace {
 
 struct Measured {
-  uint32_t cycles, active, instr, imiss, tcdm_cont;
+  uint32_t cycles, active, instr, imiss, tcdm_cont, ld_ext, st_ext, ld_ext_cyc;
 };
 
 Measured RunTiming(uint32_t mode, int cores, bool contention = true) {
@@ -19,9 +19,9 @@ Measured RunTiming(uint32_t mode, int cores, bool contention = true) {
   ProgramRun run = RunProgram("timing", options);
   INFO(run.Describe());
   REQUIRE(run.ok());
-  uint32_t r[5];
+  uint32_t r[8];
   REQUIRE(run.cluster->memory().Read(run.image.symbols.at("results"), r, sizeof r));
-  return {r[0], r[1], r[2], r[3], r[4]};
+  return {r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]};
 }
 
 }  // namespace
@@ -45,6 +45,10 @@ TEST_CASE("fork + barrier: pulp-os's sequence with eu_v3's latencies, exact cycl
   CHECK(alone.instr == 9u);
   CHECK(alone.cycles == 11u + 1u + 6u + 2u);  // the barrier's event is there: 9 cycles
   CHECK(alone.imiss == 0u);
+  // The event unit is external (PMSIS, GVSOC): 5 stores, 1 load whose 8 cycles of answer count.
+  CHECK(alone.st_ext == 5u);
+  CHECK(alone.ld_ext == 1u);
+  CHECK(alone.ld_ext_cyc == 6u + 2u);
   for (int cores : {2, 4, 8}) {
     INFO("cores " << cores);
     const Measured m = RunTiming(1, cores);
@@ -52,6 +56,8 @@ TEST_CASE("fork + barrier: pulp-os's sequence with eu_v3's latencies, exact cycl
     CHECK(m.cycles == 26u);
     CHECK(m.active == 26u - (19u - 12u));  // asleep from t0+12 to the barrier's event
     CHECK(m.imiss == 0u);
+    CHECK(m.ld_ext == 1u);
+    CHECK(m.ld_ext_cyc == 0u);  // the load slept: GVSOC's router saw no latency
   }
 }
 
@@ -64,6 +70,8 @@ TEST_CASE("DMA 1-D of 1024 bytes: the mchan_v6 schedule plus PMSIS's wait loop, 
   CHECK(m.cycles == 151u);
   CHECK(m.active == 151u - (134u - 13u));
   CHECK(m.imiss == 0u);
+  CHECK(m.ld_ext == 4u);  // counter, status, event wait, status
+  CHECK(m.st_ext == 3u + 1u + 1u + 1u);
 }
 
 // The DMA's TCDM pieces take their banks: the load issued at t0+7 meets the DMA's first piece

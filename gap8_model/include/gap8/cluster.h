@@ -47,6 +47,13 @@ class Cluster {
 
   // Peripheral port, used by the cores' loads and stores (32-bit aligned words only).
   bool IsPeripheral(uint32_t addr, uint32_t bytes) const;
+  // The event unit and the DMA: reached through the cores' pe_ico routers like L2, so counted
+  // in LD_EXT / ST_EXT (PMSIS: "every non-TCDM access is considered external"; GVSOC's
+  // cluster_gen.py gives their mappings id 1, the external counters' id). The control and
+  // counter registers stand for things GAP8 reaches otherwise (CSRs, the host) and are not.
+  static bool IsExternalPeripheral(uint32_t addr) {
+    return addr - GAP8_EU_BASE < 0x100u || addr - GAP8_DMA_QUEUE < 0x100u;
+  }
   // A read's cycles beyond the access itself (an event-unit wait) go to *extra.
   uint32_t PeripheralRead(Core& core, uint32_t addr, uint32_t* extra);
   void PeripheralWrite(Core& core, uint32_t addr, uint32_t value);

@@ -44,10 +44,9 @@ inline constexpr uint32_t kPeriphAccess = 1;
 // after the answer (iss_wrapper.cpp: enqueue_next_instr(1 + wakeup_latency)).
 inline constexpr uint32_t kEuWaitLatency = 6;
 inline constexpr uint32_t kEuNoSleepLatency = 2;
-// First instruction after a wake-up: this many cycles after the waking event.
+// First instruction after a wake-up: this many cycles after the waking event. (A wait whose
+// event is already there costs its load, kPeriphAccess, plus both latencies.)
 inline constexpr uint32_t kWakeUp = 1 + kEuWaitLatency;
-// A wait whose event is already there costs the load plus both latencies.
-inline constexpr uint32_t kEuWaitNoSleep = 1 + kEuWaitLatency + kEuNoSleepLatency;
 
 // ---- Shared instruction cache (GVSOC models/cache/cache_impl.cpp; geometry gap8_revc.json:
 // nb_sets_bits 6, nb_ways_bits 2, line_size_bits 4 = 64 sets x 4 ways x 16 bytes) ----

@@ -6,7 +6,7 @@
 #include "pmsis.h"
 
 volatile uint32_t timing_mode = 99; /* in .data: set by the host */
-volatile uint32_t results[5];
+volatile uint32_t results[8];
 
 static uint8_t l2_src[1024];
 static uint8_t l1_dst[1024] PI_L1 __attribute__((aligned(4)));
@@ -21,6 +21,9 @@ static void record(void) {
   results[2] = pi_perf_read(PI_PERF_INSTR);
   results[3] = pi_perf_read(PI_PERF_IMISS);
   results[4] = pi_perf_read(PI_PERF_TCDM_CONT);
+  results[5] = pi_perf_read(PI_PERF_LD_EXT);
+  results[6] = pi_perf_read(PI_PERF_ST_EXT);
+  results[7] = pi_perf_read(PI_PERF_LD_EXT_CYC);
 }
 
 static void begin(void) {
