@@ -75,6 +75,7 @@ typedef struct {
 static inline uint32_t __gap8_dma_push(uint32_t ext, uint32_t loc, uint32_t size, uint32_t dir,
                                        uint32_t stride, uint32_t length, int is_2d) {
   const uint32_t counter = __gap8_read(GAP8_DMA_QUEUE);
+  if (size > GAP8_DMA_CMD_SIZE_MASK) size = 0; /* does not fit the 16-bit field: refused */
   const uint32_t cmd = (size & GAP8_DMA_CMD_SIZE_MASK) | (dir ? GAP8_DMA_CMD_EXT2LOC : 0u) |
                        GAP8_DMA_CMD_INCR | (is_2d ? GAP8_DMA_CMD_2D : 0u) | GAP8_DMA_CMD_EVENT |
                        GAP8_DMA_CMD_BROADCAST;

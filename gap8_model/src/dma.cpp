@@ -21,7 +21,7 @@ bool InL2(uint32_t addr, uint64_t size) {
 }  // namespace
 
 std::string Dma::Check(const DmaCommand& c) {
-  if (c.size == 0) return "DMA transfer of 0 bytes";
+  if (c.size == 0) return "DMA transfer of 0 bytes (mchan sizes are 1..65535)";
   if (c.dir > 1) return "DMA direction " + std::to_string(c.dir) + " is neither 0 nor 1";
   if (!InL1(c.loc, c.size))
     return "DMA L1 range " + Hex(c.loc) + " + " + std::to_string(c.size) + " bytes is outside L1";
@@ -120,9 +120,14 @@ Dma::Completion Dma::CompleteNext(Memory& memory) {
     done += n;
   }
   --pending_[t.who.counter];
-  if (queue_.empty()) {  // no traffic left: forget the bank map
+  // No core issues before this completion any more: forget the bank map up to it.
+  if (queue_.empty()) {
     banks_.clear();
   } else {
+    const uint64_t drop =
+        std::min<uint64_t>(t.done_at - std::min(t.done_at, banks_base_), banks_.size());
+    banks_.erase(banks_.begin(), banks_.begin() + static_cast<std::ptrdiff_t>(drop));
+    banks_base_ += drop;
     PickNext();
   }
   return t.who;

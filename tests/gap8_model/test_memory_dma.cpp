@@ -8,7 +8,7 @@ TEST_CASE("DMA commands outside L1 or L2 are refused with a reason") {
   CHECK(gap8::Dma::Check(ok).empty());
   gap8::DmaCommand c = ok;
   c.size = 0;
-  CHECK(gap8::Dma::Check(c) == "DMA transfer of 0 bytes");
+  CHECK(gap8::Dma::Check(c) == "DMA transfer of 0 bytes (mchan sizes are 1..65535)");
   c = ok;
   c.loc = GAP8_L1_BASE + GAP8_L1_SIZE - 8;
   CHECK(gap8::Dma::Check(c).find("outside L1") != std::string::npos);

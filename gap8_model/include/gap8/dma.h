@@ -75,7 +75,7 @@ class Dma {
   std::vector<Transfer> queue_;  // transfers not complete, in push order
   size_t next_ = 0;              // index of the one completing first
   LocalStream to_l1_, to_l2_;
-  std::vector<uint16_t> banks_;  // bank mask per cycle from banks_base_
+  std::deque<uint16_t> banks_;  // bank mask per cycle from banks_base_
   uint64_t banks_base_ = 0;
   std::vector<uint32_t> pending_ = std::vector<uint32_t>(16, 0);
 };
