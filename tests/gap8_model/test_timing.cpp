@@ -29,16 +29,22 @@ TEST_CASE("timing constants are the sources' numbers") {
   CHECK(kDmaMaxBurst == 256u);                           // mchan_v6.json max_burst_length
 }
 
-TEST_CASE("divider: clz(divisor) + 3, negative clz(-d) + 2, zero 35 (GVSOC rv32m, RI5CY)") {
+// RI5CY RTL (riscv_alu.sv div_shift, riscv_alu_div.sv: div_shift + 3) and the CV32E40P manual
+// (3..35); the cases where GVSOC's clz(-d) + 2 differs are marked.
+TEST_CASE("divider: the RTL's leading-bit count + 3 (RI5CY riscv_alu_div, CV32E40P manual)") {
   using gap8::timing::Divide;
   CHECK(Divide(1, true) == 34u);
-  CHECK(Divide(0x80000000u, false) == 3u);
-  CHECK(Divide(0x80000000u, true) == 2u);  // -2^31: clz(2^31) + 2
-  CHECK(Divide(static_cast<uint32_t>(-1), true) == 33u);
-  CHECK(Divide(static_cast<uint32_t>(-1), false) == 3u);
-  CHECK(Divide(0, true) == 35u);
-  CHECK(Divide(0, false) == 35u);
+  CHECK(Divide(1, false) == 34u);
   CHECK(Divide(256, false) == 26u);
+  CHECK(Divide(0x80000000u, false) == 3u);  // no leading zero: the manual's minimum
+  CHECK(Divide(0, true) == 35u);            // the manual's maximum
+  CHECK(Divide(0, false) == 35u);
+  CHECK(Divide(static_cast<uint32_t>(-1), false) == 3u);  // unsigned 0xFFFFFFFF
+  CHECK(Divide(static_cast<uint32_t>(-3), true) == 32u);  // 30 leading ones: GVSOC agrees
+  // Negative powers of two: GVSOC gives one cycle less (33, 32, 2).
+  CHECK(Divide(static_cast<uint32_t>(-1), true) == 34u);  // no one in ~d: 31 + 3
+  CHECK(Divide(static_cast<uint32_t>(-2), true) == 33u);  // 31 leading ones
+  CHECK(Divide(0x80000000u, true) == 3u);                 // -2^31: 1 leading one
 }
 
 // mchan_v6: last command word at t; queue move t+1; first burst sent t+2; its pieces from
