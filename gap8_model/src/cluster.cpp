@@ -123,6 +123,7 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
 void Cluster::IssueCycle(uint32_t ready) {
   std::array<const Decoded*, GAP8_MAX_CORES> insn;  // valid for the cores in `issuing`
   BankRequests requests{};                          // per bank: bit per requesting core
+  const uint64_t cycle = cores_[std::countr_zero(ready)]->time;  // before any stall moves it
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
   for (uint32_t m = ready; m != 0; m &= m - 1) {
     const int id = std::countr_zero(m);
@@ -140,8 +141,7 @@ void Cluster::IssueCycle(uint32_t ready) {
     banks |= bank_bit;
   }
   // Banks the DMA takes this cycle: every core requesting one retries (the DMA always wins).
-  if (const uint32_t dma_banks =
-          config_.contention ? dma_.BanksAt(cores_[std::countr_zero(ready)]->time) & banks : 0) {
+  if (const uint32_t dma_banks = config_.contention ? dma_.BanksAt(cycle) & banks : 0) {
     for (uint32_t b = dma_banks; b != 0; b &= b - 1) {
       const int bank = std::countr_zero(b);
       for (uint32_t l = requests[bank]; l != 0; l &= l - 1)
