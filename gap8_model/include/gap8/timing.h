@@ -1,6 +1,6 @@
 // Every cycle cost the model charges, in one place, each with its source. "GVSOC" below is the
 // GAP8 virtual platform shipped in GreenWaves' gap_sdk (github.com/GreenWaves-Technologies/
-// gap_sdk, commit a2302650, directory gvsoc/); "gap_configs" is gap_sdk's utils/gap_configs,
+// gap_sdk, commit a23026507efe, directory gvsoc/); "gap_configs" is gap_sdk's utils/gap_configs,
 // whose generators build the GAP8 platform GVSOC simulates (chips/gap8_revc/gap8_revc.json).
 // docs/gap8-model.md has the same table with the reasoning.
 #pragma once
