@@ -74,13 +74,14 @@ inline constexpr uint32_t kDmaMaxBurst = 256;      // max_burst_length; 2-D burs
 inline constexpr uint32_t kDmaLocalPorts = 2;      // ports writing TCDM (ext -> loc): 0 and 1
 inline constexpr uint32_t kDmaLocalPortBytes = 4;  // each port moves one aligned word a cycle
 
-// div, divu, rem, remu: RI5CY's serial divider (pulp-platform/riscv rtl/riscv_alu.sv: the
+// div, divu, rem, remu: RI5CY's serial divider (rtl/riscv_alu.sv of pulp-platform/riscv, read
+// in its copy AlSaqr-platform/riscv_nn; openhwgroup/cv32e40p's cv32e40p_alu.sv is the same: the
 // counter starts at div_shift = the divisor's leading zeros, or for a negative divisor of a
-// signed op its leading ones minus one, 31 when there is no one to find; rtl/riscv_alu_div.sv:
-// load, div_shift + 1 divide cycles, finish = div_shift + 3). The CV32E40P manual's table gives
-// the same range, 3..35, 35 for a zero divisor. GVSOC (rv32m.hpp) counts clz(-divisor) + 2 for
-// a negative one: one cycle less when -divisor is a power of two (33 for -1, 2 for -2^31, under
-// the manual's minimum); the model follows the RTL.
+// signed op the leading zeros of ~divisor minus one, 31 when there is no one to find;
+// rtl/riscv_alu_div.sv: load, div_shift + 1 divide cycles, finish = div_shift + 3). The CV32E40P
+// manual's table gives the same range, 3..35, 35 for a zero divisor. GVSOC (rv32m.hpp) counts
+// clz(-divisor) + 2 for a negative one: one cycle less when -divisor is a power of two (33 for -1,
+// 2 for -2^31, under the manual's minimum); the model follows the RTL.
 inline uint32_t Divide(uint32_t divisor, bool is_signed) {
   if (divisor == 0) return 32 + 3;
   if (is_signed && static_cast<int32_t>(divisor) < 0) {
