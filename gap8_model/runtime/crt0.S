@@ -29,6 +29,29 @@ _start:
 1:
   j __gap8_worker_loop
 
+/* Cores 1..N-1, as pulp-os's __rt_slave_start / __rt_wait_for_dispatch for GAP8 (gap_sdk
+ * gap8/rtos/pulp/pulp-os/kernel/riscv/pe-eu-v3.S, with lw for p.elw): pop entry and arg from the
+ * dispatch FIFO (sleeping while it is empty), run entry; an entry with bit 0 clear returns to
+ * the barrier that closes a fork, then waits for the next dispatch. */
+  .global __gap8_worker_loop
+__gap8_worker_loop:
+  li s2, GAP8_EU_BASE
+  la s4, __gap8_fork_return
+  la s5, __gap8_wait_for_dispatch
+  j __gap8_wait_for_dispatch
+__gap8_fork_return:
+  lw t0, (GAP8_EU_BARRIER_WAIT - GAP8_EU_BASE)(s2)
+__gap8_wait_for_dispatch:
+  lw t0, (GAP8_EU_DISPATCH_FIFO - GAP8_EU_BASE)(s2)
+  lw a0, (GAP8_EU_DISPATCH_FIFO - GAP8_EU_BASE)(s2)
+  andi t1, t0, 1
+  bne t1, zero, __gap8_other_entry
+  add ra, s4, x0
+  jr t0
+__gap8_other_entry:
+  add ra, s5, x0
+  jr t0
+
 /* Zeroes the words in [a0, a1). */
 __gap8_zero:
   bgeu a0, a1, 2f

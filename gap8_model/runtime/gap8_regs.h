@@ -20,25 +20,36 @@
 #define GAP8_CTRL_NUM_CORES (GAP8_PERIPH_BASE + 0x008u) /* R: cores in this run */
 #define GAP8_CTRL_CORE_ID (GAP8_PERIPH_BASE + 0x00Cu)   /* R: id of the reading core */
 
-/* Event unit: team fork and barrier. */
-#define GAP8_EU_TEAM_SIZE (GAP8_PERIPH_BASE + 0x100u)  /* W: cores in the next team; R: team */
-#define GAP8_EU_FORK_ARG (GAP8_PERIPH_BASE + 0x104u)   /* W: argument for the next dispatch */
-#define GAP8_EU_FORK_ENTRY (GAP8_PERIPH_BASE + 0x108u) /* W: entry; dispatches to cores 1..team-1 \
-                                                        */
-#define GAP8_EU_WAIT_ENTRY (GAP8_PERIPH_BASE + 0x10Cu) /* R: sleeps until dispatched; the entry */
-#define GAP8_EU_WAIT_ARG (GAP8_PERIPH_BASE + 0x110u)   /* R: the argument of that dispatch */
-#define GAP8_EU_BARRIER (GAP8_PERIPH_BASE + 0x114u)    /* R: sleeps until the whole team arrived */
+/* Event unit, with the semantics of GAP8's eu_v3 as GVSOC models it (gap_sdk
+ * gvsoc/gvsoc_gap/models/pulp/event_unit/eu_v3_impl.cpp): one dispatch FIFO, one barrier, and
+ * per core an event mask and status for the DMA event. Addresses are this model's. Reads that
+ * wait (BARRIER_WAIT, DISPATCH_FIFO when empty, EVT_WAIT_CLEAR) put the core to sleep. */
+#define GAP8_EU_BASE (GAP8_PERIPH_BASE + 0x100u)
+#define GAP8_EU_DISPATCH_TEAM (GAP8_EU_BASE + 0x00u)  /* W: cores receiving the next pushes */
+#define GAP8_EU_DISPATCH_FIFO (GAP8_EU_BASE + 0x04u)  /* W: push to the team; R: pop or sleep */
+#define GAP8_EU_BARRIER_MASK (GAP8_EU_BASE + 0x08u)   /* W: cores that must arrive; R: it */
+#define GAP8_EU_BARRIER_TARGET (GAP8_EU_BASE + 0x0Cu) /* W: cores woken when it completes */
+#define GAP8_EU_BARRIER_WAIT (GAP8_EU_BASE + 0x10u)   /* R: arrive, sleep until all arrived */
+#define GAP8_EU_TEAM_SIZE (GAP8_EU_BASE + 0x14u)      /* R: cores in the barrier mask */
+#define GAP8_EU_EVT_MASK_OR (GAP8_EU_BASE + 0x18u)    /* W: enable events (bit per event) */
+#define GAP8_EU_EVT_MASK_AND (GAP8_EU_BASE + 0x1Cu)   /* W: disable events */
+#define GAP8_EU_EVT_WAIT_CLEAR (GAP8_EU_BASE + 0x20u) /* R: sleep until an enabled event; clear */
+#define GAP8_EVT_DMA 8u /* GAP8's ARCHI_CL_EVT_DMA0 (gap8_revc.json: pe irq 8 is dma_0) */
 
-/* Cluster DMA: fill the fields, read PUSH to enqueue (returns the transfer id), write the id to
- * WAIT to sleep until that transfer is complete. */
-#define GAP8_DMA_EXT (GAP8_PERIPH_BASE + 0x200u)    /* L2 address */
-#define GAP8_DMA_LOC (GAP8_PERIPH_BASE + 0x204u)    /* L1 address */
-#define GAP8_DMA_SIZE (GAP8_PERIPH_BASE + 0x208u)   /* total bytes */
-#define GAP8_DMA_DIR (GAP8_PERIPH_BASE + 0x20Cu)    /* 0: L1 -> L2, 1: L2 -> L1 (PMSIS's values) */
-#define GAP8_DMA_STRIDE (GAP8_PERIPH_BASE + 0x210u) /* 2-D: L2 bytes between row starts */
-#define GAP8_DMA_LENGTH (GAP8_PERIPH_BASE + 0x214u) /* 2-D: bytes per row; 0 means 1-D */
-#define GAP8_DMA_PUSH (GAP8_PERIPH_BASE + 0x218u)   /* R: enqueue, returns the id */
-#define GAP8_DMA_WAIT (GAP8_PERIPH_BASE + 0x21Cu)   /* W: id; sleeps until it is done */
+/* Cluster DMA, mchan v6 as PMSIS drives it (gap_sdk gap8/rtos/pulp/hal_pulp/include/hal/dma/
+ * mchan_v6.h): read QUEUE to allocate a counter, write the command words to QUEUE (command,
+ * L1 address, L2 address, and for 2-D stride << 16 | length), read STATUS for the counters with
+ * transfers in flight (bits 0..15), write a counter mask to STATUS to free them. */
+#define GAP8_DMA_QUEUE (GAP8_PERIPH_BASE + 0x200u)
+#define GAP8_DMA_STATUS (GAP8_PERIPH_BASE + 0x204u)
+#define GAP8_DMA_COUNTERS 16u
+#define GAP8_DMA_CMD_SIZE_MASK 0xFFFFu    /* bytes, 16 bits */
+#define GAP8_DMA_CMD_EXT2LOC (1u << 16)   /* PLP_DMA_TYPE_BIT: 1 = L2 -> L1 */
+#define GAP8_DMA_CMD_INCR (1u << 17)      /* PLP_DMA_INCR_BIT */
+#define GAP8_DMA_CMD_2D (1u << 18)        /* PLP_DMA_2D_BIT */
+#define GAP8_DMA_CMD_EVENT (1u << 19)     /* PLP_DMA_ELE_BIT: raise the DMA event */
+#define GAP8_DMA_CMD_BROADCAST (1u << 21) /* PLP_DMA_BLE_BIT: to every core */
+#define GAP8_DMA_2D_FIELD_MASK 0x7FFFu    /* stride and length: 15 bits each */
 
 /* Performance counters, private to the accessing core. */
 #define GAP8_PERF_CONF (GAP8_PERIPH_BASE + 0x300u)  /* W: mask of events (1 << event id) */
@@ -47,7 +58,8 @@
 #define GAP8_PERF_STOP (GAP8_PERIPH_BASE + 0x30Cu)  /* W: stop counting */
 #define GAP8_PERF_VALUE(event) (GAP8_PERIPH_BASE + 0x380u + 4u * (event)) /* R: one counter */
 
-/* Event ids: PMSIS's pi_perf_event_e numbering for GAP8. */
+/* Event ids: PMSIS's pi_perf_event_e numbering for GAP8 (gap_sdk
+ * rtos/pmsis/pmsis_api/include/pmsis/chips/gap8/perf.h: CYCLES is 16, the others 0..15). */
 #define GAP8_EVT_ACTIVE_CYCLES 0
 #define GAP8_EVT_INSTR 1
 #define GAP8_EVT_LD_STALL 2
@@ -64,7 +76,7 @@
 #define GAP8_EVT_LD_EXT_CYC 13
 #define GAP8_EVT_ST_EXT_CYC 14
 #define GAP8_EVT_TCDM_CONT 15
-#define GAP8_EVT_CYCLES 17
-#define GAP8_EVT_COUNT 18
+#define GAP8_EVT_CYCLES 16
+#define GAP8_EVT_COUNT 17
 
 #endif

@@ -1,20 +1,10 @@
-/* The runtime's C part: the worker cores' fork loop, the L1 allocator, a small printf and the
+/* The runtime's C part: the L1 allocator, a small printf and the
  * few libc functions GCC may call on its own (memcpy, memset, memmove, memcmp). */
 #include <stdarg.h>
 
 #include "pmsis.h"
 
 extern char __l1_heap_start[], __l1_heap_end[];
-
-/* Cores 1..N-1: wait for a fork, run it, meet the team at the closing barrier, repeat. */
-void __gap8_worker_loop(void) {
-  for (;;) {
-    void (*entry)(void *) = (void (*)(void *))__gap8_read(GAP8_EU_WAIT_ENTRY);
-    void *arg = (void *)__gap8_read(GAP8_EU_WAIT_ARG);
-    entry(arg);
-    pi_cl_team_barrier();
-  }
-}
 
 static char *l1_next = __l1_heap_start;
 

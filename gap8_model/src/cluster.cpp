@@ -30,8 +30,13 @@ void Cluster::Start(uint32_t entry) {
     cores_[i]->set_pc(entry);
     side_[i] = CoreSide{};
   }
-  team_size_ = static_cast<uint32_t>(num_cores());
+  icache_.Reset();
+  dma_ = Dma{};
+  // As after pulp-os's cluster start-up: every core in the dispatch team and the barrier.
+  all_cores_ = (1u << num_cores()) - 1u;
+  dispatch_team_ = barrier_mask_ = barrier_target_ = all_cores_;
   barrier_arrived_ = 0;
+  dma_allocated_ = 0;
   exited_ = false;
 }
 
@@ -91,11 +96,21 @@ void Cluster::Advance() {
 }
 
 void Cluster::RunSolo(Core& core, uint64_t limit) {
-  schedule_changed_ = false;
+  schedule_changed_ = false;  // a DMA push sets it, so dma_end stays right
+  const uint64_t dma_end = config_.contention ? dma_.BankTrafficEnd() : 0;
   while (core.time < limit && !core.asleep && !exited_ && !schedule_changed_) {
     const Decoded& d = core.Fetch();
-    if (core.TakeHazardStall(d)) {
-      core.time += 1;
+    if (const uint32_t stall = core.TakeHazardStall(d)) {
+      core.time += stall;
+      continue;
+    }
+    if (core.time < dma_end && (core.TcdmBankBit(d) & dma_.BanksAt(core.time))) {
+      LoseBankToDma(core);
+      continue;
+    }
+    if (const uint32_t fetch = FetchStall(core)) [[unlikely]] {
+      core.time += core.Execute(d) + fetch;
+      core.event(GAP8_EVT_IMISS) += fetch;
       continue;
     }
     core.time += core.Execute(d);
@@ -107,14 +122,15 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
 // branches: with eight cores interleaved the host's branch predictor guesses poorly.
 void Cluster::IssueCycle(uint32_t ready) {
   std::array<const Decoded*, GAP8_MAX_CORES> insn;  // valid for the cores in `issuing`
-  BankRequests requests{};  // per bank: bit per requesting core
+  BankRequests requests{};                          // per bank: bit per requesting core
+  const uint64_t cycle = cores_[std::countr_zero(ready)]->time;  // before any stall moves it
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
   for (uint32_t m = ready; m != 0; m &= m - 1) {
     const int id = std::countr_zero(m);
     Core& c = *cores_[id];
     const Decoded& d = c.Fetch();
-    if (c.TakeHazardStall(d)) {
-      c.time += 1;
+    if (const uint32_t stall = c.TakeHazardStall(d)) {
+      c.time += stall;
       continue;
     }
     insn[id] = &d;
@@ -124,6 +140,17 @@ void Cluster::IssueCycle(uint32_t ready) {
     shared_banks |= banks & bank_bit;
     banks |= bank_bit;
   }
+  // Banks the DMA takes this cycle: every core requesting one retries (the DMA always wins).
+  if (const uint32_t dma_banks = config_.contention ? dma_.BanksAt(cycle) & banks : 0) {
+    for (uint32_t b = dma_banks; b != 0; b &= b - 1) {
+      const int bank = std::countr_zero(b);
+      for (uint32_t l = requests[bank]; l != 0; l &= l - 1)
+        LoseBankToDma(*cores_[std::countr_zero(l)]);
+      issuing &= ~requests[bank];
+    }
+    banks &= ~dma_banks;
+    shared_banks &= ~dma_banks;
+  }
   // A bank with one requester: it wins, and the round-robin pointer moves past it.
   for (uint32_t b = banks & ~shared_banks; b != 0; b &= b - 1) {
     const int bank = std::countr_zero(b);
@@ -132,7 +159,9 @@ void Cluster::IssueCycle(uint32_t ready) {
   if (shared_banks != 0) issuing &= ~ArbitrateSharedBanks(shared_banks, requests);
   for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
     Core& c = *cores_[std::countr_zero(m)];
-    c.time += c.Execute(*insn[c.id()]);
+    const uint32_t fetch = FetchStall(c);
+    c.time += c.Execute(*insn[c.id()]) + fetch;
+    c.event(GAP8_EVT_IMISS) += fetch;
   }
 }
 
@@ -149,20 +178,35 @@ uint32_t Cluster::ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests
     const uint32_t losers = mask & ~(1u << winner);
     for (uint32_t l = losers; l != 0; l &= l - 1) {
       Core& loser = *cores_[std::countr_zero(l)];
-      loser.time += 1;  // retries next cycle
-      ++loser.event(GAP8_EVT_TCDM_CONT);
+      loser.time += timing::kTcdmRetry;
+      loser.event(GAP8_EVT_TCDM_CONT) += timing::kTcdmRetry;
     }
     all_losers |= losers;
   }
   return all_losers;
 }
 
+// The transfer's event goes to every core (broadcast, as PMSIS asks) or to the one that queued
+// it (mchan_v6 Mchan_channel::trigger_event); a core waiting for it wakes (eu_v3 check_state).
+// GVSOC's TCDM bank serves one access a cycle, first come first served; this model lets the
+// DMA's pieces come first, so its schedule (dma.cpp) never moves.
+void Cluster::LoseBankToDma(Core& core) {
+  core.time += timing::kTcdmRetry;
+  core.event(GAP8_EVT_TCDM_CONT) += timing::kTcdmRetry;
+}
+
 void Cluster::CompleteDma() {
   const uint64_t at = dma_.NextCompletion();
-  const uint32_t id = dma_.CompleteNext(memory_);
+  const Dma::Completion done = dma_.CompleteNext(memory_);
+  if (!done.event) return;
   for (auto& c : cores_) {
+    if (!done.broadcast && static_cast<uint32_t>(c->id()) != done.core) continue;
     CoreSide& s = side_[c->id()];
-    if (c->asleep && s.wait == Wait::kDma && s.wait_dma_id <= id) WakeCore(*c, at, 0);
+    s.evt_status |= 1u << GAP8_EVT_DMA;
+    if (c->asleep && s.wait == Wait::kEvent && (s.evt_status & s.evt_mask)) {
+      s.evt_status &= ~s.evt_mask;
+      WakeCore(*c, at, 0);
+    }
   }
 }
 
@@ -188,7 +232,7 @@ namespace gap8 {
 // most likely at fault: one in a barrier, else one waiting for DMA, else the lowest asleep.
 void Cluster::ReportDeadlock() {
   int chosen = -1;
-  for (Wait w : {Wait::kBarrier, Wait::kDma, Wait::kDispatch}) {
+  for (Wait w : {Wait::kBarrier, Wait::kEvent, Wait::kDispatch}) {
     for (int i = 0; i < num_cores() && chosen < 0; ++i) {
       if (side_[i].wait == w) chosen = i;
     }
@@ -200,10 +244,10 @@ void Cluster::ReportDeadlock() {
   switch (s.wait) {
     case Wait::kBarrier:
       what = "barrier never completes: " + std::to_string(std::popcount(barrier_arrived_)) +
-             " of " + std::to_string(team_size_) + " team cores arrived";
+             " of " + std::to_string(std::popcount(barrier_mask_)) + " team cores arrived";
       break;
-    case Wait::kDma:
-      what = "waits for DMA transfer " + std::to_string(s.wait_dma_id) + " that was never queued";
+    case Wait::kEvent:
+      what = "waits for an event (mask " + Hex(s.evt_mask) + ") that nothing will raise";
       break;
     default:
       what = "every core is asleep waiting for a dispatch";

@@ -66,12 +66,17 @@ inline uint32_t Core::Load(const Decoded& d, uint32_t addr, uint32_t* cost) {
     *cost = timing::kLoadStore + (misaligned ? timing::kMisaligned : 0);
   } else if (uint8_t* q = mem_.L2Span(addr, bytes)) {
     raw = ReadBytes(q, bytes);
-    *cost = timing::kL2Access + (misaligned ? timing::kMisaligned : 0);
+    *cost = timing::kLoadStore + timing::kL2Latency + (misaligned ? timing::kMisaligned : 0);
     events_[GAP8_EVT_LD_EXT] += misaligned ? 2 : 1;
-    events_[GAP8_EVT_LD_EXT_CYC] += *cost;
+    events_[GAP8_EVT_LD_EXT_CYC] += timing::kL2Latency;  // GVSOC counts the wait
   } else if (cluster_ && cluster_->IsPeripheral(addr, bytes)) {
-    *cost = timing::kPeriphAccess;
-    raw = cluster_->PeripheralRead(*this, addr);
+    uint32_t extra = 0;
+    raw = cluster_->PeripheralRead(*this, addr, &extra);
+    *cost = timing::kPeriphAccess + extra;
+    if (Cluster::IsExternalPeripheral(addr)) {  // GVSOC's router counts the answer's latency
+      ++events_[GAP8_EVT_LD_EXT];
+      events_[GAP8_EVT_LD_EXT_CYC] += extra;
+    }
   } else {
     RaiseUnmapped("load of ", bytes, " bytes from unmapped address ", addr);
   }
@@ -89,12 +94,13 @@ inline void Core::Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_
   } else if (uint8_t* q = mem_.L2Span(addr, bytes)) {
     WriteBytes(q, value, bytes);
     mem_.InvalidateCode(addr, bytes);
-    *cost = timing::kL2Access + (misaligned ? timing::kMisaligned : 0);
+    *cost = timing::kLoadStore + timing::kL2Latency + (misaligned ? timing::kMisaligned : 0);
     events_[GAP8_EVT_ST_EXT] += misaligned ? 2 : 1;
-    events_[GAP8_EVT_ST_EXT_CYC] += *cost;
+    events_[GAP8_EVT_ST_EXT_CYC] += timing::kL2Latency;
   } else if (cluster_ && cluster_->IsPeripheral(addr, bytes)) {
     *cost = timing::kPeriphAccess;
     cluster_->PeripheralWrite(*this, addr, value);
+    events_[GAP8_EVT_ST_EXT] += Cluster::IsExternalPeripheral(addr);
   } else {
     RaiseUnmapped("store of ", bytes, " bytes to unmapped address ", addr);
   }

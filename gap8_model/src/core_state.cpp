@@ -1,4 +1,6 @@
 // Fetch, hazards, faults, wake-up and event totals of a core.
+#include <algorithm>
+
 #include "gap8/core.h"
 #include "gap8/timing.h"
 
@@ -9,23 +11,34 @@ void Core::RaiseFetchFault() const {
               "instruction fetch from unmapped address " + Hex(pc_)};
 }
 
-// The next instruction stalls on the pending result: count the stall and consume the hazard.
-void Core::ConsumeHazardStall() {
-  if (hazard_ == Hazard::kLoad) ++events_[GAP8_EVT_LD_STALL];
-  if (hazard_ == Hazard::kAlu) ++events_[GAP8_EVT_JR_STALL];
+// The next instruction stalls on the pending result: count the stall, consume the hazard and
+// return its cycles.
+uint32_t Core::ConsumeHazardStall() {
+  uint32_t cycles = timing::kMulUseStall;
+  if (hazard_ == Hazard::kLoad) {
+    ++events_[GAP8_EVT_LD_STALL];
+    cycles = timing::kLoadUseStall;
+  }
+  if (hazard_ == Hazard::kAlu) {
+    ++events_[GAP8_EVT_JR_STALL];
+    cycles = timing::kJumpRegStall;
+  }
   ClearHazard();
+  return cycles;
 }
 
 void Core::Raise(FaultKind kind, const std::string& what) const {
   throw Fault{kind, id_, pc_, current_ ? current_->raw : 0u, what};
 }
 
+// Asleep until the event at `at` (clock-gated: not active), then the event unit's answer and
+// the core's restart (timing.h kWakeUp), which GVSOC counts as active cycles.
 void Core::Wake(uint64_t at, uint32_t value) {
-  const uint64_t resume = at + timing::kWakeUp;
-  if (resume > time) {
-    slept += resume - time;
-    time = resume;
+  if (at > time) {
+    slept += at - time;
+    time = at;
   }
+  time = std::max(time, at + timing::kWakeUp);
   if (wake_rd != 0) regs_[wake_rd] = value;
   asleep = false;
   wake_rd = 0;

@@ -59,9 +59,22 @@ TEST_CASE("a barrier of a one-core team passes") {
   CHECK(run.ok());
 }
 
-TEST_CASE("waiting for a DMA transfer that was never queued is a deadlock") {
+TEST_CASE("waiting for the DMA event with no transfer in flight is a deadlock") {
   const gap8::Fault f = ExpectFault("fault_dma_wait", OnCores(4), gap8::FaultKind::kDeadlock);
-  CHECK(f.what == "waits for DMA transfer 42 that was never queued");
+  CHECK(f.core == 0);
+  CHECK(f.what == "waits for an event (mask 0x00000100) that nothing will raise");
+}
+
+TEST_CASE("a 17th DMA counter, and a size beyond mchan's 16 bits, are memory faults") {
+  gap8::Fault f = ExpectFault("fault_dma_counters", OnCores(1), gap8::FaultKind::kMemory);
+  CHECK(f.what == "DMA: all 16 counters are allocated (transfers never freed)");
+  RunOptions big = OnCores(1);
+  big.before_run = [](gap8::Cluster& cluster, const gap8::ElfImage& image) {
+    const uint32_t mode = 1;
+    cluster.memory().Write(image.symbols.at("dma_fault_mode"), &mode, 4);
+  };
+  f = ExpectFault("fault_dma_counters", big, gap8::FaultKind::kMemory);
+  CHECK(f.what == "DMA transfer of 0 bytes (mchan sizes are 1..65535)");
 }
 
 TEST_CASE("a DMA transfer outside L1 is a memory fault at the push") {

@@ -86,9 +86,11 @@ TEST_CASE("TCDM contention: one bank shared by 8 cores stalls, own banks do not"
   CHECK(same.result.cycles > off.result.cycles);
 }
 
-// Exact values recorded with the model before its host-speed work (docs/gap8-model.md, "Host
-// speed"): they pin the bank arbiter, its round-robin pointers and the scheduler, including
-// cycles in which some cores collide on a bank while others access their own.
+// Exact values recorded with the model (first before its host-speed work, docs/gap8-model.md
+// "Host speed"; recorded again after the timing rework of issue 14, which changed the fork, the
+// barrier and instruction fetch): they pin the bank arbiter, its round-robin pointers and the
+// scheduler, including cycles in which some cores collide on a bank while others access their
+// own. They are the model's outputs, not values derived from a source.
 TEST_CASE("TCDM arbitration: exact per-core stalls and cycles of the contention program") {
   struct Expected {
     uint32_t mode;
@@ -97,10 +99,10 @@ TEST_CASE("TCDM arbitration: exact per-core stalls and cycles of the contention 
     std::vector<uint64_t> tcdm_cont;
   };
   const Expected cases[] = {
-      {0, 8, 1711, {401, 398, 400, 402, 404, 406, 408, 410}},
-      {1, 8, 1312, {0, 0, 1, 2, 3, 4, 5, 6}},
-      {2, 8, 1112, {389, 0, 399, 2, 402, 4, 405, 6}},
-      {2, 5, 959, {237, 0, 247, 2, 250}},
+      {0, 8, 1916, {396, 398, 400, 402, 404, 406, 408, 410}},
+      {1, 8, 1549, {0, 0, 0, 0, 0, 0, 0, 0}},
+      {2, 8, 1398, {449, 0, 452, 0, 455, 0, 450, 0}},
+      {2, 5, 1229, {279, 0, 282, 0, 268}},
   };
   for (const Expected& e : cases) {
     RunOptions options = OnCores(e.cores);

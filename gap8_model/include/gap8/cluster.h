@@ -14,6 +14,7 @@
 #include "gap8/core.h"
 #include "gap8/dma.h"
 #include "gap8/fault.h"
+#include "gap8/icache.h"
 #include "gap8/memory.h"
 
 namespace gap8 {
@@ -36,6 +37,7 @@ class Cluster {
   explicit Cluster(ClusterConfig config);
 
   Memory& memory() { return memory_; }
+  const ICache& icache() const { return icache_; }
   Core& core(int i) { return *cores_[i]; }
   int num_cores() const { return static_cast<int>(cores_.size()); }
 
@@ -45,20 +47,27 @@ class Cluster {
 
   // Peripheral port, used by the cores' loads and stores (32-bit aligned words only).
   bool IsPeripheral(uint32_t addr, uint32_t bytes) const;
-  uint32_t PeripheralRead(Core& core, uint32_t addr);
+  // The event unit and the DMA: reached through the cores' pe_ico routers like L2, so counted
+  // in LD_EXT / ST_EXT (PMSIS: "every non-TCDM access is considered external"; GVSOC's
+  // cluster_gen.py gives their mappings id 1, the external counters' id). The control and
+  // counter registers stand for things GAP8 reaches otherwise (CSRs, the host) and are not.
+  static bool IsExternalPeripheral(uint32_t addr) {
+    return addr - GAP8_EU_BASE < 0x100u || addr - GAP8_DMA_QUEUE < 0x100u;
+  }
+  // A read's cycles beyond the access itself (an event-unit wait) go to *extra.
+  uint32_t PeripheralRead(Core& core, uint32_t addr, uint32_t* extra);
   void PeripheralWrite(Core& core, uint32_t addr, uint32_t value);
 
  private:
-  enum class Wait : uint8_t { kNone, kDispatch, kBarrier, kDma };
-  struct Dispatch {
-    uint32_t entry, arg;
-  };
+  enum class Wait : uint8_t { kNone, kDispatch, kBarrier, kEvent };
   struct CoreSide {  // event-unit and DMA state private to one core
     Wait wait = Wait::kNone;
-    uint32_t wait_pc = 0, wait_insn = 0, wait_dma_id = 0;
-    std::deque<Dispatch> mailbox;
-    uint32_t arg = 0;
-    DmaCommand dma;
+    uint32_t wait_pc = 0, wait_insn = 0;
+    std::deque<uint32_t> dispatch;  // values pushed to this core, not yet popped
+    uint32_t evt_mask = 0, evt_status = 0;
+    std::array<uint32_t, 4> dma_words{};  // the DMA command being written
+    uint32_t dma_step = 0;
+    uint32_t dma_counter = 0;  // counter this core allocated last (its channel's current one)
   };
 
   void Advance();
@@ -69,17 +78,28 @@ class Cluster {
   using BankRequests = std::array<uint32_t, GAP8_L1_BANKS + 1>;
 
   void IssueCycle(uint32_t ready);
+  // Cycles the core waits for the instruction at its pc: 0 while the prefetch buffer holds it
+  // (the fast path), else the instruction-cache accesses of FetchLines. Counted in IMISS.
+  uint32_t FetchStall(Core& core) {
+    if (core.pc() - core.prefetch_base <= timing::kPrefetchBytes - timing::kOpcodeMaxBytes)
+      return 0;
+    return FetchLines(core);
+  }
+  uint32_t FetchLines(Core& core);  // below the class: inline, the host's hot path
   uint32_t ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests);
   // Round robin: the core after `id` (the pointer a bank's winner leaves behind).
   int NextCore(int id) const { return id + 1 == num_cores() ? 0 : id + 1; }
   void CompleteDma();
+  void LoseBankToDma(Core& core);
   [[noreturn]] void ReportDeadlock();
   void SleepOn(Core& core, Wait reason);
   void WakeCore(Core& core, uint64_t at, uint32_t value);
-  uint32_t EventUnitRead(Core& core, uint32_t addr);
+  uint32_t EventUnitRead(Core& core, uint32_t addr, uint32_t* extra);
+  uint32_t BarrierWait(Core& core, uint32_t* extra);
   void EventUnitWrite(Core& core, uint32_t addr, uint32_t value);
   uint32_t DmaRead(Core& core, uint32_t addr);
   void DmaWrite(Core& core, uint32_t addr, uint32_t value);
+  void DmaCommandWord(Core& core, uint32_t value);
   void PerfWrite(Core& core, uint32_t addr, uint32_t value);
   [[noreturn]] void BadRegister(Core& core, uint32_t addr);
 
@@ -88,14 +108,38 @@ class Cluster {
   std::vector<std::unique_ptr<Core>> cores_;
   std::vector<CoreSide> side_;
   Dma dma_;
-  uint32_t team_size_ = 1;
-  uint32_t fork_arg_ = 0;
-  uint32_t barrier_arrived_ = 0;                    // bit per core
+  ICache icache_;
+  uint32_t all_cores_ = 1;       // bit per core of the cluster
+  uint32_t dispatch_team_ = 1;   // cores receiving dispatch pushes
+  uint32_t barrier_mask_ = 1;    // cores that must arrive at the barrier
+  uint32_t barrier_target_ = 1;  // cores woken when it completes
+  uint32_t barrier_arrived_ = 0;
+  uint32_t dma_allocated_ = 0;                      // bit per DMA counter
   std::array<int, GAP8_L1_BANKS> bank_priority_{};  // round-robin: core served first next time
   bool schedule_changed_ = false;  // a wake-up or DMA push: the solo loop must yield
   bool exited_ = false;
   int exit_code_ = 0;
   uint64_t exit_cycle_ = 0;
 };
+
+// GVSOC's prefetcher (iss prefetcher.hpp): the buffer holds one aligned 16-byte line and the
+// instruction needs the 4 bytes from its pc; outside the buffer it refills with pc's line, and
+// an instruction at a line's last half-word also needs the next line. As in GVSOC
+// (ISS_EXEC_NO_FETCH_COMMON), the wait is added to the instruction's own cycles (and to IMISS,
+// which GVSOC means to count but zeroes first: exec.hpp resets fetch_cycles before adding it).
+inline uint32_t Cluster::FetchLines(Core& core) {
+  const uint32_t pc = core.pc();
+  uint32_t stall = 0;
+  auto fetch = [&](uint32_t line) {
+    const bool in_l2 = line - GAP8_L2_BASE < GAP8_L2_SIZE;
+    stall += icache_.Access(line, core.time + stall,
+                            in_l2 ? timing::kIcacheRefill : timing::kIcacheRefillFromL1);
+    core.prefetch_base = line;
+  };
+  if (pc - core.prefetch_base >= timing::kPrefetchBytes) fetch(pc & ~(timing::kPrefetchBytes - 1));
+  if (pc - core.prefetch_base > timing::kPrefetchBytes - timing::kOpcodeMaxBytes)
+    fetch(core.prefetch_base + timing::kPrefetchBytes);
+  return stall;
+}
 
 }  // namespace gap8

@@ -34,14 +34,14 @@ class Core {
     if (slot->op == Op::kUndecoded) *slot = Decode(mem_.FetchBits(pc_));
     return *slot;
   }
-  // Before issuing d: true (and the hazard consumed, its counter bumped) when d must wait a
-  // cycle for the previous instruction's result (load-use, mul-use, jump-register).
-  bool TakeHazardStall(const Decoded& d) {
+  // Before issuing d: the cycles d must wait for the previous instruction's result (load-use,
+  // mul-use, jump-register; timing.h), 0 when none. A stall consumes the hazard and bumps its
+  // counter.
+  uint32_t TakeHazardStall(const Decoded& d) {
     // One test decides: a load or mul result read by d, or an ALU result read by a jalr.
     const uint32_t jalr_reads = d.op == Op::kJalr ? d.src_mask : 0u;
-    if (((d.src_mask & data_hazard_mask_) | (jalr_reads & jump_hazard_mask_)) == 0) return false;
-    ConsumeHazardStall();
-    return true;
+    if (((d.src_mask & data_hazard_mask_) | (jalr_reads & jump_hazard_mask_)) == 0) return 0;
+    return ConsumeHazardStall();
   }
   // Bit b set when d accesses TCDM bank b this cycle; 0 when d makes no TCDM access.
   // Branch-free: the cluster calls it for every core in every shared cycle.
@@ -60,7 +60,8 @@ class Core {
   uint64_t time = 0;   // cycle at which the next instruction may issue
   uint64_t slept = 0;  // cycles spent asleep (not active)
   bool asleep = false;
-  uint8_t wake_rd = 0;  // register receiving the value delivered at wake-up
+  uint32_t prefetch_base = ~0u;  // line held by the prefetch buffer (none at start)
+  uint8_t wake_rd = 0;           // register receiving the value delivered at wake-up
   // Called by a blocking peripheral access; the access's load sets wake_rd.
   void Sleep() {
     asleep = true;
@@ -99,7 +100,7 @@ class Core {
   [[noreturn]] void RaiseFetchFault() const;
   [[noreturn]] void RaiseUnmapped(const char* access, uint32_t bytes, const char* where,
                                   uint32_t addr) const;
-  void ConsumeHazardStall();
+  uint32_t ConsumeHazardStall();
   uint32_t Load(const Decoded& d, uint32_t addr, uint32_t* cost);
   void Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost);
   uint32_t ExecuteMemory(const Decoded& d);
