@@ -44,7 +44,7 @@ TEST_CASE("gap8 variants are bit-exact at px4flow-64 on 1 and 8 cores", "[gap8][
 
 TEST_CASE("gap8 variants are bit-exact at px4flow-head on 1 and 8 cores", "[gap8][no-sanitizer]") {
   const Params p = profile("px4flow-head");
-  for (const char* variant : {"original", "local", "global"}) {
+  for (const char* variant : {"original", "local", "global", "fast"}) {
     for (int cores : {1, 8}) {
       INFO(variant << " on " << cores << " cores");
       check_exact(variant, cores, p, 6, 2000 + cores);
