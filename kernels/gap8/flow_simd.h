@@ -83,9 +83,8 @@ static inline uint32_t avg4(uint32_t a, uint32_t b) {
  * neither). The and reads both inputs first, so a load of a or b two instructions earlier does
  * not stall. */
 #define FLOOR_AVG_ASM(d, a, b, t) \
-  "and " t ", " a ", " b "\n\t"   \
-  "xor " d ", " a ", " b "\n\t"   \
-  PV_SRL1_B_ASM(d, d)             \
-  "add " d ", " d ", " t "\n\t"
+  "and " t ", " a ", " b          \
+  "\n\t"                          \
+  "xor " d ", " a ", " b "\n\t" PV_SRL1_B_ASM(d, d) "add " d ", " d ", " t "\n\t"
 
 #endif

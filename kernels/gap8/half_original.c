@@ -7,9 +7,10 @@
 #include "flow_kernel.h"
 #include "flow_simd.h"
 
-const uint32_t variant_planes = 0;
+/* Weak: the fast variant links this file for its half-pixel step and brings its own. */
+__attribute__((weak)) const uint32_t variant_planes = 0;
 
-void variant_prepare(const flow_ctx *c, uint32_t core) {
+__attribute__((weak)) void variant_prepare(const flow_ctx *c, uint32_t core) {
   (void)c;
   (void)core;
 }

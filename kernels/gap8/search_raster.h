@@ -26,9 +26,10 @@ enum { kKeyShift = 6, kKeyScale = 1 << kKeyShift };
 typedef uint32_t (*search_row_fn)(const uint32_t *blk, const uint8_t *row, uint32_t w, uint32_t n);
 
 /* Always inlined, so `row` is a direct call (or inlined) as if written here. */
-static inline __attribute__((always_inline)) uint32_t search_raster(
-    const flow_ctx *c, const uint8_t *blk, uint32_t x, uint32_t y, int *bx, int *by,
-    search_row_fn row_search) {
+static inline __attribute__((always_inline)) uint32_t search_raster(const flow_ctx *c,
+                                                                    const uint8_t *blk, uint32_t x,
+                                                                    uint32_t y, int *bx, int *by,
+                                                                    search_row_fn row_search) {
   const int s = (int)c->search_radius;
   const uint32_t w = c->width;
   uint32_t packed[16];
