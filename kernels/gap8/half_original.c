@@ -7,10 +7,9 @@
 #include "flow_kernel.h"
 #include "flow_simd.h"
 
-/* Weak: the fast variant links this file for its half-pixel step and brings its own. */
-__attribute__((weak)) const uint32_t variant_planes = 0;
+const uint32_t variant_planes = 0;
 
-__attribute__((weak)) void variant_prepare(const flow_ctx *c, uint32_t core) {
+void variant_prepare(const flow_ctx *c, uint32_t core) {
   (void)c;
   (void)core;
 }
