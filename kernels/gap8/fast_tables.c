@@ -60,13 +60,13 @@ static void box_column(const uint8_t *w, uint32_t *out, uint32_t blocks) {
   uint32_t a0, a1;
   /* One step: row y+8's two words, nB += R(y), R(y) := R(y+8), nB -= R(y+8), store nB(y+1). */
   /* clang-format off */
-#define BOX_STEP(k, rk)                                                         \
-  "lw %[a0], 8*64+64*" #k "(%[w])\n\t"                                          \
-  "lw %[a1], 8*64+64*" #k "+4(%[w])\n\t"                                        \
-  "add %[nb], %[nb], " rk "\n\t"                                                \
-  GAP8_ASM_PV_DOTUP_SC_B(rk, "%[a0]", "%[one]")                                 \
-  GAP8_ASM_PV_SDOTUP_SC_B(rk, "%[a1]", "%[one]")                                \
-  "sub %[nb], %[nb], " rk "\n\t"                                                \
+#define BOX_STEP(k, rk)                                                                        \
+  "lw %[a0], 8*64+64*" #k "(%[w])\n\t"                                                         \
+  "lw %[a1], 8*64+64*" #k "+4(%[w])\n\t"                                                       \
+  "add %[nb], %[nb], " rk "\n\t"                                                               \
+  GAP8_ASM_PV_DOTUP_SC_B(rk, "%[a0]", "%[one]")                                                \
+  GAP8_ASM_PV_SDOTUP_SC_B(rk, "%[a1]", "%[one]")                                               \
+  "sub %[nb], %[nb], " rk "\n\t"                                                               \
   "sw %[nb], 256*" #k "(%[pt])\n\t"
   __asm__ volatile(
       GAP8_ASM_HWLOOP_BEGIN

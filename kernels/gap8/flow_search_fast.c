@@ -24,10 +24,10 @@
 
 /* Block row r: next's two words (the second load steps to the next row), two SADs against
  * prev's words lo and hi. The loads' values are used two instructions later at the earliest. */
-#define HELD_ROW(lo, hi)                                \
-  GAP8_ASM_P_LW_POST_IMM("%[v0]", "4", "%[pb]")         \
-  GAP8_ASM_P_LW_POST_REG("%[v1]", "%[rest]", "%[pb]")   \
-  HELD_SAD("%[p" #lo "]", "%[v0]")                      \
+#define HELD_ROW(lo, hi)                                                                       \
+  GAP8_ASM_P_LW_POST_IMM("%[v0]", "4", "%[pb]")                                                \
+  GAP8_ASM_P_LW_POST_REG("%[v1]", "%[rest]", "%[pb]")                                          \
+  HELD_SAD("%[p" #lo "]", "%[v0]")                                                             \
   HELD_SAD("%[p" #hi "]", "%[v1]")
 /* clang-format on */
 
@@ -67,12 +67,12 @@ static uint32_t search_row_held(const uint32_t p[16], const uint8_t *row, uint32
 /* clang-format off */
 /* Block row r of the algebra path: next's two words at immediate offsets (W = 64), acc += 2 *
  * sum(max) against prev's words lo and hi. */
-#define MAX_ROW(r, lo, hi)                                  \
-  "lw %[v0], 64*" #r "(%[pb])\n\t"                         \
-  "lw %[v1], 64*" #r "+4(%[pb])\n\t"                       \
-  GAP8_ASM_PV_MAXU_B("%[v0]", "%[v0]", "%[p" #lo "]")       \
-  GAP8_ASM_PV_SDOTUP_SC_B("%[acc]", "%[v0]", "%[two]")      \
-  GAP8_ASM_PV_MAXU_B("%[v1]", "%[v1]", "%[p" #hi "]")       \
+#define MAX_ROW(r, lo, hi)                                                                     \
+  "lw %[v0], 64*" #r "(%[pb])\n\t"                                                             \
+  "lw %[v1], 64*" #r "+4(%[pb])\n\t"                                                           \
+  GAP8_ASM_PV_MAXU_B("%[v0]", "%[v0]", "%[p" #lo "]")                                          \
+  GAP8_ASM_PV_SDOTUP_SC_B("%[acc]", "%[v0]", "%[two]")                                         \
+  GAP8_ASM_PV_MAXU_B("%[v1]", "%[v1]", "%[p" #hi "]")                                          \
   GAP8_ASM_PV_SDOTUP_SC_B("%[acc]", "%[v1]", "%[two]")
 /* clang-format on */
 
@@ -95,7 +95,7 @@ static uint32_t search_group(const uint32_t p[16], const uint8_t *pb, const uint
       GAP8_ASM_P_LW_POST_IMM("%[acc]", "16", "%[pt]")    /* -B; pt to the next candidate */
       MAX_ROW(0, 0, 1) MAX_ROW(1, 2, 3) MAX_ROW(2, 4, 5) MAX_ROW(3, 6, 7)
       MAX_ROW(4, 8, 9) MAX_ROW(5, 10, 11) MAX_ROW(6, 12, 13) MAX_ROW(7, 14, 15)
-      "slli %[acc], %[acc], 16\n\t"                      /* SAD + A */
+      "slli %[acc], %[acc], 16\n\t"                      /* (SAD + A) << 16 */
       "add %[acc], %[acc], %[pt]\n\t"                    /* | table address (+16) */
       P_MINU_ASM("%[key]", "%[key]", "%[acc]")
       ".Lcand_end%=: addi %[pb], %[pb], 4\n\t"

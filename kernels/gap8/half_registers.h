@@ -36,23 +36,23 @@
  * loaded into m, z, o; on exit h(c, r+1) is in o, h(c-1, r+1) in m, P(c, r+1) in z, and gg, da, db
  * hold row r's values. Every load is used four instructions later at the earliest. */
 /* clang-format off */
-#define REG_ROW(ha, hb, pz, m, z, o)                                \
-  GAP8_ASM_P_LW_POST_REG(R_A, "%[w]", "%[pb]") /* prev, row r */  \
-  GAP8_ASM_P_LW_POST_REG(m, "%[w]", "%[pm]")                         \
-  GAP8_ASM_P_LW_POST_REG(z, "%[w]", "%[p0]")                         \
-  GAP8_ASM_P_LW_POST_REG(o, "%[w]", "%[p1]")                         \
-  REG_SAD("%[acc0]", ha)             /* k0: h(c, r) */              \
-  REG_SAD("%[acc4]", hb)             /* k4: h(c-1, r) */            \
-  REG_SAD("%[acc6]", R_GG)        /* k6: g(c, r-1) */            \
-  REG_SAD("%[acc7]", R_DA)        /* k7: d(c, r-1) */            \
-  REG_SAD("%[acc5]", R_DB)        /* k5: d(c-1, r-1) */          \
-  REG_AVG(o, z, o)                   /* h(c, r+1) */                \
-  REG_AVG(m, m, z)                   /* h(c-1, r+1) */              \
-  REG_AVG(R_DA, ha, o)            /* d(c, r) */                  \
-  REG_AVG(R_DB, hb, m)            /* d(c-1, r) */                \
-  REG_AVG(R_GG, pz, z)            /* g(c, r) */                  \
-  REG_SAD("%[acc1]", R_DA)        /* k1: d(c, r) */              \
-  REG_SAD("%[acc3]", R_DB)        /* k3: d(c-1, r) */            \
+#define REG_ROW(ha, hb, pz, m, z, o)                                                           \
+  GAP8_ASM_P_LW_POST_REG(R_A, "%[w]", "%[pb]") /* prev, row r */                               \
+  GAP8_ASM_P_LW_POST_REG(m, "%[w]", "%[pm]")                                                   \
+  GAP8_ASM_P_LW_POST_REG(z, "%[w]", "%[p0]")                                                   \
+  GAP8_ASM_P_LW_POST_REG(o, "%[w]", "%[p1]")                                                   \
+  REG_SAD("%[acc0]", ha)             /* k0: h(c, r) */                                         \
+  REG_SAD("%[acc4]", hb)             /* k4: h(c-1, r) */                                       \
+  REG_SAD("%[acc6]", R_GG)        /* k6: g(c, r-1) */                                          \
+  REG_SAD("%[acc7]", R_DA)        /* k7: d(c, r-1) */                                          \
+  REG_SAD("%[acc5]", R_DB)        /* k5: d(c-1, r-1) */                                        \
+  REG_AVG(o, z, o)                   /* h(c, r+1) */                                           \
+  REG_AVG(m, m, z)                   /* h(c-1, r+1) */                                         \
+  REG_AVG(R_DA, ha, o)            /* d(c, r) */                                                \
+  REG_AVG(R_DB, hb, m)            /* d(c-1, r) */                                              \
+  REG_AVG(R_GG, pz, z)            /* g(c, r) */                                                \
+  REG_SAD("%[acc1]", R_DA)        /* k1: d(c, r) */                                            \
+  REG_SAD("%[acc3]", R_DB)        /* k3: d(c-1, r) */                                          \
   REG_SAD("%[acc2]", R_GG)        /* k2: g(c, r) */
 
 /* One 4-pixel group: the prologue (rows -1 and 0: 6 loads, 7 averages) leaves h(c, 0) in h0,
@@ -60,27 +60,27 @@
  * rows (the second with the registers' roles swapped back). lp.starti/endi/counti: the body
  * starts 12 bytes after lp.starti, its last instruction is 2 x 56 - 1 instructions later, so
  * 12 + 111 * 4 = 456 bytes after lp.starti, 452 bytes (226 half-words) after lp.endi. */
-#define REG_GROUP                                                                \
-  GAP8_ASM_P_LW_POST_REG(R_Y, "%[w]", "%[p1]")   /* P(c+1, -1) */              \
-  GAP8_ASM_P_LW_POST_REG(R_Z1, "%[w]", "%[p0]")  /* P(c, -1) */                \
-  GAP8_ASM_P_LW_POST_REG(R_X, "%[w]", "%[pm]")   /* P(c-1, -1) */              \
-  GAP8_ASM_P_LW_POST_REG(R_H0, "%[w]", "%[p1]")  /* P(c+1, 0) */               \
-  GAP8_ASM_P_LW_POST_REG(R_Z0, "%[w]", "%[p0]")  /* P(c, 0) */                 \
-  GAP8_ASM_P_LW_POST_REG(R_G0, "%[w]", "%[pm]")  /* P(c-1, 0) */               \
-  REG_AVG(R_Y, R_Z1, R_Y)                 /* h(c, -1) */                \
-  REG_AVG(R_X, R_X, R_Z1)                 /* h(c-1, -1) */              \
-  REG_AVG(R_GG, R_Z1, R_Z0)               /* g(c, -1) */                \
-  REG_AVG(R_H0, R_Z0, R_H0)               /* h(c, 0) */                 \
-  REG_AVG(R_G0, R_G0, R_Z0)               /* h(c-1, 0) */               \
-  REG_AVG(R_DA, R_Y, R_H0)                /* d(c, -1) */                \
-  REG_AVG(R_DB, R_X, R_G0)                /* d(c-1, -1) */              \
-  ".Lstart%=: " GAP8_ASM_LP_STARTI("0", "6") GAP8_ASM_LP_ENDI("0", "226")         \
-  GAP8_ASM_LP_COUNTI("0", "4")                                                    \
-  ".Lbody%=: "                                                                    \
-  REG_ROW(R_H0, R_G0, R_Z0, R_X, R_Z1, R_Y)                    \
-  REG_ROW(R_Y, R_X, R_Z1, R_G0, R_Z0, R_H0)                    \
-  ".Lafter%=:\n\t"                                                                \
-  GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lbody%=", "12")                          \
+#define REG_GROUP                                                                              \
+  GAP8_ASM_P_LW_POST_REG(R_Y, "%[w]", "%[p1]")   /* P(c+1, -1) */                              \
+  GAP8_ASM_P_LW_POST_REG(R_Z1, "%[w]", "%[p0]")  /* P(c, -1) */                                \
+  GAP8_ASM_P_LW_POST_REG(R_X, "%[w]", "%[pm]")   /* P(c-1, -1) */                              \
+  GAP8_ASM_P_LW_POST_REG(R_H0, "%[w]", "%[p1]")  /* P(c+1, 0) */                               \
+  GAP8_ASM_P_LW_POST_REG(R_Z0, "%[w]", "%[p0]")  /* P(c, 0) */                                 \
+  GAP8_ASM_P_LW_POST_REG(R_G0, "%[w]", "%[pm]")  /* P(c-1, 0) */                               \
+  REG_AVG(R_Y, R_Z1, R_Y)                 /* h(c, -1) */                                       \
+  REG_AVG(R_X, R_X, R_Z1)                 /* h(c-1, -1) */                                     \
+  REG_AVG(R_GG, R_Z1, R_Z0)               /* g(c, -1) */                                       \
+  REG_AVG(R_H0, R_Z0, R_H0)               /* h(c, 0) */                                        \
+  REG_AVG(R_G0, R_G0, R_Z0)               /* h(c-1, 0) */                                      \
+  REG_AVG(R_DA, R_Y, R_H0)                /* d(c, -1) */                                       \
+  REG_AVG(R_DB, R_X, R_G0)                /* d(c-1, -1) */                                     \
+  ".Lstart%=: " GAP8_ASM_LP_STARTI("0", "6") GAP8_ASM_LP_ENDI("0", "226")                      \
+  GAP8_ASM_LP_COUNTI("0", "4")                                                                 \
+  ".Lbody%=: "                                                                                 \
+  REG_ROW(R_H0, R_G0, R_Z0, R_X, R_Z1, R_Y)                                                    \
+  REG_ROW(R_Y, R_X, R_Z1, R_G0, R_Z0, R_H0)                                                    \
+  ".Lafter%=:\n\t"                                                                             \
+  GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lbody%=", "12")                                       \
   GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lafter%=", "460")
 /* clang-format on */
 
