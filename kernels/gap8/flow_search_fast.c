@@ -65,15 +65,20 @@ static uint32_t search_row_held(const uint32_t p[16], const uint8_t *row, uint32
 }
 
 /* clang-format off */
-/* Block row r of the algebra path: next's two words at immediate offsets (W = 64), acc += 2 *
+/* Block row r of the algebra path: next's two words at immediate offsets (W = 64) from pb, which
+ * row 0's first load has already advanced by 4 (to the group's next candidate), acc += 2 *
  * sum(max) against prev's words lo and hi. */
-#define MAX_ROW(r, lo, hi)                                                                     \
-  "lw %[v0], 64*" #r "(%[pb])\n\t"                                                             \
-  "lw %[v1], 64*" #r "+4(%[pb])\n\t"                                                           \
+#define MAX_SIMD(lo, hi)                                                                       \
   GAP8_ASM_PV_MAXU_B("%[v0]", "%[v0]", "%[p" #lo "]")                                          \
   GAP8_ASM_PV_SDOTUP_SC_B("%[acc]", "%[v0]", "%[two]")                                         \
   GAP8_ASM_PV_MAXU_B("%[v1]", "%[v1]", "%[p" #hi "]")                                          \
   GAP8_ASM_PV_SDOTUP_SC_B("%[acc]", "%[v1]", "%[two]")
+#define MAX_ROW0                                                                               \
+  GAP8_ASM_P_LW_POST_IMM("%[v0]", "4", "%[pb]")                                                \
+  "lw %[v1], 0(%[pb])\n\t" MAX_SIMD(0, 1)
+#define MAX_ROW(r, lo, hi)                                                                     \
+  "lw %[v0], 64*" #r "-4(%[pb])\n\t"                                                           \
+  "lw %[v1], 64*" #r "(%[pb])\n\t" MAX_SIMD(lo, hi)
 /* clang-format on */
 
 /* One group of candidates: `rows` rows of displacements, n candidates per row 4 pixels apart;
@@ -86,23 +91,22 @@ static uint32_t search_group(const uint32_t p[16], const uint8_t *pb, const uint
   /* clang-format off */
   __asm__ volatile(
       GAP8_ASM_HWLOOP_BEGIN
-      /* loop 1 over the rows: lp.setup 0, loop 0's 53 instructions, two pointer steps; the last
-       * 224 bytes (112 half-words) after lp.setup. Loop 0 over the candidates: -B, the 8 rows
-       * (48), the key (slli, add, p.minu), the step; the last 212 bytes (106 half-words) after
-       * its lp.setup. */
-      ".Lrows%=: " GAP8_ASM_LP_SETUP("1", "%[acc]", "112")
-      ".Lcand%=: " GAP8_ASM_LP_SETUP("0", "%[n]", "106")
+      /* loop 1 over the rows: lp.setup 0, loop 0's 52 instructions, two pointer steps; the last
+       * 220 bytes (110 half-words) after lp.setup. Loop 0 over the candidates: -B, the 8 rows
+       * (48, the first load steps pb), the key (slli, add, p.minu); the last 208 bytes (104
+       * half-words) after its lp.setup. */
+      ".Lrows%=: " GAP8_ASM_LP_SETUP("1", "%[acc]", "110")
+      ".Lcand%=: " GAP8_ASM_LP_SETUP("0", "%[n]", "104")
       GAP8_ASM_P_LW_POST_IMM("%[acc]", "16", "%[pt]")    /* -B; pt to the next candidate */
-      MAX_ROW(0, 0, 1) MAX_ROW(1, 2, 3) MAX_ROW(2, 4, 5) MAX_ROW(3, 6, 7)
+      MAX_ROW0 MAX_ROW(1, 2, 3) MAX_ROW(2, 4, 5) MAX_ROW(3, 6, 7)
       MAX_ROW(4, 8, 9) MAX_ROW(5, 10, 11) MAX_ROW(6, 12, 13) MAX_ROW(7, 14, 15)
       "slli %[acc], %[acc], 16\n\t"                      /* (SAD + A) << 16 */
       "add %[acc], %[acc], %[pt]\n\t"                    /* | table address (+16) */
-      P_MINU_ASM("%[key]", "%[key]", "%[acc]")
-      ".Lcand_end%=: addi %[pb], %[pb], 4\n\t"
+      ".Lcand_end%=: " P_MINU_ASM("%[key]", "%[key]", "%[acc]")
       "add %[pb], %[pb], %[pb_row]\n\t"
       ".Lrows_end%=: add %[pt], %[pt], %[pt_row]\n\t"
-      GAP8_ASM_CHECK_DISTANCE(".Lcand%=", ".Lcand_end%=", "212")
-      GAP8_ASM_CHECK_DISTANCE(".Lrows%=", ".Lrows_end%=", "224")
+      GAP8_ASM_CHECK_DISTANCE(".Lcand%=", ".Lcand_end%=", "208")
+      GAP8_ASM_CHECK_DISTANCE(".Lrows%=", ".Lrows_end%=", "220")
       GAP8_ASM_HWLOOP_END
       : [key] "+&r"(key), [pb] "+&r"(pb), [pt] "+&r"(pt), [acc] "+&r"(acc), [v0] "=&r"(v0),
         [v1] "=&r"(v1)
