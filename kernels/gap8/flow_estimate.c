@@ -4,6 +4,17 @@
  * built with -ffp-contract=off). */
 #include "flow_kernel.h"
 
+/* V / Wt over the bins lo..hi, accumulated in float as the firmware does. Weak: the fast variant
+ * sums in integers and converts once (flow_kernel.h). */
+__attribute__((weak)) float flow_window_mean(const uint16_t *hist, int lo, int hi) {
+  float value = 0.0f, weight = 0.0f;
+  for (int b = lo; b <= hi; ++b) {
+    value += (float)(b * hist[b]);
+    weight += (float)hist[b];
+  }
+  return value / weight;
+}
+
 /* HF on: the weighted mean of the five bins around the first maximum, clipped to the histogram. */
 static float filtered_flow(const uint16_t *hist, int nbins, int s) {
   int peak = 0;
@@ -11,12 +22,7 @@ static float filtered_flow(const uint16_t *hist, int nbins, int s) {
     if (hist[b] > hist[peak]) peak = b; /* strict: the first maximum wins */
   const int lo = peak - 2 < 0 ? 0 : peak - 2;
   const int hi = peak + 2 > nbins - 1 ? nbins - 1 : peak + 2;
-  float value = 0.0f, weight = 0.0f;
-  for (int b = lo; b <= hi; ++b) {
-    value += (float)(b * hist[b]);
-    weight += (float)hist[b];
-  }
-  return (value / weight - (float)(2 * s + 1)) / 2.0f;
+  return (flow_window_mean(hist, lo, hi) - (float)(2 * s + 1)) / 2.0f;
 }
 
 void flow_estimate(const pxflow_gap8_record *records, uint32_t pois, const pxflow_gap8_params *p,

@@ -39,6 +39,13 @@ uint32_t flow_integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, 
 /* The team's entry point: every POI of this core, as flow_poi.c computes it. */
 void flow_team_entry(void *ctx);
 
+/* Hooks with a plain default (weak, in flow_main.c and flow_estimate.c) that the fast variant
+ * replaces: clearing `bytes` (a multiple of 4) of words, and HF's V / Wt over bins lo..hi
+ * (SPEC §5: accumulated in float, but exact, so integer sums converted once give the same
+ * bits). */
+void flow_clear_words(void *dst, uint32_t bytes);
+float flow_window_mean(const uint16_t *hist, int lo, int hi);
+
 /* Histograms and the frame estimate of SPEC §5 (HF on or off; no gyro), soft-float. */
 void flow_estimate(const pxflow_gap8_record *records, uint32_t pois, const pxflow_gap8_params *p,
                    pxflow_gap8_result *out);

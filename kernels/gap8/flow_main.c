@@ -37,7 +37,8 @@ static void build_grid(const pxflow_gap8_params *p, uint16_t *xy) {
   }
 }
 
-static void clear_words(void *dst, uint32_t bytes) {
+/* Weak: the fast variant brings a hardware-loop version (flow_kernel.h). */
+__attribute__((weak)) void flow_clear_words(void *dst, uint32_t bytes) {
   uint32_t *w = dst;
   for (uint32_t n = 0; n < bytes / 4; ++n) w[n] = 0;
 }
@@ -52,7 +53,7 @@ static void run_pair(const pxflow_gap8_params *p, flow_ctx *c, uint32_t pair) {
   pi_cl_dma_cmd(src, (uint32_t)c->prev, frame, PI_CL_DMA_DIR_EXT2LOC, &prev_cmd);
   pi_cl_dma_cmd(src + frame, (uint32_t)c->next, frame, PI_CL_DMA_DIR_EXT2LOC, &next_cmd);
   build_grid(p, (uint16_t *)c->poi_xy);
-  clear_words(c->records, rec_bytes);
+  flow_clear_words(c->records, rec_bytes);
   const uint32_t t1 = cycles_now();
   pi_cl_dma_cmd_wait(&prev_cmd);
   pi_cl_dma_cmd_wait(&next_cmd);

@@ -35,6 +35,10 @@ static inline uint32_t sad4_acc(uint32_t acc, uint32_t a, uint32_t b) {
   GAP8_ASM_PV_SUB_B(t, t, u)               \
   GAP8_ASM_PV_SDOTUP_SC_B(acc, t, one)
 
+/* p.minu rd, rs1, rs2 (unsigned minimum; opcode 0x33, funct3 5, funct7 2, as xpulp.h's
+ * gap8_p_minu), as assembler text. */
+#define P_MINU_ASM(rd, a, b) ".insn r 0x33, 5, 0x02, " rd ", " a ", " b "\n\t"
+
 /* The eight half-pixel accumulators of an asm block: operands %[acc0]..%[acc7] written straight
  * to sub[0..7], and the text that clears them. */
 #define HALF_ACC_OPERANDS(sub)                                                            \
@@ -58,7 +62,29 @@ static inline uint32_t sad4_acc(uint32_t acc, uint32_t a, uint32_t b) {
   GAP8_ASM_HWLOOP_END
 /* clang-format on */
 
-/* UHADD8: per byte floor((a + b) / 2). pv.avgu.b is the floor average (never round up). */
-static inline uint32_t avg4(uint32_t a, uint32_t b) { return gap8_pv_avgu_b(a, b); }
+/* UHADD8, SPEC §7: per byte floor((a + b) / 2), 9-bit intermediate. RI5CY's pv.avgu.b is NOT
+ * this: it adds in the 8-bit lane and drops the carry, (uint8)(a_i + b_i) >> 1 (GVSOC gvsoc-core
+ * isa_lib/int.h VEC_EXPR(AVGU, ...); GreenWaves' builtins.h; pulp-platform/riscv-tests pv_avgu),
+ * wrong whenever a_i + b_i > 255. The floor average is built from the carry-free identity
+ *   floor((a + b) / 2) = (a & b) + ((a ^ b) >> 1)   per byte,
+ * where the per-byte shift is pv.avgu.sc.b with the scalar 0 (x0): (uint8)(t_i + 0) >> 1 =
+ * t_i >> 1, no carry possible (GVSOC VEC_EXPR_SC(AVGU, uint32_t, uint8_t, ...,
+ * ((uint8_t)(tmp_a[i] + b) >> 1)), b the scalar's low byte). Four one-cycle instructions: and,
+ * xor, pv.avgu.sc.b, add (plain RV32 would need srli and an and with 0x7F7F7F7F instead of the
+ * pv.avgu.sc.b: five). */
+static inline uint32_t avg4(uint32_t a, uint32_t b) {
+  return (a & b) + gap8_pv_avgu_sc_b(a ^ b, 0u);
+}
+
+/* pv.avgu.sc.b rd, rs1, x0: rd = rs1 >> 1 in each byte (see avg4). */
+#define PV_SRL1_B_ASM(rd, rs1) ".insn r 0x57, 5, 0x0C, " rd ", " rs1 ", x0\n\t"
+
+/* avg4 as assembler text: d = floor((a + b) / 2) per byte, t scratch; d may be a or b (t must be
+ * neither). The and reads both inputs first, so a load of a or b two instructions earlier does
+ * not stall. */
+#define FLOOR_AVG_ASM(d, a, b, t) \
+  "and " t ", " a ", " b          \
+  "\n\t"                          \
+  "xor " d ", " a ", " b "\n\t" PV_SRL1_B_ASM(d, d) "add " d ", " d ", " t "\n\t"
 
 #endif

@@ -12,26 +12,26 @@ const uint32_t variant_planes = 3;
 /* One plane row from `src` rows (y, y+1): word-wide, then the W % 4 tail pixel by pixel, so
  * that no core writes into a row another core owns. The word-wide part is a hardware loop, two
  * words per iteration (so that no average waits for the load just before it), post-increment
- * loads and stores. */
+ * loads and stores; each average is FLOOR_AVG_ASM (4 instructions). */
 static void average_row(uint8_t *dst, const uint8_t *a, const uint8_t *b, uint32_t w) {
   const uint32_t pairs = w / 8;
   if (pairs != 0) {
-    uint32_t a0, a1, b0, b1;
+    uint32_t a0, a1, b0, b1, t;
     /* clang-format off */
     __asm__ volatile(
         GAP8_ASM_HWLOOP_BEGIN
-        /* loop 0: body of 8 instructions, the last 32 bytes (16 half-words) after lp.setup */
-        ".Lstart%=: " GAP8_ASM_LP_SETUP("0", "%[n]", "16")
+        /* loop 0: body of 14 instructions, the last 56 bytes (28 half-words) after lp.setup */
+        ".Lstart%=: " GAP8_ASM_LP_SETUP("0", "%[n]", "28")
         /* one line per step: the two rows' word k, their word k+1, both averages, stores */
         GAP8_ASM_P_LW_POST_IMM("%[a0]", "4", "%[pa]") GAP8_ASM_P_LW_POST_IMM("%[b0]", "4", "%[pb]")
         GAP8_ASM_P_LW_POST_IMM("%[a1]", "4", "%[pa]") GAP8_ASM_P_LW_POST_IMM("%[b1]", "4", "%[pb]")
-        GAP8_ASM_PV_AVGU_B("%[a0]", "%[a0]", "%[b0]") GAP8_ASM_PV_AVGU_B("%[a1]", "%[a1]", "%[b1]")
+        FLOOR_AVG_ASM("%[a0]", "%[a0]", "%[b0]", "%[t]") FLOOR_AVG_ASM("%[a1]", "%[a1]", "%[b1]", "%[t]")
         GAP8_ASM_P_SW_POST_IMM("%[a0]", "4", "%[pd]")
         ".Lend%=: " GAP8_ASM_P_SW_POST_IMM("%[a1]", "4", "%[pd]")
-        GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lend%=", "32")
+        GAP8_ASM_CHECK_DISTANCE(".Lstart%=", ".Lend%=", "56")
         GAP8_ASM_HWLOOP_END
         : [pa] "+r"(a), [pb] "+r"(b), [pd] "+r"(dst), [a0] "=&r"(a0), [a1] "=&r"(a1),
-          [b0] "=&r"(b0), [b1] "=&r"(b1)
+          [b0] "=&r"(b0), [b1] "=&r"(b1), [t] "=&r"(t)
         : [n] "r"(pairs)
         : "memory");
     /* clang-format on */

@@ -18,7 +18,8 @@ void variant_prepare(const flow_ctx *c, uint32_t core) {
 #define ORIG_SAD(acc, v) SAD4_ACC_ASM(acc, "%[a]", v, "%[t]", v, "%[one]")
 
 /* One 4-pixel group (pixels c..c+3 of block row r): prev's word `a`; P(c-1..c+4) of rows r, r+1
- * and r-1 of next (9 loads); s0..s7 of the firmware (12 averages with the diagonals); 8 SADs.
+ * and r-1 of next (9 loads); s0..s7 of the firmware (12 floor averages of 4 instructions each,
+ * FLOOR_AVG_ASM, with the diagonals); 8 SADs.
  * Every loaded value is used three instructions later at the earliest (no load-use stall).
  * `blk_load` loads `a`; `post` is the form of each row pointer's last load: +4 after the first
  * group, to the next row after the second. */
@@ -29,23 +30,23 @@ void variant_prepare(const flow_ctx *c, uint32_t core) {
   "lw %[x1], 1(%[pp])\n\t"                      /* P(c+1, r) */                   \
   post("%[x2]", "%[pp]")                        /* P(c, r) */                     \
   "lw %[x3], -1(%[pn])\n\t"                     /* P(c-1, r+1) */                 \
-  GAP8_ASM_PV_AVGU_B("%[x0]", "%[x2]", "%[x0]") /* s4 = h(c-1, r) */              \
-  GAP8_ASM_PV_AVGU_B("%[x1]", "%[x2]", "%[x1]") /* s0 = h(c, r) */                \
+  FLOOR_AVG_ASM("%[x0]", "%[x2]", "%[x0]", "%[t]") /* s4 = h(c-1, r) */              \
+  FLOOR_AVG_ASM("%[x1]", "%[x2]", "%[x1]", "%[t]") /* s0 = h(c, r) */                \
   "lw %[x4], 1(%[pn])\n\t"                      /* P(c+1, r+1) */                 \
   post("%[x5]", "%[pn]")                        /* P(c, r+1) */                   \
   "lw %[x6], -1(%[pu])\n\t"                     /* P(c-1, r-1) */                 \
   "lw %[x7], 1(%[pu])\n\t"                      /* P(c+1, r-1) */                 \
   post("%[x8]", "%[pu]")                        /* P(c, r-1) */                   \
-  GAP8_ASM_PV_AVGU_B("%[x4]", "%[x5]", "%[x4]") /* s1 = h(c, r+1) */              \
-  GAP8_ASM_PV_AVGU_B("%[x3]", "%[x5]", "%[x3]") /* s3 = h(c-1, r+1) */            \
-  GAP8_ASM_PV_AVGU_B("%[x5]", "%[x2]", "%[x5]") /* s2 = g(c, r) */                \
-  GAP8_ASM_PV_AVGU_B("%[x6]", "%[x8]", "%[x6]") /* s5 = h(c-1, r-1) */            \
-  GAP8_ASM_PV_AVGU_B("%[x7]", "%[x8]", "%[x7]") /* s7 = h(c, r-1) */              \
-  GAP8_ASM_PV_AVGU_B("%[x8]", "%[x2]", "%[x8]") /* s6 = g(c, r-1) */              \
-  GAP8_ASM_PV_AVGU_B("%[x4]", "%[x1]", "%[x4]") /* d(c, r) = avg(s0, s1) */       \
-  GAP8_ASM_PV_AVGU_B("%[x3]", "%[x3]", "%[x0]") /* d(c-1, r) = avg(s3, s4) */     \
-  GAP8_ASM_PV_AVGU_B("%[x6]", "%[x0]", "%[x6]") /* d(c-1, r-1) = avg(s4, s5) */   \
-  GAP8_ASM_PV_AVGU_B("%[x7]", "%[x7]", "%[x1]") /* d(c, r-1) = avg(s7, s0) */     \
+  FLOOR_AVG_ASM("%[x4]", "%[x5]", "%[x4]", "%[t]") /* s1 = h(c, r+1) */              \
+  FLOOR_AVG_ASM("%[x3]", "%[x5]", "%[x3]", "%[t]") /* s3 = h(c-1, r+1) */            \
+  FLOOR_AVG_ASM("%[x5]", "%[x2]", "%[x5]", "%[t]") /* s2 = g(c, r) */                \
+  FLOOR_AVG_ASM("%[x6]", "%[x8]", "%[x6]", "%[t]") /* s5 = h(c-1, r-1) */            \
+  FLOOR_AVG_ASM("%[x7]", "%[x8]", "%[x7]", "%[t]") /* s7 = h(c, r-1) */              \
+  FLOOR_AVG_ASM("%[x8]", "%[x2]", "%[x8]", "%[t]") /* s6 = g(c, r-1) */              \
+  FLOOR_AVG_ASM("%[x4]", "%[x1]", "%[x4]", "%[t]") /* d(c, r) = avg(s0, s1) */       \
+  FLOOR_AVG_ASM("%[x3]", "%[x3]", "%[x0]", "%[t]") /* d(c-1, r) = avg(s3, s4) */     \
+  FLOOR_AVG_ASM("%[x6]", "%[x0]", "%[x6]", "%[t]") /* d(c-1, r-1) = avg(s4, s5) */   \
+  FLOOR_AVG_ASM("%[x7]", "%[x7]", "%[x1]", "%[t]") /* d(c, r-1) = avg(s7, s0) */     \
   ORIG_SAD("%[acc0]", "%[x1]")                                                    \
   ORIG_SAD("%[acc1]", "%[x4]")                                                    \
   ORIG_SAD("%[acc2]", "%[x5]")                                                    \
@@ -68,11 +69,11 @@ void variant_half_sads(const flow_ctx *c, const uint8_t *blk, uint32_t mx, uint3
   uint32_t a, t, x0, x1, x2, x3, x4, x5, x6, x7, x8;
   /* clang-format off */
   __asm__ volatile(
-      /* body: 2 x 54 instructions, the last 12 + 107 * 4 = 440 bytes after lp.starti, so 436
-       * bytes (218 half-words) after lp.endi */
+      /* body: 2 x 90 instructions, the last 12 + 179 * 4 = 728 bytes after lp.starti, so 724
+       * bytes (362 half-words) after lp.endi */
       HALF_ROWS_ASM(ORIG_GROUP(GAP8_ASM_P_LW_POST_IMM("%[a]", "4", "%[pb]"), ORIG_POST_4),
                     ORIG_GROUP(GAP8_ASM_P_LW_POST_REG("%[a]", "%[rest]", "%[pb]"), ORIG_POST_ROW),
-                    "218")
+                    "362")
       : HALF_ACC_OPERANDS(sub), [pb] "+r"(blk), [pp] "+r"(pp), [pu] "+r"(pu), [pn] "+r"(pn),
         [a] "=&r"(a), [t] "=&r"(t), [x0] "=&r"(x0), [x1] "=&r"(x1), [x2] "=&r"(x2), [x3] "=&r"(x3),
         [x4] "=&r"(x4), [x5] "=&r"(x5), [x6] "=&r"(x6), [x7] "=&r"(x7), [x8] "=&r"(x8)
