@@ -17,7 +17,7 @@ namespace {
 struct FlowOptions {
   ProblemOptions problem;
   std::string size;
-  std::string backend = default_backend().name;
+  std::string backend = kReferenceBackend;  // the executable spec, and it counts its work
   BackendOptions backend_options;
   bool json = false;
   std::string draw;  // PNG path

@@ -3,8 +3,6 @@
 // output file is replaced only when complete, options that would have no effect are refused,
 // and a check that compared nothing is not a pass.
 #include <catch2/catch.hpp>
-#include <fstream>
-#include <sstream>
 #include <unistd.h>
 
 #include "bad_input.hpp"
@@ -14,15 +12,9 @@
 using namespace pxflow;
 using test::require_bad_input;
 using test::run_pxflow;
+using test::slurp;
 
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 const std::string kPrev = std::string(kSampleDataDir) + "/rubberwhale1.png";
 const std::string kNext = std::string(kSampleDataDir) + "/rubberwhale2.png";

@@ -10,13 +10,6 @@
 namespace pxflow::test {
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Small check and bench results of ref-original, so the report runs nothing else but the model.
 void make_inputs(const TempDir& dir) {
   REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",

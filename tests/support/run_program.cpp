@@ -14,7 +14,6 @@
 extern char** environ;
 
 namespace pxflow::test {
-namespace {
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -22,8 +21,6 @@ std::string slurp(const std::string& path) {
   ss << in.rdbuf();
   return ss.str();
 }
-
-}  // namespace
 
 int RunResult::err_lines() const {
   return static_cast<int>(std::count(err.begin(), err.end(), '\n'));

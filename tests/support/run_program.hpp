@@ -13,6 +13,9 @@ struct RunResult {
 
 RunResult run_program(const std::string& binary, const std::vector<std::string>& args);
 
+// The whole file (empty when it cannot be read).
+std::string slurp(const std::string& path);
+
 #ifdef PXFLOW_BINARY
 // The pxflow binary of this build.
 inline RunResult run_pxflow(const std::vector<std::string>& args) {
