@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <new>
 
+#include "cli_extension.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
-#include "cli_extension.hpp"
 #include "pxflow_app.hpp"
 #include "registry.hpp"
 
@@ -14,7 +14,8 @@ namespace pxflow {
 
 int run_pxflow(int argc, char** argv) {
   quiet_opencv();
-  CLI::App app{"pxflow: the PX4FLOW optical-flow kernel, cross-checked bit for bit across backends"};
+  CLI::App app{
+      "pxflow: the PX4FLOW optical-flow kernel, cross-checked bit for bit across backends"};
   app.set_version_flag("--version", "pxflow 0.1");
   app.require_subcommand(1);
   app.fallthrough();  // global options may follow the subcommand
@@ -26,10 +27,9 @@ int run_pxflow(int argc, char** argv) {
   std::vector<CLI::Option*> family_flags;
   for (auto& [opt, value] : family_options)
     family_flags.push_back(app.add_option(opt->flag, value, opt->help));
-  std::vector<cli::Command> commands = {cli::add_flow_command(app), cli::add_check_command(app),
-                                        cli::add_bench_command(app), cli::add_report_command(app),
-                                        cli::add_accuracy_command(app),
-                                        cli::add_backends_command(app)};
+  std::vector<cli::Command> commands = {
+      cli::add_flow_command(app),   cli::add_check_command(app),    cli::add_bench_command(app),
+      cli::add_report_command(app), cli::add_accuracy_command(app), cli::add_backends_command(app)};
   for (const cli::CliExtension& e : cli::registered_cli_extensions())
     if (e.add_command) commands.push_back(e.add_command(app));
   if (argc > 1 && argv[1][0] != '-') {
@@ -53,6 +53,8 @@ int run_pxflow(int argc, char** argv) {
     return 2;
   }
   try {
+    for (const BackendFamily& f : backend_families())
+      if (f.check_environment) f.check_environment();
     for (std::size_t i = 0; i < family_options.size(); ++i)
       if (family_flags[i]->count() > 0) family_options[i].first->apply(family_options[i].second);
     for (const auto& c : commands)
