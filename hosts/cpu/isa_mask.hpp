@@ -16,7 +16,7 @@ const std::vector<std::string>& compiled_isas();
 // ...)"); the CLI calls it before every command, so that a typo is exit 2, not a skipped row.
 void check_environment();
 
-// Masks the ISAs of a comma-separated list (e.g. "avx512bw,avx2"; empty masks none) for the rest
+// Masks the ISAs of a comma-separated list (row names of the table; empty masks none) for the rest
 // of the process, replacing PXFLOW_DISABLE. Throws InputError naming an unknown ISA.
 void set_disabled_isas(std::string_view list);
 

@@ -25,7 +25,7 @@ std::span<const IsaInfo> isa_table();
 // The row named `name`, or null when the table has none.
 const IsaInfo* find_isa(std::string_view name);
 
-// "swar, sse2, ...": every name, for error messages.
+// Every name, comma-separated in table order, for error messages.
 std::string known_isas();
 
 }  // namespace pxflow::cpu
