@@ -1,5 +1,5 @@
 // The rows of isas.def, expanded twice: once for the feature tests of the rows compiled here,
-// once for the table itself. Compiled without ISA flags: it only calls the accessors.
+// once for the table itself. Compiled without ISA flags: it only takes the accessors' addresses.
 #include "isa_table.hpp"
 
 #include "isa_arch.hpp"
