@@ -54,6 +54,8 @@ int run_pxflow(int argc, char** argv) {
     return 2;
   }
   try {
+    for (const BackendFamily& f : backend_families())
+      if (f.check_environment) f.check_environment();
     for (std::size_t i = 0; i < family_options.size(); ++i)
       if (family_flags[i]->count() > 0) family_options[i].first->apply(family_options[i].second);
     for (const auto& c : commands)

@@ -89,6 +89,9 @@ struct BackendFamily {
   std::vector<BackendRow> rows;
   std::vector<FamilyOption> options;
   std::function<std::optional<BenchBound>()> measure_bench_bound;  // empty: no bound
+  // Checks the environment variables the family reads (the cpu family: PXFLOW_DISABLE); throws
+  // InputError for a bad value. The CLI calls it before every command. Empty: nothing to check.
+  std::function<void()> check_environment;
 };
 
 }  // namespace pxflow

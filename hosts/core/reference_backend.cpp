@@ -25,7 +25,8 @@ class ReferenceBackend final : public Backend {
 }  // namespace
 
 BackendFamily reference_family() {
-  BackendFamily family{"reference", {}, {}, {}};
+  BackendFamily family;
+  family.name = "reference";
   auto& rows = family.rows;
   for (RefVariant v : {RefVariant::kOriginal, RefVariant::kLocal, RefVariant::kGlobal}) {
     rows.push_back({std::string(ref_variant_name(v)), "nothing (portable scalar C++)",

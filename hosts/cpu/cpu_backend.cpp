@@ -1,5 +1,5 @@
-// The CPU registry rows: one per compiled ISA (swar, sse2, sse41, avx2, avx512bw / neon) and
-// `cpu`, the run-time dispatcher that takes the strongest ISA that can run here. Every row runs
+// The CPU registry rows: one per compiled row of the ISA table (kernels/cpu/isas.def) and `cpu`,
+// the run-time dispatcher that takes the strongest ISA that can run here. Every row runs
 // the frame pairs of a batch on a thread pool (BackendOptions::threads, 0 = all cores).
 #include <algorithm>
 #include <memory>
@@ -11,6 +11,7 @@
 #include "errors.hpp"
 #include "grid.hpp"
 #include "isa_mask.hpp"
+#include "isa_table.hpp"
 #if defined(__x86_64__)
 #include "psadbw_ceiling.hpp"
 #endif
@@ -60,51 +61,42 @@ class CpuBackend final : public Backend {
   ThreadPool pool_;
 };
 
-// The kernel of a compiled ISA. Called only for an ISA that can run here: the accessor itself
-// lives in the ISA's file, compiled with its flags.
-const cpu::IsaKernel& kernel_of(std::string_view isa) {
-#if defined(__x86_64__)
-  if (isa == "sse2") return cpu::sse2_kernel();
-  if (isa == "sse41") return cpu::sse41_kernel();
-  if (isa == "avx2") return cpu::avx2_kernel();
-  if (isa == "avx512bw") return cpu::avx512bw_kernel();
-#endif
-#if defined(__aarch64__)
-  if (isa == "neon") return cpu::neon_kernel();
-#endif
-  return cpu::swar_kernel();
-}
-
-std::string needs_of(std::string_view isa) {
-  if (isa == "swar") return "nothing (portable C++, 4 pixels per uint32)";
-  if (isa == "sse2") return "x86-64 (SSE2)";
-  if (isa == "sse41") return "x86-64 with SSE4.1";
-  if (isa == "avx2") return "x86-64 with AVX2";
-  if (isa == "avx512bw") return "x86-64 with AVX-512BW";
-  return "AArch64 (NEON)";
-}
-
 std::unique_ptr<Backend> create_isa(std::string_view isa, const BackendOptions& o) {
   if (const std::string why = cpu::isa_unavailable(isa); !why.empty())
     throw BackendError(std::string(isa) + " cannot run here: " + why);
-  return std::make_unique<CpuBackend>(kernel_of(isa), o.threads);
+  // Available means compiled and supported, so the row has its accessor and the CPU its ISA.
+  return std::make_unique<CpuBackend>(cpu::find_isa(isa)->kernel(), o.threads);
 }
 
+// The row of one compiled ISA of the table.
+BackendRow isa_row(const cpu::IsaInfo& info) {
+  BackendRow row;
+  row.name = info.name;
+  row.needs = info.needs;
+  row.probe = [isa = row.name] { return cpu::isa_unavailable(isa); };
+  row.create = [isa = row.name](const BackendOptions& o) { return create_isa(isa, o); };
+  return row;
+}
+
+// Its `needs` is fixed when the registry is built, before --disable-isa is applied, so it names
+// no ISA: the ISA rows above it say which can run.
 BackendRow dispatcher_row() {
-  const std::string chosen = cpu::best_isa();
-  return {"cpu",
-          "the best compiled ISA this CPU supports (here: " + (chosen.empty() ? "none" : chosen) +
-              "; PXFLOW_DISABLE masks ISAs)",
-          [] {
-            return cpu::best_isa().empty() ? std::string("every CPU kernel is unavailable (" +
-                                                         cpu::isa_unavailable("swar") + ")")
-                                           : std::string();
-          },
-          [](const BackendOptions& o) {
-            const std::string isa = cpu::best_isa();
-            if (isa.empty()) throw BackendError("cpu: every CPU kernel is masked");
-            return create_isa(isa, o);
-          }};
+  BackendRow row;
+  row.name = "cpu";
+  row.needs = "the strongest ISA row above that is available (not masked)";
+  row.probe = [] {
+    if (!cpu::best_isa().empty()) return std::string();
+    const std::string& weakest = cpu::compiled_isas().front();
+    return "every CPU kernel is unavailable (" + weakest + ": " + cpu::isa_unavailable(weakest) +
+           ")";
+  };
+  row.create = [](const BackendOptions& o) {
+    const std::string isa = cpu::best_isa();
+    if (isa.empty()) throw BackendError("cpu: every CPU kernel is masked");
+    return create_isa(isa, o);
+  };
+  row.preferred = true;
+  return row;
 }
 
 // The bench's bound for TSC-timed rows: the SAD work at the widest psadbw's measured rate.
@@ -124,15 +116,17 @@ std::optional<BenchBound> psadbw_bound() {
 }  // namespace
 
 BackendFamily cpu_family() {
-  BackendFamily family{"cpu", {}, {}, psadbw_bound};
-  for (const std::string& isa : cpu::compiled_isas())
-    family.rows.push_back({isa, needs_of(isa), [isa] { return cpu::isa_unavailable(isa); },
-                           [isa](const BackendOptions& o) { return create_isa(isa, o); }});
+  BackendFamily family;
+  family.name = "cpu";
+  family.measure_bench_bound = psadbw_bound;
+  for (const cpu::IsaInfo& info : cpu::isa_table())
+    if (info.compiled()) family.rows.push_back(isa_row(info));
   family.rows.push_back(dispatcher_row());
-  family.rows.back().preferred = true;
   family.options.push_back({"--disable-isa",
-                            "Mask CPU ISAs for this run, e.g. avx512bw,avx2 (replaces PXFLOW_DISABLE)",
+                            "Mask CPU ISAs for this run, a comma-separated list of " +
+                                cpu::known_isas() + " (replaces PXFLOW_DISABLE)",
                             [](const std::string& list) { cpu::set_disabled_isas(list); }});
+  family.check_environment = cpu::check_environment;
   return family;
 }
 

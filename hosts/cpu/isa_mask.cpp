@@ -5,21 +5,26 @@
 #include <mutex>
 
 #include "errors.hpp"
+#include "isa_table.hpp"
 
 namespace pxflow::cpu {
 namespace {
 
-// Every name the mask accepts, on any architecture, so that one PXFLOW_DISABLE value serves
-// x86-64 and AArch64 CI jobs alike.
-const std::vector<std::string> kKnownIsas = {"swar", "sse2", "sse41", "avx2", "avx512bw", "neon"};
+constexpr const char* kEnvironment = "PXFLOW_DISABLE";
 
 struct Mask {
   std::vector<std::string> names;
-  std::string source;  // "PXFLOW_DISABLE" or "--disable-isa"
+  std::string source;  // kEnvironment or "--disable-isa"
   std::string error;   // a bad PXFLOW_DISABLE value, reported by every probe
 };
 
 std::mutex mask_mutex;
+
+const IsaInfo& known(std::string_view name, std::string_view source) {
+  if (const IsaInfo* isa = find_isa(name)) return *isa;
+  throw InputError(std::string(source) + ": unknown ISA '" + std::string(name) +
+                   "' (known: " + known_isas() + ")");
+}
 
 // Splits "a,b" into names; an unknown name throws InputError.
 std::vector<std::string> parse_list(std::string_view list, std::string_view source) {
@@ -30,20 +35,17 @@ std::vector<std::string> parse_list(std::string_view list, std::string_view sour
     list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
     name.erase(std::remove(name.begin(), name.end(), ' '), name.end());
     if (name.empty()) continue;
-    if (std::find(kKnownIsas.begin(), kKnownIsas.end(), name) == kKnownIsas.end())
-      throw InputError(std::string(source) + ": unknown ISA '" + name +
-                       "' (known: swar, sse2, sse41, avx2, avx512bw, neon)");
-    names.push_back(name);
+    names.push_back(known(name, source).name);
   }
   return names;
 }
 
 Mask& mask() {
   static Mask m = [] {
-    Mask from_env{{}, "PXFLOW_DISABLE", {}};
-    if (const char* env = std::getenv("PXFLOW_DISABLE")) {
+    Mask from_env{{}, kEnvironment, {}};
+    if (const char* env = std::getenv(kEnvironment)) {
       try {
-        from_env.names = parse_list(env, "PXFLOW_DISABLE");
+        from_env.names = parse_list(env, kEnvironment);
       } catch (const InputError& e) {
         from_env.error = e.what();
       }
@@ -53,33 +55,20 @@ Mask& mask() {
   return m;
 }
 
-// "" when this CPU has the ISA; otherwise why not.
-std::string cpu_lacks(std::string_view isa) {
-#if defined(__x86_64__)
-  __builtin_cpu_init();
-  if (isa == "sse2") return __builtin_cpu_supports("sse2") ? "" : "this CPU lacks SSE2";
-  if (isa == "sse41") return __builtin_cpu_supports("sse4.1") ? "" : "this CPU lacks SSE4.1";
-  if (isa == "avx2") return __builtin_cpu_supports("avx2") ? "" : "this CPU (or OS) lacks AVX2";
-  if (isa == "avx512bw")
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw")
-               ? ""
-               : "this CPU (or OS, or valgrind) lacks AVX-512BW";
-#endif
-  (void)isa;
-  return "";  // swar runs anywhere; neon is part of every AArch64 CPU
-}
-
 }  // namespace
 
 const std::vector<std::string>& compiled_isas() {
-#if defined(__x86_64__)
-  static const std::vector<std::string> isas = {"swar", "sse2", "sse41", "avx2", "avx512bw"};
-#elif defined(__aarch64__)
-  static const std::vector<std::string> isas = {"swar", "neon"};
-#else
-  static const std::vector<std::string> isas = {"swar"};
-#endif
+  static const std::vector<std::string> isas = [] {
+    std::vector<std::string> names;
+    for (const IsaInfo& isa : isa_table())
+      if (isa.compiled()) names.push_back(isa.name);
+    return names;
+  }();
   return isas;
+}
+
+void check_environment() {
+  if (const char* env = std::getenv(kEnvironment)) parse_list(env, kEnvironment);
 }
 
 void set_disabled_isas(std::string_view list) {
@@ -88,18 +77,18 @@ void set_disabled_isas(std::string_view list) {
   mask() = Mask{std::move(names), "--disable-isa", {}};
 }
 
-std::string isa_unavailable(std::string_view isa) {
-  const auto& compiled = compiled_isas();
-  if (std::find(compiled.begin(), compiled.end(), isa) == compiled.end())
-    return std::string(isa) + " is not compiled into this build";
+std::string isa_unavailable(std::string_view name) {
+  const IsaInfo& isa = known(name, "cpu");
+  if (!isa.compiled()) return std::string(isa.name) + " is not compiled into this build";
   {
     const std::lock_guard lock(mask_mutex);
     const Mask& m = mask();
     if (!m.error.empty()) return m.error;
-    if (std::find(m.names.begin(), m.names.end(), isa) != m.names.end())
+    if (std::find(m.names.begin(), m.names.end(), name) != m.names.end())
       return "masked by " + m.source;
   }
-  return cpu_lacks(isa);
+  if (!isa.cpu_has()) return std::string("this CPU (or its OS) lacks it: needs ") + isa.needs;
+  return "";
 }
 
 std::string best_isa() {

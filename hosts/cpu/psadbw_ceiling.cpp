@@ -3,8 +3,20 @@
 #include <x86intrin.h>
 
 #include "isa_mask.hpp"
+#include "isa_table.hpp"
 
 namespace pxflow::cpu {
+namespace {
+
+// Whether the ISA whose table row unlocks this width (its `ceiling` column; the width's file is
+// compiled with that row's flags) can run here and is not masked.
+bool may_use(std::string_view width) {
+  for (const IsaInfo& isa : isa_table())
+    if (isa.compiled() && width == isa.ceiling) return isa_unavailable(isa.name).empty();
+  return false;
+}
+
+}  // namespace
 
 Ceiling measure_ceiling() {
   alignas(64) static std::uint8_t data[768];
@@ -13,14 +25,12 @@ Ceiling measure_ceiling() {
     const char* name;
     int bytes;
     std::uint64_t (*run)(const std::uint8_t*, std::int64_t);
-    const char* isa;
   };
-  const Width widths[] = {{"xmm", 16, psadbw_xmm, "sse2"},
-                          {"ymm", 32, psadbw_ymm, "avx2"},
-                          {"zmm", 64, psadbw_zmm, "avx512bw"}};
+  const Width widths[] = {
+      {"xmm", 16, psadbw_xmm}, {"ymm", 32, psadbw_ymm}, {"zmm", 64, psadbw_zmm}};
   Ceiling best;
   for (const Width& w : widths) {
-    if (!isa_unavailable(w.isa).empty()) continue;
+    if (!may_use(w.name)) continue;
     constexpr std::int64_t kRounds = 20'000;
     volatile std::uint64_t sink = w.run(data, 100 * kRounds);  // warm up (and clock up)
     double best_rate = 0;

@@ -1,5 +1,6 @@
 // The ceiling of the SAD work: back-to-back independent psadbw on L1-resident data, at each
-// width, in bytes compared per TSC cycle. Each width is in its own file with its own flags.
+// width, in bytes compared per TSC cycle. Each width is in its own file, compiled with the flags
+// of the ISA table row whose `ceiling` column names it (hosts/cpu/CMakeLists.txt).
 #pragma once
 #include <cstdint>
 
@@ -23,4 +24,4 @@ Ceiling measure_ceiling();
 // test left out (364,544 bytes for px4flow-64), in bytes.
 double sad_bytes_per_frame(long pois, int search_radius);
 
-}  // namespace pxflow::cpu_bench
+}  // namespace pxflow::cpu

@@ -1,5 +1,5 @@
-// The CPU kernels: one per instruction set, each in its own file compiled with its own flags only
-// (swar.cpp portable, sse2.cpp, sse41.cpp, avx2.cpp, avx512bw.cpp, neon.cpp). An ISA file
+// The CPU kernels: one per instruction set of isas.def, each in its own file <name>.cpp compiled
+// with that row's flags only (swar.cpp is portable C++). An ISA file
 // provides only the two hot steps of SPEC §3 (the integer search and the eight half-pixel SADs)
 // behind plain function pointers; the per-POI walk, the feature test and the record writing are
 // portable code in poi_loop.cpp, shared by every ISA.
@@ -14,6 +14,7 @@
 #include <span>
 
 #include "frame.hpp"
+#include "isa_arch.hpp"
 #include "params.hpp"
 #include "record.hpp"
 
@@ -44,7 +45,7 @@ struct Block {
 };
 
 struct IsaKernel {
-  const char* name;  // the registry name: "swar", "sse2", "sse41", "avx2", "avx512bw", "neon"
+  const char* name;  // its row's name in isas.def
   // Bytes from the start of a window row this kernel may read, for radius S (>= 2S+10).
   int (*row_bytes)(int radius);
   // SPEC §3 step 1 for `q` = prev(i+2, j+2), or null for the portable SWAR form (which
@@ -60,17 +61,12 @@ struct IsaKernel {
   bool counts_ops;  // true: the kernel charges its USAD8/USADA8/UHADD8 work (the SWAR model)
 };
 
-// The kernels compiled into this build (a kernel for another architecture is absent).
-const IsaKernel& swar_kernel();
-#if defined(__x86_64__)
-const IsaKernel& sse2_kernel();
-const IsaKernel& sse41_kernel();
-const IsaKernel& avx2_kernel();
-const IsaKernel& avx512bw_kernel();
-#endif
-#if defined(__aarch64__)
-const IsaKernel& neon_kernel();
-#endif
+// The accessor of every row of isas.def compiled for this architecture, cpu::<name>_kernel(),
+// defined in <name>.cpp. Call one only for an ISA this CPU has (isa_table.hpp's cpu_has).
+#define PXFLOW_CPU_ISA(name, arch, flags, ceiling, needs, test) \
+  PXFLOW_CPU_ISA_IF_##arch(const IsaKernel& name##_kernel();, )
+#include "isas.def"
+#undef PXFLOW_CPU_ISA
 
 // One frame pair through kernel `k`: writes all poi_count(p) records of `out` (every byte,
 // SPEC §4). `p` must be valid and match the frames. Counts are added when k counts them.
@@ -81,10 +77,5 @@ void run_flow(const IsaKernel& k, const FramePair& pair, const Params& p, std::s
 // records; only those rows' are written): lets the host split one frame over several cores.
 void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, int first_row,
                    int end_row, std::span<PoiRecord> out, OpCounts& counts);
-
-// The first smallest entry of a SAD table in raster order: rows 0..rows-1 of `cols` entries,
-// `stride` entries apart. Shared by the kernels that fill a table and scan it with scalar code.
-BlockMatch first_minimum(const std::uint16_t* table, int rows, int cols, std::ptrdiff_t stride,
-                         int radius);
 
 }  // namespace pxflow::cpu

@@ -131,14 +131,4 @@ void run_flow(const IsaKernel& k, const FramePair& pair, const Params& p, std::s
   run_flow_rows(k, pair, p, 0, rows, out, counts);
 }
 
-BlockMatch first_minimum(const std::uint16_t* table, int rows, int cols, std::ptrdiff_t stride,
-                         int radius) {
-  BlockMatch best{0, 0, 0xFFFFFFFFu};  // the sentinel of SPEC §3: any real SAD replaces it
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < cols; ++c)
-      if (table[r * stride + c] < best.sad)  // strict: a tie keeps the earlier candidate
-        best = {c - radius, r - radius, table[r * stride + c]};
-  return best;
-}
-
 }  // namespace pxflow::cpu

@@ -3,8 +3,6 @@
 #include <cstdio>
 #include <cstring>
 
-#include "grid.hpp"
-#include "kernel.hpp"
 #include "synthetic.hpp"
 
 namespace pxflow::cpu_test {
@@ -20,8 +18,8 @@ Params sized(const char* profile_name, int width, int height, int radius, int bl
   return p;
 }
 
-Group make_group(std::string name, const Params& p, int seeds) {
-  Group g{std::move(name), p, {}};
+Group make_group(std::string setting, const Params& p, int seeds) {
+  Group g{"synthetic", std::move(setting), p, {}};
   const int w = p.width, h = p.height, S = p.search_radius;
   for (int s = 1; s <= seeds; ++s) {
     const OwnedPair op = random_pair(w, h, S, static_cast<std::uint64_t>(s));
@@ -31,13 +29,6 @@ Group make_group(std::string name, const Params& p, int seeds) {
   for (const OwnedPair& op : hostile_pairs(w, h, S))
     g.cases.push_back(make_case(op.name, w, h, w, op.prev.data(), op.next.data(), w));
   return g;
-}
-
-void print_record(const char* who, const PoiRecord& r) {
-  std::printf(
-      "      %-12s st=%u feat=%u d=(%d,%d) sad=%u dir=%u sub=[%u %u %u %u %u %u %u %u] h=(%d,%d)\n",
-      who, r.status, r.feature, r.dx, r.dy, r.sad, r.dir, r.sub[0], r.sub[1], r.sub[2], r.sub[3],
-      r.sub[4], r.sub[5], r.sub[6], r.sub[7], r.hx, r.hy);
 }
 
 }  // namespace
@@ -69,13 +60,13 @@ std::vector<Group> real_groups(const std::string& name, int width, int height,
                                const std::uint8_t* prev, const std::uint8_t* next) {
   const int w = width, h = height;
   std::vector<Group> groups;
-  auto whole = [&](const char* what, const Params& p) {
-    groups.push_back({name + " " + what, p, {make_case(name, w, h, w, prev, next, w)}});
+  auto whole = [&](const char* setting, const Params& p) {
+    groups.push_back({"real/" + name, setting, p, {make_case(name, w, h, w, prev, next, w)}});
   };
   whole("px4flow-64", sized("px4flow-64", w, h, 0, 0));
   whole("px4flow-head", sized("px4flow-head", w, h, 0, 0));
   whole("S=7 B=32", sized("px4flow-64", w, h, 7, 32));
-  Group crops{name + " 64x64 crops", sized("px4flow-64", 64, 64, 0, 0), {}};
+  Group crops{"real/" + name + " 64x64 crops", "px4flow-64", sized("px4flow-64", 64, 64, 0, 0), {}};
   for (int y = 0; y + 64 <= h; y += 90)
     for (int x = 0; x + 64 <= w; x += 100) {
       const std::size_t at = static_cast<std::size_t>(y) * w + x;
@@ -87,33 +78,13 @@ std::vector<Group> real_groups(const std::string& name, int width, int height,
   return groups;
 }
 
-int check_group(const std::string& who, const Group& g, const BatchRun& run) {
-  const std::size_t per_pair = poi_count(g.params);
+bool check_group(const std::string& who, const Group& g, const BatchRun& run) {
   std::vector<FramePair> pairs;
-  for (const Case& c : g.cases) pairs.push_back(c.view());
-  std::vector<PoiRecord> expected(pairs.size() * per_pair), got(pairs.size() * per_pair);
-  std::memset(got.data(), 0xA5, got.size() * sizeof(PoiRecord));  // catches unwritten records
-  for (std::size_t n = 0; n < pairs.size(); ++n) {
-    OpCounts ignored;
-    reference_flow(RefVariant::kOriginal, pairs[n], g.params,
-                   std::span(expected).subspan(n * per_pair, per_pair), ignored);
-  }
-  run(pairs, g.params, got);
-  int failed = 0;
-  for (std::size_t n = 0; n < pairs.size(); ++n) {
-    for (std::size_t i = 0; i < per_pair; ++i) {
-      const PoiRecord& e = expected[n * per_pair + i];
-      const PoiRecord& a = got[n * per_pair + i];
-      if (std::memcmp(&e, &a, sizeof(PoiRecord)) == 0) continue;
-      std::printf("FAIL %s %s %s: POI %zu (x=%u, y=%u) differs from ref-original\n", who.c_str(),
-                  g.name.c_str(), g.cases[n].name.c_str(), i, e.x, e.y);
-      print_record("ref-original", e);
-      print_record(who.c_str(), a);
-      ++failed;
-      break;
-    }
-  }
-  return failed;
+  std::vector<std::string> names;
+  for (const Case& c : g.cases) pairs.push_back(c.view()), names.push_back(c.name);
+  const Comparison cmp = check_exact({who, g.name, g.setting}, pairs, names, g.params, run);
+  for (const std::string& line : cmp.lines) std::printf("%s\n", line.c_str());
+  return cmp.ok();
 }
 
 }  // namespace pxflow::cpu_test

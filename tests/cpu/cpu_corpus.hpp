@@ -1,6 +1,7 @@
-// The inputs the CPU kernels are checked on, and the check itself (exact record bytes against
-// ref-original). Pure C++ so that the NEON cross test, built for AArch64 without OpenCV, shares
-// it; real frames are added by the callers that can load them.
+// The inputs the CPU kernels are checked on, and the check itself: the harness's exactness
+// checker (hosts/harness/exactness.hpp), so a mismatch is the same line as in `pxflow check`.
+// Pure C++ so that the NEON cross test, built for AArch64 without OpenCV, shares it; real frames
+// are added by the callers that can load them.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "exactness.hpp"
 #include "frame.hpp"
 #include "params.hpp"
 #include "record.hpp"
@@ -28,7 +30,8 @@ struct Case {
 
 // Cases sharing one set of parameters: checked as one batch.
 struct Group {
-  std::string name;
+  std::string name;     // e.g. "synthetic", "real/rubberwhale 64x64 crops"
+  std::string setting;  // the parameter set, e.g. "px4flow-64", "96x80 S=13 B=3"
   Params params;
   std::vector<Case> cases;
 };
@@ -48,11 +51,9 @@ std::vector<Group> synthetic_corpus(int seeds);
 std::vector<Group> real_groups(const std::string& name, int width, int height,
                                const std::uint8_t* prev, const std::uint8_t* next);
 
-// Runs a whole group as one batch through `run` (output pre-filled with 0xA5) and compares
-// every record with ref-original byte for byte. Prints one line per failing case, naming
-// `who`, the group, the case and the first differing POI. Returns the number of failing cases.
-using BatchRun =
-    std::function<void(std::span<const FramePair>, const Params&, std::span<PoiRecord>)>;
-int check_group(const std::string& who, const Group& g, const BatchRun& run);
+// Runs a whole group as one batch through `run` with check_exact (sentinel-filled output, every
+// record and the frame flow compared with ref-original) and prints its mismatch lines, "FAIL
+// <who> case=<group>[<setting>] pair=<case> poi=..." as `pxflow check` does. True when it matched.
+bool check_group(const std::string& who, const Group& g, const BatchRun& run);
 
 }  // namespace pxflow::cpu_test

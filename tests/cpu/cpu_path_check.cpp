@@ -1,7 +1,8 @@
 // cpu_path_check ISA: the masked-path test. CTest runs it once per compiled ISA with
 // PXFLOW_DISABLE masking every stronger one, so that the dispatcher row `cpu` must choose ISA;
 // it then checks `cpu` (all cores) and the row named ISA (one thread) against ref-original on
-// the whole corpus: synthetic pairs, hostile pairs and the real frames of opencv-doc.
+// the whole corpus (synthetic pairs, hostile pairs and the real frames of opencv-doc) with the
+// harness's exactness checker, so a mismatch reads like a `pxflow check` line.
 // With --dump-real DIR it writes the real frames as raw files for the NEON cross test.
 // Exit 0 when every case matches, 1 on any mismatch, 77 (CTest SKIP_RETURN_CODE) when this CPU
 // lacks ISA.
@@ -14,7 +15,9 @@
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "isa_mask.hpp"
+#include "isa_table.hpp"
 #include "registry.hpp"
+#include "sample_data.hpp"
 
 namespace pxflow::cpu_test {
 namespace {
@@ -32,8 +35,8 @@ std::vector<RealPair> real_pairs(const std::string& dir) {
   for (const char* name : {"rubberwhale", "basketball"}) {
     const std::string a = dir + "/" + name + "1.png", b = dir + "/" + name + "2.png";
     if (!std::filesystem::exists(a) || !std::filesystem::exists(b)) {
-      std::printf("note: %s not found, real frames %s not checked (install opencv-doc)\n",
-                  a.c_str(), name);
+      std::printf("note: %s not found, real frames %s not checked %s\n", a.c_str(), name,
+                  kSampleDataHint);
       continue;
     }
     pairs.push_back({name, load_frame(a, std::nullopt), load_frame(b, std::nullopt)});
@@ -44,7 +47,7 @@ std::vector<RealPair> real_pairs(const std::string& dir) {
 // --dump-real DIR: the real frames as raw files and DIR/frames.txt ("name W H prev next" per
 // line) for the NEON cross test, which runs where OpenCV is not available.
 int dump_real(const std::string& dir) {
-  const std::vector<RealPair> pairs = real_pairs(PXFLOW_OPENCV_DATA);
+  const std::vector<RealPair> pairs = real_pairs(kSampleDataDir);
   if (pairs.empty()) return kSkip;
   std::filesystem::create_directories(dir);
   std::ofstream list(dir + "/frames.txt");
@@ -73,10 +76,16 @@ BatchRun backend_run(const std::string& row_name, int threads) {
 }
 
 int run(const std::string& isa) {
+  cpu::check_environment();  // the mask CTest set must be valid: a typo is a failure, not a skip
   // Whether the CPU has it, regardless of the mask this test was started with.
-  if (const std::string why = cpu::isa_unavailable(isa);
-      !why.empty() && why.find("masked") == std::string::npos) {
-    std::printf("skipped: %s (%s)\n", isa.c_str(), why.c_str());
+  const cpu::IsaInfo* info = cpu::find_isa(isa);
+  if (!info || !info->compiled()) {
+    std::printf("FAIL %s is not a compiled ISA of this build (known: %s)\n", isa.c_str(),
+                cpu::known_isas().c_str());
+    return 1;
+  }
+  if (!info->cpu_has()) {
+    std::printf("skipped: %s (this CPU lacks it: needs %s)\n", isa.c_str(), info->needs);
     return kSkip;
   }
   const std::string chosen = cpu::best_isa();
@@ -86,18 +95,19 @@ int run(const std::string& isa) {
     return 1;
   }
   std::vector<Group> groups = synthetic_corpus(120);
-  for (const RealPair& rp : real_pairs(PXFLOW_OPENCV_DATA))
+  for (const RealPair& rp : real_pairs(kSampleDataDir))
     for (Group& g : real_groups(rp.name, rp.prev.width, rp.prev.height, rp.prev.pixels.data(),
                                 rp.next.pixels.data()))
       groups.push_back(std::move(g));
-  int failed = 0, total = 0;
+  int failed = 0, total = 0, pairs = 0;
   for (const Group& g : groups) {
-    total += 2 * static_cast<int>(g.cases.size());
-    failed += check_group("cpu(" + isa + ")", g, backend_run("cpu", 0));
-    failed += check_group(isa, g, backend_run(isa, 1));
+    total += 2;
+    pairs += static_cast<int>(g.cases.size());
+    failed += check_group("cpu(" + isa + ")", g, backend_run("cpu", 0)) ? 0 : 1;
+    failed += check_group(isa, g, backend_run(isa, 1)) ? 0 : 1;
   }
-  std::printf("%s: %d of %d case runs failed (%zu groups)\n", isa.c_str(), failed, total,
-              groups.size());
+  std::printf("%s: %d of %d group runs failed (%zu groups, %d pairs, each run by cpu and %s)\n",
+              isa.c_str(), failed, total, groups.size(), pairs, isa.c_str());
   return failed == 0 ? 0 : 1;
 }
 

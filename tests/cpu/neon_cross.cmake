@@ -1,12 +1,12 @@
 # The NEON kernel, cross-compiled with Debian's aarch64-linux-gnu-g++ (g++-aarch64-linux-gnu)
-# together with the reference, the corpus and neon_cross_check.cpp, and run under qemu-aarch64
-# (qemu-user) against the cross sysroot. Without those tools the test reports itself skipped
+# together with the reference, the corpus, the exactness checker and neon_cross_check.cpp, and
+# run under qemu-aarch64 (qemu-user) against the cross sysroot. Without those tools the test reports itself skipped
 # (exit 77) with the reason, never passed.
 set(PXFLOW_AARCH64_SYSROOT /usr/aarch64-linux-gnu)
 find_program(PXFLOW_AARCH64_CXX aarch64-linux-gnu-g++)
 find_program(PXFLOW_QEMU_AARCH64 qemu-aarch64)
 
-if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64)$")
+if(arch STREQUAL "aarch64")
   return()  # native AArch64: cpu_path_neon already runs the kernel natively
 endif()
 
@@ -28,6 +28,10 @@ if(missing)
   return()
 endif()
 
+# Every source is compiled on its own, so that each kernel file of the ISA table's AArch64 rows
+# gets its row's flags only, as in the native build (kernels/cpu/isa_table.cmake).
+include(${PROJECT_SOURCE_DIR}/kernels/cpu/isa_table.cmake)
+pxflow_cpu_isas(aarch64 cross)
 set(src ${PROJECT_SOURCE_DIR})
 set(neon_cross_sources
   ${src}/reference/params.cpp ${src}/reference/grid.cpp ${src}/reference/poi_steps.cpp
@@ -35,18 +39,38 @@ set(neon_cross_sources
   ${src}/reference/kernel_local.cpp ${src}/reference/kernel_global.cpp
   ${src}/reference/estimate.cpp
   ${src}/hosts/corpus/synthetic.cpp
-  ${src}/kernels/cpu/poi_loop.cpp ${src}/kernels/cpu/swar.cpp ${src}/kernels/cpu/neon.cpp
+  ${src}/hosts/harness/exactness.cpp ${src}/hosts/harness/record_diff.cpp
+  ${src}/kernels/cpu/poi_loop.cpp ${src}/kernels/cpu/isa_table.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_corpus.cpp ${CMAKE_CURRENT_SOURCE_DIR}/neon_cross_check.cpp)
+foreach(name IN LISTS cross_NAMES)
+  list(APPEND neon_cross_sources ${src}/kernels/cpu/${name}.cpp)
+endforeach()
 set(neon_cross_binary ${CMAKE_CURRENT_BINARY_DIR}/neon_cross_check.aarch64)
+set(neon_cross_objects "")
+foreach(source IN LISTS neon_cross_sources)
+  get_filename_component(stem ${source} NAME_WE)
+  set(flags "")
+  if(stem IN_LIST cross_NAMES AND source MATCHES "/kernels/cpu/")
+    set(flags ${cross_${stem}_FLAGS})
+  endif()
+  set(object ${CMAKE_CURRENT_BINARY_DIR}/neon_cross/${stem}.o)
+  add_custom_command(
+    OUTPUT ${object}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/neon_cross
+    COMMAND ${PXFLOW_AARCH64_CXX} -std=c++20 -O2 -Wall -Wextra -ffp-contract=off ${flags}
+            -I${src}/reference -I${src}/hosts/corpus -I${src}/hosts/harness -I${src}/kernels/cpu
+            -I${CMAKE_CURRENT_SOURCE_DIR} -MD -MF ${object}.d -c ${source} -o ${object}
+    DEPENDS ${source}
+    DEPFILE ${object}.d
+    COMMENT "Cross-compiling ${stem}.cpp for AArch64 (aarch64-linux-gnu-g++)"
+    VERBATIM)
+  list(APPEND neon_cross_objects ${object})
+endforeach()
 add_custom_command(
   OUTPUT ${neon_cross_binary}
-  COMMAND ${PXFLOW_AARCH64_CXX} -std=c++20 -O2 -Wall -Wextra -ffp-contract=off
-          -I${src}/reference -I${src}/hosts/corpus -I${src}/kernels/cpu -I${CMAKE_CURRENT_SOURCE_DIR}
-          -MD -MF ${neon_cross_binary}.d
-          ${neon_cross_sources} -o ${neon_cross_binary}
-  DEPENDS ${neon_cross_sources}
-  DEPFILE ${neon_cross_binary}.d
-  COMMENT "Cross-compiling the NEON check for AArch64 (aarch64-linux-gnu-g++)"
+  COMMAND ${PXFLOW_AARCH64_CXX} ${neon_cross_objects} -o ${neon_cross_binary}
+  DEPENDS ${neon_cross_objects}
+  COMMENT "Linking the NEON check for AArch64"
   VERBATIM)
 add_custom_target(neon_cross_check ALL DEPENDS ${neon_cross_binary})
 

@@ -1,15 +1,16 @@
-// The CPU backends beyond bit-exactness (which cpu_path_check covers per ISA): the SWAR op
-// counts, thread-count invariance of a batch, the ISA mask, and the registry rows.
+// The CPU backends beyond the corpus (which cpu_path_check covers per ISA): the SWAR op counts,
+// thread-count invariance of a batch, the ISA mask and table, and the registry rows. Every
+// comparison with ref-original goes through the harness's exactness checker.
 #include <algorithm>
 #include <catch2/catch.hpp>
-#include <cstring>
 
-#include "cpu_corpus.hpp"
 #include "errors.hpp"
+#include "exactness.hpp"
 #include "grid.hpp"
 #include "isa_mask.hpp"
-#include "kernel.hpp"
+#include "isa_table.hpp"
 #include "registry.hpp"
+#include "run_helpers.hpp"
 #include "synthetic.hpp"
 
 using namespace pxflow;
@@ -27,17 +28,31 @@ OwnedPair all_pass_pair() {
   return op;
 }
 
-std::vector<PoiRecord> run_row(const std::string& name, int threads,
-                               std::span<const FramePair> pairs, const Params& p,
-                               OpCounts& counts) {
-  std::vector<PoiRecord> out(pairs.size() * poi_count(p));
-  std::memset(out.data(), 0xA5, out.size() * sizeof(PoiRecord));
-  find_backend(name).create(BackendOptions{threads, {}})->run(pairs, p, out, counts);
-  return out;
+// Runs a batch on `backend` through check_exact; `counts` gets the backend's op counts.
+Comparison exact(Backend& backend, const std::string& who, std::span<const FramePair> pairs,
+                 const Params& p, OpCounts& counts) {
+  std::vector<std::string> names;
+  for (std::size_t n = 0; n < pairs.size(); ++n) names.push_back("pair" + std::to_string(n));
+  return check_exact({who, "cpu_tests",
+                      std::to_string(p.width) + "x" + std::to_string(p.height) +
+                          " S=" + std::to_string(p.search_radius)},
+                     pairs, names, p,
+                     [&](std::span<const FramePair> batch, const Params& q,
+                         std::span<PoiRecord> out) { backend.run(batch, q, out, counts); });
 }
 
-bool same_bytes(const std::vector<PoiRecord>& a, const std::vector<PoiRecord>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(PoiRecord)) == 0;
+// The same with a fresh backend of row `name` on `threads` threads.
+Comparison exact(const std::string& name, int threads, std::span<const FramePair> pairs,
+                 const Params& p, OpCounts& counts) {
+  const auto backend = find_backend(name).create(BackendOptions{threads, {}});
+  return exact(*backend, name + " threads=" + std::to_string(threads), pairs, p, counts);
+}
+
+// ref-original's op counts for a batch.
+OpCounts reference_counts(std::span<const FramePair> pairs, const Params& p) {
+  OpCounts counts;
+  for (const FramePair& pair : pairs) test::run_ref(RefVariant::kOriginal, pair, p, &counts);
+  return counts;
 }
 
 }  // namespace
@@ -46,17 +61,17 @@ TEST_CASE("swar counts 91,520 SAD ops per px4flow-64 frame where all 64 POIs pas
   const OwnedPair op = all_pass_pair();
   const FramePair pair = op.view();
   const Params p = profile("px4flow-64");
-  OpCounts counts;
-  const auto recs = run_row("swar", 1, {&pair, 1}, p, counts);
-  REQUIRE(std::all_of(recs.begin(), recs.end(),
+  OpCounts ref_counts;
+  const auto ref = test::run_ref(RefVariant::kOriginal, pair, p, &ref_counts);
+  REQUIRE(std::all_of(ref.begin(), ref.end(),
                       [](const PoiRecord& r) { return r.status == kAccepted; }));
+  OpCounts counts;
+  const Comparison cmp = exact("swar", 1, {&pair, 1}, p, counts);
+  INFO(cmp.text());
+  CHECK(cmp.ok());
   CHECK(counts.counted);
   CHECK(counts.sad_ops == 91520);
   CHECK(counts.interpolations == 64 * 768);  // the ref-original way of counting
-  OpCounts ref_counts;
-  std::vector<PoiRecord> ref(recs.size());
-  reference_flow(RefVariant::kOriginal, pair, p, ref, ref_counts);
-  CHECK(same_bytes(ref, recs));
   CHECK(ref_counts.sad_ops == counts.sad_ops);
 }
 
@@ -66,16 +81,13 @@ TEST_CASE("a batch gives the same bytes whatever the thread count", "[cpu][threa
   std::vector<FramePair> pairs;
   for (const auto& op : owned) pairs.push_back(op.view());
   const Params p = profile("px4flow-64");
-  OpCounts ref_counts;
-  std::vector<PoiRecord> ref(pairs.size() * poi_count(p));
-  for (std::size_t n = 0; n < pairs.size(); ++n)
-    reference_flow(RefVariant::kOriginal, pairs[n], p,
-                   std::span(ref).subspan(n * poi_count(p), poi_count(p)), ref_counts);
+  const OpCounts ref_counts = reference_counts(pairs, p);
   for (const char* row : {"swar", "cpu"}) {
     for (int threads : {1, 2, 3, 0}) {
-      INFO(row << " with " << threads << " threads");
       OpCounts counts;
-      CHECK(same_bytes(ref, run_row(row, threads, pairs, p, counts)));
+      const Comparison cmp = exact(row, threads, pairs, p, counts);
+      INFO(cmp.text());
+      CHECK(cmp.ok());
       if (std::string(row) == "swar") CHECK(counts.sad_ops == ref_counts.sad_ops);
     }
   }
@@ -92,17 +104,17 @@ TEST_CASE("small batches are split into bands of grid rows, same bytes", "[cpu][
   for (std::size_t batch : {1u, 2u}) {
     std::vector<FramePair> pairs;
     for (std::size_t n = 0; n < batch; ++n) pairs.push_back(owned[n].view());
-    std::vector<PoiRecord> ref(batch * poi_count(p));
-    OpCounts ref_counts;
-    for (std::size_t n = 0; n < batch; ++n)
-      reference_flow(RefVariant::kOriginal, pairs[n], p,
-                     std::span(ref).subspan(n * poi_count(p), poi_count(p)), ref_counts);
+    const OpCounts ref_counts = reference_counts(pairs, p);
     for (int threads : {1, 2, 3, 7}) {
-      INFO("batch " << batch << ", " << threads << " threads");
+      INFO("batch " << batch);
       OpCounts counts;
-      CHECK(same_bytes(ref, run_row("swar", threads, pairs, p, counts)));
+      const Comparison swar = exact("swar", threads, pairs, p, counts);
+      INFO(swar.text());
+      CHECK(swar.ok());
       CHECK(counts.sad_ops == ref_counts.sad_ops);
-      CHECK(same_bytes(ref, run_row("cpu", threads, pairs, p, counts)));
+      const Comparison cpu = exact("cpu", threads, pairs, p, counts);
+      INFO(cpu.text());
+      CHECK(cpu.ok());
     }
   }
 }
@@ -113,25 +125,22 @@ TEST_CASE("a backend object runs many batches on its pool", "[cpu][threads]") {
   for (std::uint64_t s = 1; s <= 5; ++s) {
     std::vector<OwnedPair> owned = {random_pair(64, 64, 8, s), random_pair(64, 64, 8, s + 100)};
     const FramePair pairs[2] = {owned[0].view(), owned[1].view()};
-    std::vector<PoiRecord> got(2 * poi_count(p)), ref(2 * poi_count(p));
     OpCounts c;
-    backend->run(pairs, p, got, c);
-    for (int n = 0; n < 2; ++n)
-      reference_flow(RefVariant::kOriginal, pairs[n], p,
-                     std::span(ref).subspan(n * poi_count(p), poi_count(p)), c);
-    CHECK(same_bytes(ref, got));
+    const Comparison cmp = exact(*backend, "cpu batch " + std::to_string(s), pairs, p, c);
+    INFO(cmp.text());
+    CHECK(cmp.ok());
   }
 }
 
 TEST_CASE("the ISA mask restricts the dispatcher and rejects unknown names", "[cpu][mask]") {
-  CHECK_THROWS_AS(cpu::set_disabled_isas("avx2,bogus"), InputError);
+  CHECK_THROWS_AS(cpu::set_disabled_isas(cpu::compiled_isas().back() + ",bogus"), InputError);
   const std::string best = cpu::best_isa();
   REQUIRE_FALSE(best.empty());
   cpu::set_disabled_isas(best);
   CHECK(cpu::isa_unavailable(best) == "masked by --disable-isa");
   CHECK(cpu::best_isa() != best);
   CHECK_THROWS_AS(find_backend(best).create(BackendOptions{}), BackendError);
-  cpu::set_disabled_isas("swar, sse2,sse41,avx2,avx512bw,neon");
+  cpu::set_disabled_isas(cpu::known_isas());  // every name, ", "-separated (spaces ignored)
   CHECK(cpu::best_isa().empty());
   CHECK_FALSE(find_backend("cpu").probe().empty());
   cpu::set_disabled_isas("");
@@ -144,10 +153,26 @@ TEST_CASE("every compiled ISA and the dispatcher are registry rows", "[cpu][rows
     INFO(isa);
     const BackendRow& row = find_backend(isa);
     CHECK(row.name == isa);
+    CHECK(row.needs == cpu::find_isa(isa)->needs);
     CHECK(row.probe() == cpu::isa_unavailable(isa));
   }
   CHECK(find_backend("cpu").probe().empty());
-  CHECK(find_backend("swar").probe().empty());
+  CHECK(find_backend(cpu::compiled_isas().front()).probe().empty());  // the portable kernel
+}
+
+TEST_CASE("the ISA table: names, kernels and unknown names", "[cpu][table]") {
+  REQUIRE(cpu::isa_table().size() >= 2);
+  CHECK_FALSE(cpu::isa_table().front().cpu_has == nullptr);  // the portable row runs anywhere
+  CHECK(cpu::isa_table().front().cpu_has());
+  for (const cpu::IsaInfo& isa : cpu::isa_table()) {
+    INFO(isa.name);
+    CHECK(cpu::find_isa(isa.name) == &isa);
+    CHECK((isa.cpu_has == nullptr) == !isa.compiled());
+    // The accessor's kernel carries its row's name (the row, the file and the accessor agree).
+    if (isa.compiled() && isa.cpu_has()) CHECK(std::string(isa.kernel().name) == isa.name);
+  }
+  CHECK(cpu::find_isa("avx-512") == nullptr);
+  CHECK_THROWS_AS(cpu::isa_unavailable("avx-512"), InputError);
 }
 
 TEST_CASE("the widest search radius runs on every available ISA", "[cpu][radius]") {
@@ -158,12 +183,11 @@ TEST_CASE("the widest search radius runs on every available ISA", "[cpu][radius]
   validate(p);
   const OwnedPair op = random_pair(80, 80, 31, 5);
   const FramePair pair = op.view();
-  std::vector<PoiRecord> ref(poi_count(p));
-  OpCounts c;
-  reference_flow(RefVariant::kOriginal, pair, p, ref, c);
   for (const std::string& isa : cpu::compiled_isas()) {
     if (!cpu::isa_unavailable(isa).empty()) continue;
-    INFO(isa);
-    CHECK(same_bytes(ref, run_row(isa, 1, {&pair, 1}, p, c)));
+    OpCounts c;
+    const Comparison cmp = exact(isa, 1, {&pair, 1}, p, c);
+    INFO(cmp.text());
+    CHECK(cmp.ok());
   }
 }
