@@ -16,6 +16,7 @@
 __constant int kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
 __constant int kStepY[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
 
+// PoiRecord::dir and status values, identical to reference/record.hpp (kDirNone, PoiStatus).
 #define DIR_NONE 8u
 #define STATUS_DROPPED 0u
 #define STATUS_REJECTED 1u

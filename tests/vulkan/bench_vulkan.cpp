@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "errors.hpp"
+#include "exactness.hpp"
 #include "grid.hpp"
 #include "kernel.hpp"
 #include "registry.hpp"
@@ -68,8 +69,7 @@ struct Timing {
 Timing measure(Backend& b, const std::vector<FramePair>& views, const Params& p,
                const std::vector<PoiRecord>& expected, double min_time, bool& exact) {
   const std::size_t per = poi_count(p);
-  std::vector<PoiRecord> out(views.size() * per);
-  std::memset(out.data(), 0xA5, out.size() * sizeof(PoiRecord));
+  std::vector<PoiRecord> out = sentinel_records(views.size() * per);
   OpCounts counts;
   b.run(views, p, out, counts);
   exact = true;
