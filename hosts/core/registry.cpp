@@ -64,6 +64,8 @@ OpenedBackend open_backend(const BackendRow& row, const BackendOptions& options)
   if (!o.why_not.empty()) return o;
   try {
     o.backend = row.create(options);
+  } catch (const InputError&) {
+    throw;  // the user's input (e.g. a --device that names no device): exit 2, never a skip
   } catch (const std::exception& e) {
     o.why_not = std::string("set-up failed: ") + e.what();
   }

@@ -28,7 +28,8 @@ const BackendRow& default_backend();
 
 // Opening a backend, the one way every command does it: the probe, then create(). A backend
 // that cannot run leaves `backend` null and says why in `why_not` (check and bench report it
-// as skipped).
+// as skipped). An InputError from create() (the user's input, e.g. a --device that names no
+// device) is not a skip: it propagates (exit 2).
 struct OpenedBackend {
   std::unique_ptr<Backend> backend;
   std::string why_not;  // empty when opened
