@@ -8,6 +8,7 @@
 #include "exactness.hpp"
 #include "grid.hpp"
 #include "opencl_test_support.hpp"
+#include "registry.hpp"
 #include "synthetic.hpp"
 
 namespace pxflow::test {
@@ -48,6 +49,14 @@ TEST_CASE("opencl: a device name that matches nothing is a clear input error", "
   require_opencl_device();
   CHECK(message_of("no-such-device-xyz") ==
         "opencl: no device name contains 'no-such-device-xyz'" + known_devices());
+}
+
+TEST_CASE("opencl: check and bench stop on a bad --device instead of skipping", "[opencl]") {
+  require_opencl_device();
+  for (const char* name : {"opencl", "opencl-item", "opencl-group"}) {
+    INFO(name);
+    CHECK_THROWS_AS(open_backend(find_backend(name), {0, "no-such-device-xyz"}), InputError);
+  }
 }
 
 TEST_CASE("opencl: devices are chosen by index or case-insensitive name substring", "[opencl]") {

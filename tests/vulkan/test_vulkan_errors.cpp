@@ -71,6 +71,8 @@ TEST_CASE("vulkan: a bad --device gives one clear error", "[vulkan]") {
   // A device that names nothing is the user's input (exit 2 in the CLI), as for OpenCL.
   CHECK_THROWS_AS(row.create({.threads = 0, .device = "99"}), InputError);
   CHECK_THROWS_AS(row.create({.threads = 0, .device = "no-such-device"}), InputError);
+  // check and bench open rows through open_backend: a bad --device is an error there, not a skip.
+  CHECK_THROWS_AS(open_backend(row, {.threads = 0, .device = "99"}), InputError);
   CHECK(row.create({.threads = 0, .device = "0"}) != nullptr);
   CHECK(row.create({.threads = 0, .device = "llvmpipe"}) != nullptr);
 }
