@@ -2,12 +2,24 @@
 
 namespace pxflow {
 
-std::vector<int> grid_axis(int side, const Params& p) {
+GridAxis grid_axis_triple(int side, const Params& p) {
   const int lo = p.search_radius + 1;
   const int hi = side - (p.search_radius + 1) - p.tile;
-  const int step = (hi - lo) / p.blocks + 1;  // integer division, as in the firmware
+  GridAxis a;
+  a.first = lo;
+  a.step = (hi - lo) / p.blocks + 1;  // integer division, as in the firmware
+  // The firmware's loop `for (c = lo; c < hi; c += step)`; a step below 1 only arises when
+  // hi <= lo, where that loop runs zero times.
+  a.count = hi > lo ? (hi - lo - 1) / a.step + 1 : 0;
+  if (a.step < 1) a.step = 1;
+  return a;
+}
+
+std::vector<int> grid_axis(int side, const Params& p) {
+  const GridAxis a = grid_axis_triple(side, p);
   std::vector<int> coords;
-  for (int c = lo; c < hi; c += step) coords.push_back(c);
+  coords.reserve(static_cast<std::size_t>(a.count));
+  for (int k = 0; k < a.count; ++k) coords.push_back(a.first + k * a.step);
   return coords;
 }
 
@@ -22,7 +34,8 @@ std::vector<Poi> poi_grid(const Params& p) {
 }
 
 std::size_t poi_count(const Params& p) {
-  return grid_axis(p.width, p).size() * grid_axis(p.height, p).size();
+  return static_cast<std::size_t>(grid_axis_triple(p.width, p).count) *
+         static_cast<std::size_t>(grid_axis_triple(p.height, p).count);
 }
 
 }  // namespace pxflow

@@ -12,9 +12,18 @@ struct Poi {
   int y = 0;
 };
 
-// Coordinates along one axis of length `side`: lo = S+1, hi = side-(S+1)-T,
-// step = (hi-lo)/B + 1, values lo, lo+step, ... while < hi. Kept exactly as the firmware
-// computes it: for S = 3, 6 or 7 at 64 pixels it yields only 7 values.
+// One axis of the grid as device kernels take it: coordinates first, first + step, ...,
+// count of them. lo = S+1, hi = side-(S+1)-T, step = (hi-lo)/B + 1 (integer division, as the
+// firmware computes it), count = the values lo + k*step that are < hi. Kept exactly as the
+// firmware computes it: for S = 3, 6 or 7 at 64 pixels it yields only 7 values.
+struct GridAxis {
+  int first = 0;
+  int step = 1;
+  int count = 0;
+};
+GridAxis grid_axis_triple(int side, const Params& p);
+
+// The coordinates of grid_axis_triple(side, p), spelled out.
 std::vector<int> grid_axis(int side, const Params& p);
 
 // All POIs in record order: y outer, x inner, both ascending.

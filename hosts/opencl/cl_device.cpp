@@ -1,8 +1,8 @@
 #include "cl_device.hpp"
 
 #include <algorithm>
-#include <cctype>
 
+#include "device_choice.hpp"
 #include "errors.hpp"
 
 namespace pxflow::cl {
@@ -30,17 +30,6 @@ std::vector<cl_device_id> devices_of(cl_platform_id platform) {
   return ids;
 }
 
-std::string lowercase(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
-bool is_index(const std::string& s) {
-  return !s.empty() && s.size() < 9 &&
-         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
-}
-
 }  // namespace
 
 std::vector<DeviceEntry> list_devices() {
@@ -63,33 +52,17 @@ std::vector<DeviceEntry> list_devices() {
   return out;
 }
 
-std::string describe(const std::vector<DeviceEntry>& devices) {
-  std::string text;
-  for (const auto& d : devices)
-    text += (text.empty() ? "" : ", ") + std::to_string(d.index) + " = " + d.name + " (" +
-            d.platform_name + ")";
-  return text;
-}
-
 const DeviceEntry& choose_device(const std::vector<DeviceEntry>& devices,
                                  const std::string& selector) {
   if (devices.empty())
     throw BackendError("opencl: no OpenCL platform or device found (install pocl-opencl-icd)");
-  const std::string known = " (devices: " + describe(devices) + ")";
   if (selector.empty()) {
     auto gpu = std::find_if(devices.begin(), devices.end(), [](const auto& d) { return d.gpu; });
     return gpu != devices.end() ? *gpu : devices.front();
   }
-  if (is_index(selector)) {
-    const std::size_t index = std::stoul(selector);
-    if (index >= devices.size())
-      throw InputError("opencl: device index " + selector + " is out of range" + known);
-    return devices[index];
-  }
-  const std::string wanted = lowercase(selector);
-  for (const auto& d : devices)
-    if (lowercase(d.name).find(wanted) != std::string::npos) return d;
-  throw InputError("opencl: no device name contains '" + selector + "'" + known);
+  std::vector<DeviceLabel> labels;
+  for (const auto& d : devices) labels.push_back({d.name, d.platform_name});
+  return devices[device_index_for("opencl", labels, selector)];
 }
 
 }  // namespace pxflow::cl

@@ -21,13 +21,10 @@ struct DeviceEntry {
 // installed; throws BackendError when the driver fails otherwise.
 std::vector<DeviceEntry> list_devices();
 
-// "0 = <name> (<platform>), 1 = ..." for error messages.
-std::string describe(const std::vector<DeviceEntry>& devices);
-
-// The device `selector` names: empty picks the first GPU, else the first device; a decimal
-// number is an index into `devices`; anything else is a case-insensitive substring of the
-// device name (the first match wins). Throws InputError for an index out of range or a name
-// that matches nothing, BackendError when there is no device at all.
+// The device `selector` names: empty picks the first GPU, else the first device; otherwise the
+// one rule of hosts/core/device_choice.hpp (an index into `devices`, or a case-insensitive
+// substring of the device name), whose InputError names a selector that fits no device.
+// Throws BackendError when there is no device at all.
 const DeviceEntry& choose_device(const std::vector<DeviceEntry>& devices,
                                  const std::string& selector);
 

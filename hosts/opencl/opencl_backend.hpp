@@ -1,11 +1,11 @@
-// The `opencl` backend: the kernel of kernels/opencl/opencl.cl run through the OpenCL C API on
+// The opencl family's backend: a kernel of kernels/opencl/opencl.cl run through the OpenCL C API on
 // one device (PoCL's CPU device here, any OpenCL 1.2 driver elsewhere). A batch is packed into
 // one frame buffer and run with one launch, split into chunks only where the device's limits
 // (max allocation, global memory) demand it. Work decomposition and measurements: docs/opencl.md.
 #pragma once
-#include <optional>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "backend.hpp"
@@ -13,8 +13,9 @@
 
 namespace pxflow {
 
-// Which kernel of opencl.cl runs. The registry row uses kAuto; the tests check every layout and
-// the benchmark compares them (docs/opencl.md).
+// Which kernel of opencl.cl runs. Each is a registry row (opencl_rows.cpp: `opencl` = kAuto,
+// `opencl-item`, `opencl-group`), so `pxflow check` and `bench` run every layout the backend
+// ships (docs/opencl.md).
 enum class OpenclLayout {
   kAuto,         // item-per-poi on CPU devices, group-per-poi on GPUs and accelerators
   kGroupPerPoi,  // flow_group_per_poi: a work-group per POI, window in local memory

@@ -11,11 +11,11 @@ namespace {
 
 // (first coordinate, step, count, unused) of one grid axis (SPEC sec. 2), as the kernel reads it.
 cl_int4 grid_vector(int side, const Params& p) {
-  const std::vector<int> axis = grid_axis(side, p);
+  const GridAxis axis = grid_axis_triple(side, p);
   cl_int4 v{};
-  v.s[0] = axis.front();
-  v.s[1] = axis.size() > 1 ? axis[1] - axis[0] : 1;
-  v.s[2] = static_cast<cl_int>(axis.size());
+  v.s[0] = axis.first;
+  v.s[1] = axis.step;
+  v.s[2] = axis.count;
   return v;
 }
 

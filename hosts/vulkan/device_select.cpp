@@ -1,10 +1,6 @@
 #include "device_select.hpp"
 
-#include "errors.hpp"
-
-#include <algorithm>
-#include <cctype>
-
+#include "device_choice.hpp"
 #include "vk_error.hpp"
 
 namespace pxflow::vk {
@@ -26,22 +22,17 @@ int preference_rank(VkPhysicalDeviceType type) {
   }
 }
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-bool all_digits(std::string_view s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
-std::size_t checked(const std::vector<DeviceCandidate>& devices, std::size_t index,
-                    std::string_view request) {
-  if (!devices[index].unusable.empty())
-    fail("device '" + std::string(request) + "' (" + devices[index].name +
-         ") cannot run the kernel: " + devices[index].unusable);
-  return index;
+std::size_t default_device(const std::vector<DeviceCandidate>& devices) {
+  std::size_t best = devices.size();
+  for (std::size_t i = 0; i < devices.size(); ++i) {
+    if (!devices[i].unusable.empty()) continue;
+    if (best == devices.size() ||
+        preference_rank(devices[i].type) < preference_rank(devices[best].type))
+      best = i;
+  }
+  if (best == devices.size())
+    fail("no Vulkan device can run the kernel: " + devices[0].name + ": " + devices[0].unusable);
+  return best;
 }
 
 }  // namespace
@@ -61,43 +52,18 @@ std::string_view device_type_name(VkPhysicalDeviceType type) {
   }
 }
 
-std::string describe_devices(const std::vector<DeviceCandidate>& devices) {
-  std::string text;
-  for (std::size_t i = 0; i < devices.size(); ++i) {
-    text += (i ? ", " : "") + std::to_string(i) + " '" + devices[i].name + "' (" +
-            std::string(device_type_name(devices[i].type)) + ")";
-  }
-  return text.empty() ? "none" : text;
-}
-
 std::size_t select_device(const std::vector<DeviceCandidate>& devices, std::string_view request) {
   if (devices.empty()) fail("no Vulkan device found (install mesa-vulkan-drivers for lavapipe)");
-  if (request.empty()) {
-    std::size_t best = devices.size();
-    for (std::size_t i = 0; i < devices.size(); ++i) {
-      if (!devices[i].unusable.empty()) continue;
-      if (best == devices.size() ||
-          preference_rank(devices[i].type) < preference_rank(devices[best].type))
-        best = i;
-    }
-    if (best == devices.size())
-      fail("no Vulkan device can run the kernel: " + devices[0].name + ": " + devices[0].unusable);
-    return best;
-  }
-  if (all_digits(request)) {
-    const std::size_t index =
-        request.size() > 9 ? devices.size() : std::stoul(std::string(request));
-    if (index >= devices.size())
-      // A --device that names nothing is the user's input, not a driver failure: exit 2.
-      throw InputError("vulkan: device index " + std::string(request) +
-                       " is out of range (devices: " + describe_devices(devices) + ")");
-    return checked(devices, index, request);
-  }
-  for (std::size_t i = 0; i < devices.size(); ++i)
-    if (lower(devices[i].name).find(lower(request)) != std::string::npos)
-      return checked(devices, i, request);
-  throw InputError("vulkan: no Vulkan device name contains '" + std::string(request) +
-                   "' (devices: " + describe_devices(devices) + ")");
+  if (request.empty()) return default_device(devices);
+  std::vector<DeviceLabel> labels;
+  for (const auto& d : devices) labels.push_back({d.name, std::string(device_type_name(d.type))});
+  const std::size_t index = device_index_for("vulkan", labels, request);
+  // A device the user named that exists but cannot run the kernel is the driver's limit, not a
+  // typo: a BackendError, as when no device can run it.
+  if (!devices[index].unusable.empty())
+    fail("device '" + std::string(request) + "' (" + devices[index].name +
+         ") cannot run the kernel: " + devices[index].unusable);
+  return index;
 }
 
 }  // namespace pxflow::vk

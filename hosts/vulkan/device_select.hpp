@@ -17,13 +17,11 @@ struct DeviceCandidate {
 };
 
 // The index of the device to use. `request` empty: the first usable discrete GPU, else
-// integrated GPU, else virtual GPU, else CPU, else other. All digits: that enumeration index.
-// Otherwise: the first device whose name contains `request` (case-insensitive). Throws
-// BackendError naming the request and listing the devices when nothing fits.
+// integrated GPU, else virtual GPU, else CPU, else other. Otherwise the one rule of
+// hosts/core/device_choice.hpp (an enumeration index, or a case-insensitive substring of the
+// name), whose InputError names a request that fits no device. Throws BackendError when there
+// is no device, when no device can run the kernel, or when the one requested cannot.
 std::size_t select_device(const std::vector<DeviceCandidate>& devices, std::string_view request);
-
-// "0 'llvmpipe (LLVM 15.0.6, 256 bits)' (cpu), 1 ..." for error messages.
-std::string describe_devices(const std::vector<DeviceCandidate>& devices);
 
 std::string_view device_type_name(VkPhysicalDeviceType type);
 

@@ -15,7 +15,6 @@ namespace pxflow::vk {
 // Mirrors `Problem` in flow.comp, word for word.
 struct FlowPushConstants {
   std::uint32_t width;
-  std::uint32_t search_radius;
   std::uint32_t feature_threshold;
   std::uint32_t sad_threshold;
   std::uint32_t grid_x0;

@@ -20,35 +20,19 @@ static_assert(std::endian::native == std::endian::little);
 
 namespace {
 
-// The grid of SPEC §2 as the shader needs it: first coordinate, step and count per axis.
-struct AxisGrid {
-  std::uint32_t first = 0;
-  std::uint32_t step = 1;
-  std::uint32_t count = 0;
-};
-
-AxisGrid axis_grid(int side, const Params& p) {
-  const auto coords = grid_axis(side, p);
-  AxisGrid a;
-  a.count = static_cast<std::uint32_t>(coords.size());
-  if (!coords.empty()) a.first = static_cast<std::uint32_t>(coords[0]);
-  if (coords.size() > 1) a.step = static_cast<std::uint32_t>(coords[1] - coords[0]);
-  return a;
-}
-
 vk::FlowPushConstants push_constants(const Params& p, const vk::BatchLayout& layout) {
-  const AxisGrid gx = axis_grid(p.width, p);
-  const AxisGrid gy = axis_grid(p.height, p);
+  // The grid of SPEC §2 as the shader needs it: first coordinate, step and count per axis.
+  const GridAxis gx = grid_axis_triple(p.width, p);
+  const GridAxis gy = grid_axis_triple(p.height, p);
   vk::FlowPushConstants pc{};
   pc.width = static_cast<std::uint32_t>(p.width);
-  pc.search_radius = static_cast<std::uint32_t>(p.search_radius);
   pc.feature_threshold = static_cast<std::uint32_t>(p.feature_threshold);
   pc.sad_threshold = static_cast<std::uint32_t>(p.sad_threshold);
-  pc.grid_x0 = gx.first;
-  pc.grid_step_x = gx.step;
-  pc.grid_nx = gx.count;
-  pc.grid_y0 = gy.first;
-  pc.grid_step_y = gy.step;
+  pc.grid_x0 = static_cast<std::uint32_t>(gx.first);
+  pc.grid_step_x = static_cast<std::uint32_t>(gx.step);
+  pc.grid_nx = static_cast<std::uint32_t>(gx.count);
+  pc.grid_y0 = static_cast<std::uint32_t>(gy.first);
+  pc.grid_step_y = static_cast<std::uint32_t>(gy.step);
   pc.pois_per_pair = static_cast<std::uint32_t>(layout.pois_per_pair);
   pc.words_per_frame = layout.words_per_frame;
   return pc;

@@ -34,7 +34,9 @@ struct VulkanConfig {
 
 class VulkanBackend final : public Backend {
  public:
-  explicit VulkanBackend(const VulkanConfig& config);  // throws BackendError
+  // Throws InputError for a config.device that names no device (hosts/core/device_choice.hpp),
+  // BackendError when the driver fails.
+  explicit VulkanBackend(const VulkanConfig& config);
   ~VulkanBackend() override;
 
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,

@@ -1,14 +1,16 @@
-// The PX4FLOW per-POI kernel (SPEC sec. 3) in OpenCL C 1.2, the `opencl` backend's device code.
+// The PX4FLOW per-POI kernel (SPEC sec. 3) in OpenCL C 1.2, the opencl family's device code.
 //
-// Memory layout shared with the host (hosts/opencl/opencl_backend.cpp):
+// Memory layout shared with the host (hosts/opencl/opencl_launch.cpp):
 //   frames:  for each pair of the launch, prev then next, each width*height bytes, rows packed.
 //   records: for each pair, one PoiRecord per grid POI in grid order, written as 8 little-endian
 //            uint words with exactly the byte layout of reference/record.hpp.
 //
-// Two work decompositions share the per-POI helpers below (docs/opencl.md compares them):
-//   flow_group_per_poi: one work-group per POI; the 8x8 prev block and the search window of next
-//                       are staged in local memory, work-items split the candidates.
-//   flow_item_per_poi:  one work-item per POI, everything from global memory.
+// Two work decompositions share the per-POI helpers below, each a registry row
+// (hosts/opencl/opencl_rows.cpp; docs/opencl.md compares them and says why both ship):
+//   flow_group_per_poi (row opencl-group): one work-group per POI; the 8x8 prev block and the
+//                       search window of next are staged in local memory, work-items split
+//                       the candidates.
+//   flow_item_per_poi (row opencl-item): one work-item per POI, everything from global memory.
 //
 // Floor averaging everywhere: hadd(), never rhadd() (rhadd rounds up, SPEC sec. 7).
 
@@ -16,6 +18,7 @@
 __constant int kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
 __constant int kStepY[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
 
+// PoiRecord::dir and status values, identical to reference/record.hpp (kDirNone, PoiStatus).
 #define DIR_NONE 8u
 #define STATUS_DROPPED 0u
 #define STATUS_REJECTED 1u

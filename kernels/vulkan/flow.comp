@@ -6,9 +6,9 @@
 // invocations of a work-group become the SIMD lanes of the JIT-compiled loop; on a GPU a batch of
 // frame pairs supplies the parallelism (4096 pairs x 64 POIs = 262,144 invocations).
 //
-// No 8-bit storage or shaderInt8: a frame is a run of 32-bit words holding 4 pixels each (pixel n in byte
-// n & 3 of word n >> 2, little-endian), and every value is handled as 4 packed bytes, like the
-// firmware's USAD8 / UHADD8 (SPEC §7).
+// No 8-bit storage or shaderInt8: a frame is a run of 32-bit words holding 4 pixels each (pixel n
+// in byte n & 3 of word n >> 2, little-endian), and every value is handled as 4 packed bytes, like
+// the firmware's USAD8 / UHADD8 (SPEC §7).
 #version 450
 #extension GL_EXT_control_flow_attributes : require  // [[unroll]]: see integer_search
 
@@ -28,14 +28,13 @@ uint frame_word(uint i) { return texelFetch(frame_texels, int(i)).x; }
 layout(std430, set = 0, binding = 1) writeonly buffer Records { uint record_words[]; };
 
 layout(push_constant) uniform Problem {
-  uint width;              // W = row stride in pixels
-  uint search_radius;      // S, unused: the shader reads the specialization constant S
+  uint width;              // W = row stride in pixels (S is the specialization constant S)
   uint feature_threshold;  // FT
   uint sad_threshold;      // VT
   uint grid_x0;            // first POI column, column step, POIs per grid row (SPEC §2)
   uint grid_step_x;
   uint grid_nx;
-  uint grid_y0;            // first POI row, row step
+  uint grid_y0;  // first POI row, row step
   uint grid_step_y;
   uint pois_per_pair;
   uint words_per_frame;
@@ -94,7 +93,7 @@ uint feature_value(uint blk[16]) {
 // registers instead of memory. [[unroll]] makes sure of it for the block-row loop: left as a
 // loop, it indexed prev's block words dynamically and the search was about 20 % slower.
 layout(constant_id = 1) const int S = 4;
-const int kSide = 2 * S + 1;           // candidates per axis
+const int kSide = 2 * S + 1;                // candidates per axis
 const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of one row
 
 // Why max, not abs: |a - b| = 2 max(a, b) - a - b, so SAD(dx, dy) = 2 M - A - N with M the sum of
@@ -187,14 +186,14 @@ void half_rows(uint next, uint m, out HalfRow q0, out HalfRow q1) {
 // One block row's 4 packed pixels b against the eight direction values built from rows r-1, r,
 // r+1 of next. The diagonal d(u, v) is the floor average of two floored HORIZONTAL averages.
 void add_half_sads(uint b, HalfRow up, HalfRow mid, HalfRow down, inout uint sub[8]) {
-  sub[0] += usad8(b, mid.h);                     // h(c, r)
-  sub[1] += usad8(b, uhadd8(mid.h, down.h));     // d(c, r)
-  sub[2] += usad8(b, uhadd8(mid.p, down.p));     // g(c, r)
-  sub[3] += usad8(b, uhadd8(mid.hl, down.hl));   // d(c-1, r)
-  sub[4] += usad8(b, mid.hl);                    // h(c-1, r)
-  sub[5] += usad8(b, uhadd8(up.hl, mid.hl));     // d(c-1, r-1)
-  sub[6] += usad8(b, uhadd8(up.p, mid.p));       // g(c, r-1)
-  sub[7] += usad8(b, uhadd8(up.h, mid.h));       // d(c, r-1)
+  sub[0] += usad8(b, mid.h);                    // h(c, r)
+  sub[1] += usad8(b, uhadd8(mid.h, down.h));    // d(c, r)
+  sub[2] += usad8(b, uhadd8(mid.p, down.p));    // g(c, r)
+  sub[3] += usad8(b, uhadd8(mid.hl, down.hl));  // d(c-1, r)
+  sub[4] += usad8(b, mid.hl);                   // h(c-1, r)
+  sub[5] += usad8(b, uhadd8(up.hl, mid.hl));    // d(c-1, r-1)
+  sub[6] += usad8(b, uhadd8(up.p, mid.p));      // g(c, r-1)
+  sub[7] += usad8(b, uhadd8(up.h, mid.h));      // d(c, r-1)
 }
 
 // Step 3: the eight half-pixel SADs around the integer match at pixel n of next. Rows -1 .. 8 of
@@ -215,6 +214,13 @@ void half_pixel_sads(uint blk[16], uint next, uint n, out uint sub[8]) {
   }
 }
 
+// PoiRecord::status and dir values, identical to reference/record.hpp (PoiStatus, kDirNone).
+const uint kStatusDropped = 0u;   // feature < FT
+const uint kStatusRejected = 1u;  // best integer SAD >= VT
+const uint kStatusAccepted = 2u;
+const uint kDirNone = 8u;  // the integer match won the half-pixel vote
+
+// Half-pixel step (sx, sy) of direction k (SPEC §3 table); k = kDirNone is the integer match.
 const int kStepX[9] = int[9](1, 1, 0, -1, -1, -1, 0, 1, 0);
 const int kStepY[9] = int[9](0, 1, 1, 1, 0, -1, -1, -1, 0);
 
@@ -251,7 +257,7 @@ void main() {
 
   uint feature = feature_value(blk);
   if (feature < pc.feature_threshold) {
-    write_record(item, x, y, 0u, feature, 0, 0, 0u, 8u, zero, 0, 0);
+    write_record(item, x, y, kStatusDropped, feature, 0, 0, 0u, kDirNone, zero, 0, 0);
     return;
   }
 
@@ -260,21 +266,22 @@ void main() {
   int by;
   integer_search(blk, next, n, best, bx, by);
   if (!(best < pc.sad_threshold)) {
-    write_record(item, x, y, 1u, feature, bx, by, best, 8u, zero, 0, 0);
+    write_record(item, x, y, kStatusRejected, feature, bx, by, best, kDirNone, zero, 0, 0);
     return;
   }
 
   uint sub[8];
   half_pixel_sads(blk, next, uint(int(n) + by * int(pc.width) + bx), sub);
-  // The vote starts from the integer match (dir 8); k = 0..7 replaces only when strictly smaller.
+  // The vote starts from the integer match (kDirNone); k = 0..7 replaces only when strictly
+  // smaller.
   uint vote = best;
-  uint dir = 8u;
+  uint dir = kDirNone;
   for (uint k = 0u; k < 8u; ++k) {
     if (sub[k] < vote) {
       vote = sub[k];
       dir = k;
     }
   }
-  write_record(item, x, y, 2u, feature, bx, by, best, dir, sub, 2 * bx + kStepX[dir],
+  write_record(item, x, y, kStatusAccepted, feature, bx, by, best, dir, sub, 2 * bx + kStepX[dir],
                2 * by + kStepY[dir]);
 }

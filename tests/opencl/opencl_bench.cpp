@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "errors.hpp"
+#include "exactness.hpp"
 #include "grid.hpp"
 #include "opencl_backend.hpp"
 #include "registry.hpp"
@@ -130,8 +131,7 @@ void bench_one(const Options& o, CpuRunner& cpu, OpenclBackend& ocl, int size, i
   const Params p = params_for(size);
   const Batch b = make_batch(p, batch);
   const std::size_t records = b.pairs.size() * poi_count(p);
-  std::vector<PoiRecord> expected(records), got(records);
-  std::memset(got.data(), 0xA5, records * sizeof(PoiRecord));
+  std::vector<PoiRecord> expected(records), got = sentinel_records(records);
   OpCounts counts;
   cpu.run(b.pairs, p, expected);
   ocl.run(b.pairs, p, got, counts);

@@ -1,20 +1,16 @@
 #include "opencl_test_support.hpp"
 
 #include <catch2/catch.hpp>
-#include <cstring>
 #include <map>
 #include <memory>
 
+#include "exactness.hpp"
 #include "frame_io.hpp"
-#include "grid.hpp"
-#include "kernel.hpp"
 #include "registry.hpp"
+#include "sample_data.hpp"
 
 namespace pxflow::test {
 namespace {
-
-constexpr const char* kSampleDir = "/usr/share/doc/opencv-doc/examples/data/";
-constexpr std::uint8_t kSentinel = 0xA5;
 
 struct Shape {
   Params params;
@@ -43,7 +39,9 @@ Shape shape_of(const std::string& profile) {
 const Frame& sample(const std::string& name) {
   static std::map<std::string, std::unique_ptr<Frame>> frames;
   auto& slot = frames[name];
-  if (!slot) slot = std::make_unique<Frame>(load_frame(kSampleDir + name + ".png", std::nullopt));
+  if (!slot)
+    slot = std::make_unique<Frame>(
+        load_frame(std::string(kSampleDataDir) + "/" + name + ".png", std::nullopt));
   return *slot;
 }
 
@@ -83,13 +81,6 @@ Corpus build_corpus(const std::string& profile) {
   return c;
 }
 
-const char* field_at(std::size_t offset) {
-  static const char* names[32] = {"x",       "x",  "y",  "y",   "status", "pad0", "feature",
-                                  "feature", "dx", "dy", "sad", "sad",    "dir",  "pad1"};
-  if (offset < 14) return names[offset];
-  return offset < 30 ? "sub" : (offset == 30 ? "hx" : "hy");
-}
-
 }  // namespace
 
 void require_opencl_device() {
@@ -110,43 +101,23 @@ const Corpus& corpus(const std::string& profile) {
   return *slot;
 }
 
-const std::vector<PoiRecord>& reference_records(const std::string& profile) {
-  static std::map<std::string, std::vector<PoiRecord>> cache;
-  auto& records = cache[profile];
-  if (records.empty()) {
+const ReferenceAnswer& reference(const std::string& profile) {
+  static std::map<std::string, std::unique_ptr<ReferenceAnswer>> cache;
+  auto& slot = cache[profile];
+  if (!slot) {
     const Corpus& c = corpus(profile);
-    const std::size_t per_pair = poi_count(c.params);
-    records.resize(c.pairs.size() * per_pair);
-    OpCounts counts;
-    for (std::size_t n = 0; n < c.pairs.size(); ++n)
-      reference_flow(RefVariant::kOriginal, c.pairs[n], c.params,
-                     std::span(records).subspan(n * per_pair, per_pair), counts);
+    slot = std::make_unique<ReferenceAnswer>(reference_answer(c.pairs, c.params));
   }
-  return records;
+  return *slot;
 }
 
-std::vector<std::string> mismatches(OpenclBackend& backend, const std::string& profile) {
+Comparison compare(OpenclBackend& backend, const std::string& profile, const std::string& who) {
   const Corpus& c = corpus(profile);
-  const auto& expected = reference_records(profile);
-  std::vector<PoiRecord> got(expected.size());
-  std::memset(got.data(), kSentinel, got.size() * sizeof(PoiRecord));
+  const ReferenceAnswer& want = reference(profile);
+  std::vector<PoiRecord> got = sentinel_records(want.records.size());
   OpCounts counts;
-  backend.run(c.pairs, c.params, got, counts);
-
-  std::vector<std::string> lines;
-  const std::size_t per_pair = poi_count(c.params);
-  for (std::size_t n = 0; n < got.size(); ++n) {
-    const auto* a = reinterpret_cast<const std::uint8_t*>(&got[n]);
-    const auto* b = reinterpret_cast<const std::uint8_t*>(&expected[n]);
-    if (std::memcmp(a, b, sizeof(PoiRecord)) == 0) continue;
-    std::size_t at = 0;
-    while (a[at] == b[at]) ++at;
-    lines.push_back(c.names[n / per_pair] + " POI " + std::to_string(n % per_pair) + " (" +
-                    std::to_string(expected[n].x) + "," + std::to_string(expected[n].y) +
-                    "): field " + field_at(at) + " byte " + std::to_string(at) + " is " +
-                    std::to_string(a[at]) + ", ref-original has " + std::to_string(b[at]));
-  }
-  return lines;
+  backend.run(c.pairs, c.params, got, counts);  // an exception fails the test with its message
+  return compare_with_reference({who, "opencl-corpus", profile}, c.names, c.params, want, got, 10);
 }
 
 }  // namespace pxflow::test

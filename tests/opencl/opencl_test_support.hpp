@@ -1,9 +1,11 @@
-// Shared by the opencl tests: the device requirement, the corpus per profile, and the
-// bit-exact comparison of a batch against ref-original.
+// Shared by the opencl tests: the device requirement, the corpus per profile (what is
+// opencl-specific: frame strides, S = 31, sizes up to 640x480), and the bit-exact comparison of
+// a batch against ref-original through the shared exactness checker.
 #pragma once
 #include <string>
 #include <vector>
 
+#include "exactness.hpp"
 #include "frame.hpp"
 #include "opencl_backend.hpp"
 #include "params.hpp"
@@ -30,12 +32,13 @@ struct Corpus {
 std::vector<std::string> corpus_profiles();
 const Corpus& corpus(const std::string& profile);
 
-// ref-original's records for every pair of the corpus, computed once.
-const std::vector<PoiRecord>& reference_records(const std::string& profile);
+// ref-original's answer for every pair of the corpus, computed once.
+const ReferenceAnswer& reference(const std::string& profile);
 
-// Runs the whole corpus as one batch through `backend` into a sentinel-filled buffer and
-// returns one line per differing record (pair name, POI, first differing field), empty when
-// every record is identical to ref-original's byte for byte.
-std::vector<std::string> mismatches(OpenclBackend& backend, const std::string& profile);
+// Runs the whole corpus as one batch through `backend` into sentinel-filled records and
+// compares them with ref-original's through the shared exactness checker
+// (hosts/harness/exactness.hpp): one line per mismatch, in `pxflow check`'s format, labelled
+// "FAIL <who> case=opencl-corpus[<profile>]".
+Comparison compare(OpenclBackend& backend, const std::string& profile, const std::string& who);
 
 }  // namespace pxflow::test

@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cctype>
-#include <cstring>
 
 #include "errors.hpp"
+#include "exactness.hpp"
 #include "grid.hpp"
 #include "opencl_test_support.hpp"
+#include "registry.hpp"
 #include "synthetic.hpp"
 
 namespace pxflow::test {
@@ -22,22 +23,40 @@ std::string message_of(const std::string& selector) {
   return "no InputError for device '" + selector + "'";
 }
 
+// The device list as the shared device rule (hosts/core/device_choice.hpp) prints it.
+std::string known_devices() {
+  std::string text;
+  for (const auto& d : cl::list_devices())
+    text += (text.empty() ? "" : ", ") + std::to_string(d.index) + " '" + d.name + "' (" +
+            d.platform_name + ")";
+  return " (devices: " + text + ")";
+}
+
 }  // namespace
 
+// The rule and the text are the ones of tests/vulkan/test_vulkan_errors.cpp: one helper.
 TEST_CASE("opencl: a device index out of range is a clear input error", "[opencl]") {
   require_opencl_device();
   const std::string index = std::to_string(cl::list_devices().size());
-  const std::string message = message_of(index);
-  INFO(message);
-  CHECK(message.find("device index " + index + " is out of range") != std::string::npos);
-  CHECK(message.find(cl::list_devices().front().name) != std::string::npos);  // lists devices
+  CHECK(message_of(index) ==
+        "opencl: device index " + index + " is out of range" + known_devices());
+  // Any run of digits is an index, never a name: too many digits are out of range too.
+  CHECK(message_of("12345678901234567890") ==
+        "opencl: device index 12345678901234567890 is out of range" + known_devices());
 }
 
 TEST_CASE("opencl: a device name that matches nothing is a clear input error", "[opencl]") {
   require_opencl_device();
-  const std::string message = message_of("no-such-device-xyz");
-  INFO(message);
-  CHECK(message.find("no device name contains 'no-such-device-xyz'") != std::string::npos);
+  CHECK(message_of("no-such-device-xyz") ==
+        "opencl: no device name contains 'no-such-device-xyz'" + known_devices());
+}
+
+TEST_CASE("opencl: check and bench stop on a bad --device instead of skipping", "[opencl]") {
+  require_opencl_device();
+  for (const char* name : {"opencl", "opencl-item", "opencl-group"}) {
+    INFO(name);
+    CHECK_THROWS_AS(open_backend(find_backend(name), {0, "no-such-device-xyz"}), InputError);
+  }
 }
 
 TEST_CASE("opencl: devices are chosen by index or case-insensitive name substring", "[opencl]") {
@@ -63,8 +82,7 @@ TEST_CASE("opencl: a pair beyond the buffer limit is unsupported and leaves no r
 
   const OwnedPair pair = random_pair(64, 64, 4, 1);
   const FramePair view = pair.view();
-  std::vector<PoiRecord> out(poi_count(p));
-  std::memset(out.data(), 0xA5, out.size() * sizeof(PoiRecord));
+  std::vector<PoiRecord> out = sentinel_records(poi_count(p));
   OpCounts counts;
   CHECK_THROWS_AS(backend.run({&view, 1}, p, out, counts), BackendError);
   const auto* bytes = reinterpret_cast<const std::uint8_t*>(out.data());

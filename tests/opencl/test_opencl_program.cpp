@@ -9,6 +9,7 @@
 #include "errors.hpp"
 #include "opencl_kernel_source.hpp"
 #include "opencl_test_support.hpp"
+#include "record.hpp"
 #include "registry.hpp"
 
 namespace pxflow::test {
@@ -25,6 +26,18 @@ TEST_CASE("opencl: the embedded kernel is exactly kernels/opencl/opencl.cl", "[o
   std::ostringstream bytes;
   bytes << file.rdbuf();
   CHECK(opencl_kernel_source() == bytes.str());
+}
+
+TEST_CASE("opencl: the kernel's status and direction values are reference/record.hpp's",
+          "[opencl]") {
+  const std::string source(opencl_kernel_source());
+  for (const auto& [name, value] :
+       {std::pair{"STATUS_DROPPED", int{kDropped}}, std::pair{"STATUS_REJECTED", int{kRejected}},
+        std::pair{"STATUS_ACCEPTED", int{kAccepted}}, std::pair{"DIR_NONE", int{kDirNone}}}) {
+    const std::string line = "#define " + std::string(name) + " " + std::to_string(value) + "u\n";
+    INFO(line);
+    CHECK(source.find(line) != std::string::npos);
+  }
 }
 
 TEST_CASE("opencl: kernels/opencl/opencl.cl builds with -Werror on every OpenCL device",

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "errors.hpp"
+#include "exactness.hpp"
 #include "grid.hpp"
 #include "kernel.hpp"
 #include "registry.hpp"
@@ -64,18 +65,32 @@ struct Timing {
   double cpu_us = 0;
 };
 
-// Checks the first run against `expected` (per distinct pair), then repeats for `min_time`.
-Timing measure(Backend& b, const std::vector<FramePair>& views, const Params& p,
-               const std::vector<PoiRecord>& expected, double min_time, bool& exact) {
+// ref-original's answer for a batch that cycles through the distinct pairs of `distinct`.
+ReferenceAnswer cycled(const ReferenceAnswer& distinct, std::size_t batch, std::size_t per) {
+  ReferenceAnswer a;
+  for (std::size_t n = 0; n < batch; ++n) {
+    const auto first = distinct.records.begin() + (n % kDistinctPairs) * per;
+    a.records.insert(a.records.end(), first, first + per);
+    a.results.push_back(distinct.results[n % kDistinctPairs]);
+  }
+  return a;
+}
+
+// Checks the first run against ref-original through the shared exactness checker (the first
+// mismatch line goes to stderr), then repeats for `min_time`.
+Timing measure(const std::string& who, Backend& b, const std::vector<FramePair>& views,
+               const Params& p, const ReferenceAnswer& distinct, double min_time, bool& exact) {
   const std::size_t per = poi_count(p);
-  std::vector<PoiRecord> out(views.size() * per);
-  std::memset(out.data(), 0xA5, out.size() * sizeof(PoiRecord));
+  std::vector<PoiRecord> out = sentinel_records(views.size() * per);
   OpCounts counts;
   b.run(views, p, out, counts);
-  exact = true;
+  std::vector<std::string> names;
   for (std::size_t n = 0; n < views.size(); ++n)
-    exact = exact && std::memcmp(&out[n * per], &expected[(n % kDistinctPairs) * per],
-                                 per * sizeof(PoiRecord)) == 0;
+    names.push_back("shifted-texture/" + std::to_string(n % kDistinctPairs));
+  const Comparison c = compare_with_reference({who, "bench", std::to_string(views.size())}, names,
+                                              p, cycled(distinct, views.size(), per), out, 1);
+  exact = c.ok();
+  if (!exact) std::fprintf(stderr, "%s", c.text().c_str());
   int runs = 0;
   const double w0 = now(CLOCK_MONOTONIC), c0 = now(CLOCK_PROCESS_CPUTIME_ID);
   do {
@@ -125,21 +140,19 @@ int main(int argc, char** argv) {
     for (const Point& pt : points) {
       if (pt.label.rfind(only, 0) != 0) continue;
       std::vector<OwnedPair> owned;
-      std::vector<PoiRecord> expected(kDistinctPairs * poi_count(pt.params));
-      OpCounts counts;
+      std::vector<FramePair> distinct_views;
       for (int n = 0; n < kDistinctPairs; ++n) {
         owned.push_back(shifted_texture_pair(pt.params.width, pt.params.height,
                                              pt.params.search_radius, 0xBE7C4 + n));
-        reference_flow(RefVariant::kOriginal, owned.back().view(), pt.params,
-                       std::span(expected).subspan(n * poi_count(pt.params), poi_count(pt.params)),
-                       counts);
+        distinct_views.push_back(owned.back().view());
       }
+      const ReferenceAnswer expected = reference_answer(distinct_views, pt.params);
       for (int batch : batches) {
         std::vector<FramePair> views;
         for (int n = 0; n < batch; ++n) views.push_back(owned[n % kDistinctPairs].view());
         bool cpu_ok = false, vk_ok = false;
-        const Timing c = measure(*cpu, views, pt.params, expected, min_time, cpu_ok);
-        const Timing v = measure(*vulkan, views, pt.params, expected, min_time, vk_ok);
+        const Timing c = measure(cpu_name, *cpu, views, pt.params, expected, min_time, cpu_ok);
+        const Timing v = measure("vulkan", *vulkan, views, pt.params, expected, min_time, vk_ok);
         std::printf("%-26s %6d  %-8s %12.1f %12.1f %12.0f %10s\n", pt.label.c_str(), batch,
                     cpu_name.substr(0, 8).c_str(), c.wall_us, c.cpu_us, 1e6 / c.wall_us,
                     cpu_ok ? "1" : "WRONG");

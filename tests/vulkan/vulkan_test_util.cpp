@@ -1,25 +1,19 @@
 #include "vulkan_test_util.hpp"
 
 #include <catch2/catch.hpp>
-#include <cstring>
-#include <sstream>
 
 #include "errors.hpp"
+#include "exactness.hpp"
 #include "frame_io.hpp"
-#include "grid.hpp"
-#include "kernel.hpp"
+#include "sample_data.hpp"
 
 namespace pxflow::test {
 namespace {
 
-std::string describe(const PoiRecord& r) {
-  std::ostringstream s;
-  s << "(x " << r.x << " y " << r.y << " status " << int(r.status) << " pad0 " << int(r.pad0)
-    << " feature " << r.feature << " dx " << int(r.dx) << " dy " << int(r.dy) << " sad " << r.sad
-    << " dir " << int(r.dir) << " pad1 " << int(r.pad1) << " sub";
-  for (auto v : r.sub) s << ' ' << v;
-  s << " hx " << int(r.hx) << " hy " << int(r.hy) << ")";
-  return s.str();
+// "64x64 S=4 B=8", the parameters a mismatch line names.
+std::string setting_of(const Params& p) {
+  return std::to_string(p.width) + "x" + std::to_string(p.height) +
+         " S=" + std::to_string(p.search_radius) + " B=" + std::to_string(p.blocks);
 }
 
 OwnedPair crop(const Frame& a, const Frame& b, const std::string& name, int w, int h) {
@@ -47,30 +41,27 @@ std::unique_ptr<VulkanBackend> make_vulkan(const VulkanConfig& config) {
   return nullptr;
 }
 
+void expect_exact(VulkanBackend& backend, std::span<const FramePair> views,
+                  std::span<const std::string> names, const Params& p) {
+  const Comparison c = check_exact(
+      {"vulkan", "vulkan-corpus", setting_of(p)}, views, names, p,
+      [&](std::span<const FramePair> pairs, const Params& params, std::span<PoiRecord> out) {
+        OpCounts counts;
+        backend.run(pairs, params, out, counts);
+      },
+      10);
+  INFO(c.mismatches << " mismatches\n" << c.text());
+  CHECK(c.ok());
+}
+
 void expect_exact(VulkanBackend& backend, const std::vector<OwnedPair>& pairs, const Params& p) {
-  const std::size_t per_pair = poi_count(p);
   std::vector<FramePair> views;
-  for (const auto& op : pairs) views.push_back(op.view());
-  std::vector<PoiRecord> got(views.size() * per_pair), want(got.size());
-  std::memset(got.data(), 0xA5, got.size() * sizeof(PoiRecord));  // catches unwritten records
-  std::memset(want.data(), 0x5A, want.size() * sizeof(PoiRecord));
-  OpCounts counts;
-  backend.run(views, p, got, counts);
-  std::size_t bad = 0;
-  for (std::size_t n = 0; n < views.size(); ++n) {
-    std::span<PoiRecord> ref(want.data() + n * per_pair, per_pair);
-    reference_flow(RefVariant::kOriginal, views[n], p, ref, counts);
-    for (std::size_t i = 0; i < per_pair; ++i) {
-      const PoiRecord& a = got[n * per_pair + i];
-      const PoiRecord& b = ref[i];
-      if (std::memcmp(&a, &b, sizeof a) == 0) continue;
-      if (++bad <= 5)
-        UNSCOPED_INFO(pairs[n].name << " " << p.width << "x" << p.height << " S=" << p.search_radius
-                                    << " B=" << p.blocks << " poi " << i << ": vulkan "
-                                    << describe(a) << " ref-original " << describe(b));
-    }
+  std::vector<std::string> names;
+  for (const auto& op : pairs) {
+    views.push_back(op.view());
+    names.push_back(op.name);
   }
-  CHECK(bad == 0);
+  expect_exact(backend, views, names, p);
 }
 
 Params make_params(const std::string& name, int width, int height, int search_radius, int blocks) {
@@ -84,7 +75,7 @@ Params make_params(const std::string& name, int width, int height, int search_ra
 }
 
 std::vector<OwnedPair> real_pairs(int w, int h) {
-  const std::string dir = "/usr/share/doc/opencv-doc/examples/data/";
+  const std::string dir = std::string(kSampleDataDir) + "/";
   std::vector<OwnedPair> out;
   for (const std::string name : {"rubberwhale", "basketball"}) {
     const Frame a = load_frame(dir + name + "1.png", std::nullopt);

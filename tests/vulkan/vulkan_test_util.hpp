@@ -1,7 +1,8 @@
 // Shared by the Vulkan tests: backend creation that fails loudly (the build enabled Vulkan, so
-// a backend that cannot run here is a failure, not a skip), and the bit-exact comparison against
-// ref-original with sentinel-filled output.
+// a backend that cannot run here is a failure, not a skip), the bit-exact comparison against
+// ref-original through the shared exactness checker, and the real frames cropped to a size.
 #pragma once
+#include <span>
 #include <string>
 #include <vector>
 
@@ -14,10 +15,14 @@ namespace pxflow::test {
 // The backend, or a Catch2 FAIL naming the reason it cannot be created.
 std::unique_ptr<VulkanBackend> make_vulkan(const VulkanConfig& config = {});
 
-// Runs all `pairs` as ONE batch on `backend` into a 0xA5-filled buffer, runs ref-original pair by
-// pair, and CHECKs that every record matches byte for byte. Mismatches print the pair's name,
-// the POI index and both records.
+// Runs all pairs as ONE batch on `backend` through the shared exactness checker
+// (hosts/harness/exactness.hpp: sentinel-filled records, each compared byte for byte with
+// ref-original's, the frame flow by its float bits) and CHECKs that nothing differs.
+// Mismatches print in `pxflow check`'s format, labelled "FAIL vulkan case=vulkan-corpus[<WxH S
+// B>]" with the pair's name.
 void expect_exact(VulkanBackend& backend, const std::vector<OwnedPair>& pairs, const Params& p);
+void expect_exact(VulkanBackend& backend, std::span<const FramePair> views,
+                  std::span<const std::string> names, const Params& p);
 
 // A named profile with overrides, validated.
 Params make_params(const std::string& profile, int width, int height, int search_radius = -1,
