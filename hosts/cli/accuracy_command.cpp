@@ -36,7 +36,8 @@ Command add_accuracy_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(0, 40));
   sub->add_option("--seed", o->seed, "Seed of the synthetic motions")
-      ->check(seed_value())->capture_default_str();
+      ->check(seed_value())
+      ->capture_default_str();
   sub->add_option("--threads", o->threads, "Threads for OpenCV and the backend alike")
       ->capture_default_str()
       ->check(CLI::Range(1, 1024));

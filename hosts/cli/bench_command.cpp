@@ -2,12 +2,12 @@
 #include <fstream>
 #include <iostream>
 
-#include "output_file.hpp"
 #include "bench.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "list_option.hpp"
+#include "output_file.hpp"
 
 namespace pxflow::cli {
 namespace {

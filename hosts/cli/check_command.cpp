@@ -2,11 +2,11 @@
 #include <fstream>
 #include <iostream>
 
-#include "output_file.hpp"
 #include "check.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "list_option.hpp"
+#include "output_file.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -42,7 +42,8 @@ int run_check_command(const CheckArgs& a) {
                 b.passed + b.failed, b.pairs, b.not_applicable, b.seconds, b.reason.c_str());
   std::printf("%ld passed, %ld failed, %ld skipped\n", r.passed, r.failed, r.skipped);
   if (r.compared == 0)
-    std::printf("nothing was checked: no backend but the reference ran a case (see the skips above)\n");
+    std::printf(
+        "nothing was checked: no backend but the reference ran a case (see the skips above)\n");
   if (!a.json_path.empty()) write_output_file(a.json_path, check_json(r).dump(2) + "\n");
   return r.ok() ? 0 : 1;
 }

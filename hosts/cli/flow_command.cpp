@@ -120,9 +120,9 @@ Command add_flow_command(CLI::App& app) {
   sub->add_option("PREV", o->prev_path, "First frame (image file or .raw)")->required();
   sub->add_option("NEXT", o->next_path, "Second frame (same size)")->required();
   return {sub, [o, draw] {
-           o->draw_given = draw->count() > 0;
-           return run_flow(*o);
-         }};
+            o->draw_given = draw->count() > 0;
+            return run_flow(*o);
+          }};
 }
 
 }  // namespace pxflow::cli

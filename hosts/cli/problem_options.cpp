@@ -37,8 +37,9 @@ Params ProblemOptions::resolve(std::optional<std::pair<int, int>> frame) const {
     p.height = h;
   }
   if (p.gyro_comp)
-    throw InputError("--set gyro_comp=1: pxflow takes no gyro rates, so the compensation would "
-                     "have nothing to add; leave gyro_comp at 0");
+    throw InputError(
+        "--set gyro_comp=1: pxflow takes no gyro rates, so the compensation would "
+        "have nothing to add; leave gyro_comp at 0");
   validate(p);
   return p;
 }

@@ -162,7 +162,8 @@ Command add_report_command(CLI::App& app) {
                   "Use this `pxflow bench --json` file instead of running the bench");
   sub->add_option("--backends", a->backends, "Comma-separated backends (default: all)");
   sub->add_option("--seed", a->seed, "Seed of the check's random pairs")
-      ->check(seed_value())->capture_default_str();
+      ->check(seed_value())
+      ->capture_default_str();
   sub->add_flag("--quick", a->quick,
                 "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
   sub->add_flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");

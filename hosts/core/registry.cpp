@@ -89,8 +89,9 @@ void check_device_option(std::span<const BackendRow* const> rows, const std::str
     if (r->has_devices) return;
   for (const BackendRow& r : backend_rows())
     if (r.has_devices) with += (with.empty() ? "" : ", ") + r.name;
-  throw InputError("--device " + device + ": no selected backend has devices to choose from (" +
-                   (with.empty() ? std::string("none in this build does") : "only " + with + " do") + ")");
+  throw InputError(
+      "--device " + device + ": no selected backend has devices to choose from (" +
+      (with.empty() ? std::string("none in this build does") : "only " + with + " do") + ")");
 }
 
 void check_batch(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out) {

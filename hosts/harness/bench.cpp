@@ -10,8 +10,8 @@
 #include <x86intrin.h>
 #endif
 
-#include "grid.hpp"
 #include "exactness.hpp"
+#include "grid.hpp"
 #include "registry.hpp"
 #include "synthetic.hpp"
 

@@ -36,7 +36,8 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
   for (const auto& name : o.require) {
     if (name == "all") continue;
     find_backend(name);  // unknown names are bad input
-    if (std::none_of(out.begin(), out.end(), [&](const Contender& c) { return c.row->name == name; }))
+    if (std::none_of(out.begin(), out.end(),
+                     [&](const Contender& c) { return c.row->name == name; }))
       throw InputError("--require " + name +
                        ": not among the backends of this run (add it to --backends)");
   }

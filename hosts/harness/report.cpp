@@ -1,4 +1,3 @@
-#include "output_file.hpp"
 #include "report.hpp"
 
 #include <unistd.h>
@@ -13,6 +12,7 @@
 #include <thread>
 
 #include "errors.hpp"
+#include "output_file.hpp"
 #include "svg_chart.hpp"
 
 namespace pxflow {

@@ -1,4 +1,3 @@
-#include "output_file.hpp"
 #include "draw_flow.hpp"
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 
 #include "errors.hpp"
 #include "grid.hpp"
+#include "output_file.hpp"
 
 namespace pxflow {
 namespace {
@@ -137,19 +137,13 @@ void draw_caption(cv::Mat& img, int top, const FrameResult& result,
 }  // namespace
 
 void check_draw_path(const std::string& path, std::span<const std::string> inputs) {
-  namespace fs = std::filesystem;
-  check_output_path("--draw", path, inputs);
-  const fs::path p(path);
-  std::string ext = p.extension().string();
+  if (path.empty()) check_output_path("--draw", path);  // "needs a file name"
+  std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char ch) { return std::tolower(ch); });
   if (ext != ".png")
     throw InputError("--draw " + path + ": the picture is written as PNG; name it *.png");
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw InputError("--draw " + path + ": no such directory " + dir.string());
-  if (fs::is_directory(p, ec)) throw InputError("--draw " + path + ": is a directory");
+  check_output_path("--draw", path, inputs);
 }
 
 void draw_flow(const std::string& path, const FrameView& prev, const Params& p,

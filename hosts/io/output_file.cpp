@@ -18,7 +18,8 @@ namespace {
 std::string errno_text() { return std::strerror(errno); }
 
 bool same_file(const std::string& a, const std::string& b) {
-  struct stat sa {}, sb {};
+  struct stat sa {
+  }, sb{};
   return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
          sa.st_ino == sb.st_ino;
 }
@@ -42,10 +43,10 @@ void check_output_path(const std::string& option, const std::string& path,
   if (path.empty()) throw InputError(option + " needs a file name (got an empty one)");
   const fs::path p(path);
   std::error_code ec;
-  if (fs::is_directory(p, ec)) throw InputError(option + " " + path + ": is a folder");
+  if (fs::is_directory(p, ec)) throw InputError(option + " " + path + ": is a directory");
   const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
   if (!fs::is_directory(dir, ec))
-    throw InputError(option + " " + path + ": no such folder " + dir.string());
+    throw InputError(option + " " + path + ": no such directory " + dir.string());
   for (const std::string& in : inputs)
     if (same_file(path, in))
       throw InputError(option + " " + path + ": is an input (" + in +

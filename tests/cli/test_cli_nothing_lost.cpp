@@ -2,8 +2,9 @@
 // binary: an output never overwrites an input, a lost write is an error (files and stdout), an
 // output file is replaced only when complete, options that would have no effect are refused,
 // and a check that compared nothing is not a pass.
-#include <catch2/catch.hpp>
 #include <unistd.h>
+
+#include <catch2/catch.hpp>
 
 #include "bad_input.hpp"
 #include "run_program.hpp"
@@ -36,13 +37,13 @@ TEST_CASE("an output path that is one of the inputs is refused before any work",
 }
 
 TEST_CASE("a failed write is an error: stdout and files", "[cli][lost]") {
-  const auto to_full = test::run_program("/bin/sh", {"-c", std::string(PXFLOW_BINARY) +
-                                                              " flow --json " + kPrev + " " + kNext +
-                                                              " > /dev/full"});
+  const auto to_full = test::run_program(
+      "/bin/sh",
+      {"-c", std::string(PXFLOW_BINARY) + " flow --json " + kPrev + " " + kNext + " > /dev/full"});
   CHECK(to_full.exit_code == 1);
   CHECK(to_full.err.find("cannot write to standard output") != std::string::npos);
-  const auto check = run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only",
-                                 "--json", "/dev/full"});
+  const auto check = run_pxflow(
+      {"check", "--backends", "ref-original,ref-local", "--generated-only", "--json", "/dev/full"});
   CHECK(check.exit_code == 1);
   CHECK(check.err.find("cannot write /dev/full") != std::string::npos);
 }
@@ -57,8 +58,8 @@ TEST_CASE("a JSON file is replaced only when complete; a failed run leaves it in
                     "not among the backends");
   CHECK(slurp(json) == "{\"previous\": true}\n");
   // A good run replaces it whole, and leaves no temporary beside it.
-  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
-                      json})
+  REQUIRE(run_pxflow(
+              {"check", "--backends", "ref-original,ref-local", "--generated-only", "--json", json})
               .exit_code == 0);
   CHECK(slurp(json).find("\"backends\"") != std::string::npos);
   CHECK(run_pxflow({"check", "--help"}).exit_code == 0);

@@ -82,7 +82,8 @@ TEST_CASE("gap8 chunked POI split gives the same records", "[gap8][no-sanitizer]
   const Params p = profile("px4flow-head");
   const std::vector<OwnedPair> corpus = gap8_corpus(p, 4, 77);
   for (int cores : {3, 8}) {
-    for (Gap8Variant v : {Gap8Variant::kLocal, Gap8Variant::kFast}) {  // fast: tables on 3 cores too
+    for (Gap8Variant v :
+         {Gap8Variant::kLocal, Gap8Variant::kFast}) {  // fast: tables on 3 cores too
       Gap8Backend backend(v, gap8_host::RunOptions{cores, true, true});
       require_exact({std::string("gap8-") + gap8_variant(v).name + " chunked on " +
                          std::to_string(cores) + " cores",

@@ -81,8 +81,8 @@ TEST_CASE("pxflow report leaves the GAP8 section out for other backends or with 
 namespace pxflow::test {
 
 TEST_CASE("gap8 at another profile shows no paper figures beside the model", "[gap8]") {
-  const auto r = run_pxflow({"gap8", "--profile", "px4flow-head", "--variant", "original",
-                             "--cores", "1"});
+  const auto r =
+      run_pxflow({"gap8", "--profile", "px4flow-head", "--variant", "original", "--cores", "1"});
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.find("no paper figure is shown") != std::string::npos);
   CHECK(r.out.find("717.2k") == std::string::npos);  // the paper's 1-core cycles

@@ -7,9 +7,9 @@
 
 #include "errors.hpp"
 #include "frame_io.hpp"
-#include "output_file.hpp"
 #include "gap8_cli.hpp"
 #include "gap8_study.hpp"
+#include "output_file.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -84,7 +84,8 @@ int run_gap8(const Gap8Options& o) {
   const FramePair pair{frames.prev.view(), frames.next.view()};
   const gap8_study::Study study = gap8_study::run_study(pair, frames.name, p, options);
   gap8_study::print_tables(study);
-  if (!o.json_path.empty()) write_output_file(o.json_path, gap8_study::to_json(study).dump(2) + "\n");
+  if (!o.json_path.empty())
+    write_output_file(o.json_path, gap8_study::to_json(study).dump(2) + "\n");
   return 0;
 }
 

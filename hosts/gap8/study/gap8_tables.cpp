@@ -112,8 +112,9 @@ void print_tables(const Study& s) {
               s.options.mhz, s.options.contention ? "on" : "off",
               s.options.chunked ? "in chunks" : "round robin");
   if (!s.options.paper_problem)
-    std::printf("note: the paper's tables are for px4flow-64 on 64x64 frames; these parameters "
-                "differ, so no paper figure is shown beside the model's\n");
+    std::printf(
+        "note: the paper's tables are for px4flow-64 on 64x64 frames; these parameters "
+        "differ, so no paper figure is shown beside the model's\n");
   for (const PaperTable& t : paper_tables(s)) {
     std::printf("\n%s\n  %-28s %-9s %12s %12s %9s\n", t.title.c_str(), "", "variant", "model",
                 "paper", "diff");
