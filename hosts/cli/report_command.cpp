@@ -13,6 +13,7 @@
 #include "estimate.hpp"
 #include "grid.hpp"
 #include "list_option.hpp"
+#include "output_file.hpp"
 #include "registry.hpp"
 #include "report.hpp"
 #include "truth_pairs.hpp"
@@ -89,22 +90,53 @@ void add_pictures(ReportInputs& in, const ReportArgs& a) {
   }
 }
 
-Json read_json(const std::string& path) {
+// A results file of `pxflow check --json` (kind "check") or `pxflow bench --json` ("bench"),
+// checked for the keys the report reads before any work: the wrong or a malformed file is one
+// line and exit 2, never an internal error half-way through.
+Json read_json(const std::string& option, const std::string& path, const char* kind) {
   std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
+  if (!in) throw InputError(option + " " + path + ": cannot open");
+  Json j;
   try {
-    return Json::parse(in);
+    j = Json::parse(in);
   } catch (const std::exception&) {
-    throw InputError(path + ": not valid JSON (expected the output of pxflow check/bench --json)");
+    throw InputError(option + " " + path + ": not valid JSON (expected the output of pxflow " +
+                     kind + " --json)");
   }
+  const bool is_check = j.is_object() && j.contains("backends") && j["backends"].is_array() &&
+                        j.contains("passed") && j.contains("failed");
+  const bool is_bench = j.is_object() && j.contains("rows") && j["rows"].is_array();
+  if (std::string(kind) == "check" ? !is_check : !is_bench)
+    throw InputError(option + " " + path + ": not the output of pxflow " + kind + " --json" +
+                     (is_check ? " (it is a check file)" : is_bench ? " (it is a bench file)" : ""));
+  try {  // every field the report reads, with its type
+    if (is_check)
+      for (const auto& b : j["backends"]) {
+        (void)b.at("name").get<std::string>(), (void)b.at("state").get<std::string>();
+        (void)b.at("passed").get<long>(), (void)b.at("failed").get<long>();
+      }
+    else
+      for (const auto& r : j["rows"]) (void)r.at("backend").get<std::string>();
+  } catch (const std::exception& e) {
+    throw InputError(option + " " + path + ": a malformed " + kind + " file (" + e.what() + ")");
+  }
+  return j;
 }
 
 int run_report(const ReportArgs& a) {
   ReportInputs in;
   const std::string backends = a.backends.empty() ? "" : " --backends " + a.backends;
   in.report_command = "pxflow report --out " + a.out_dir + backends + (a.quick ? " --quick" : "");
+  // Inputs first, so that a wrong file is refused before minutes of work.
+  if (!a.check_json.empty()) in.check = read_json("--check-json", a.check_json, "check");
+  if (!a.bench_json.empty()) in.bench = read_json("--bench-json", a.bench_json, "bench");
+  std::vector<std::string> inputs;
+  for (const std::string* f : {&a.check_json, &a.bench_json})
+    if (!f->empty()) inputs.push_back(*f);
+  for (const char* name : {"report.md", "report.html", "results.json", "results.csv"})
+    check_not_an_input("--out", a.out_dir + "/" + name, inputs);
+  prepare_report_dir(a.out_dir);  // before any work: a folder that cannot be made fails first
   if (!a.check_json.empty()) {
-    in.check = read_json(a.check_json);
     in.check_command = "pxflow check --json " + a.check_json + " (as recorded in that file)";
   } else {
     CheckOptions o;
@@ -117,7 +149,6 @@ int run_report(const ReportArgs& a) {
     in.check = check_json(r);
   }
   if (!a.bench_json.empty()) {
-    in.bench = read_json(a.bench_json);
     in.bench_command = "pxflow bench --json " + a.bench_json + " (as recorded in that file)";
   } else {
     BenchOptions o;
@@ -136,7 +167,6 @@ int run_report(const ReportArgs& a) {
   }
   if (!a.no_accuracy) {
     add_accuracy(in, a);
-    std::filesystem::create_directories(a.out_dir);
     add_pictures(in, a);
   }
   add_family_sections(in, a);

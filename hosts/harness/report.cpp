@@ -303,11 +303,28 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
 
 }  // namespace
 
+constexpr const char* kManifest = ".pxflow-report";
+
+void prepare_report_dir(const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || !fs::is_directory(out_dir))
+    throw InputError("--out " + out_dir + ": cannot create the folder");
+  std::ifstream manifest(fs::path(out_dir) / kManifest);
+  for (std::string name; std::getline(manifest, name);) {
+    // Only plain file names the report itself writes: never a path, never anything else.
+    if (name.empty() || name.find('/') != std::string::npos || name == "." || name == "..")
+      continue;
+    const fs::path f = fs::path(out_dir) / name;
+    if (fs::is_regular_file(fs::symlink_status(f, ec))) fs::remove(f, ec);
+  }
+}
+
 void write_report(const std::string& out_dir, const ReportInputs& in) {
   std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec || !std::filesystem::is_directory(out_dir))
-    throw InputError("--out " + out_dir + ": cannot create the folder");
+  if (!std::filesystem::is_directory(out_dir, ec))
+    throw InputError("--out " + out_dir + ": no such folder (prepare_report_dir first)");
   const Json m = machine();
   const std::string intro = "Made by `" + in.report_command + "` on " +
                             m["host"].get<std::string>() + " (" + m["cpu"].get<std::string>() +
@@ -336,6 +353,9 @@ void write_report(const std::string& out_dir, const ReportInputs& in) {
   write_file(dir / "report.html", render_html(secs, intro, dir));
   write_file(dir / "results.json", results.dump(2) + "\n");
   write_file(dir / "results.csv", csv(in.bench));
+  std::string manifest = "report.md\nreport.html\nresults.json\nresults.csv\n";
+  for (const auto& p : in.pictures) manifest += p.file + "\n";
+  write_file(dir / kManifest, manifest);
 }
 
 }  // namespace pxflow

@@ -38,7 +38,12 @@ struct ReportInputs {
   std::vector<Section> sections;
 };
 
-// Writes the four files into out_dir (created if needed); throws InputError when it cannot.
+// Creates out_dir if needed (InputError when it cannot) and removes the files a previous report
+// wrote there, as its manifest (.pxflow-report) lists them, and nothing else. Call it before any
+// file of the new report is written.
+void prepare_report_dir(const std::string& out_dir);
+
+// Writes the four files into out_dir, then the manifest listing them and the pictures.
 void write_report(const std::string& out_dir, const ReportInputs& in);
 
 }  // namespace pxflow

@@ -47,6 +47,11 @@ void check_output_path(const std::string& option, const std::string& path,
   const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
   if (!fs::is_directory(dir, ec))
     throw InputError(option + " " + path + ": no such directory " + dir.string());
+  check_not_an_input(option, path, inputs);
+}
+
+void check_not_an_input(const std::string& option, const std::string& path,
+                        std::span<const std::string> inputs) {
   for (const std::string& in : inputs)
     if (same_file(path, in))
       throw InputError(option + " " + path + ": is an input (" + in +

@@ -21,6 +21,10 @@ struct OutputError : std::runtime_error {
 void check_output_path(const std::string& option, const std::string& path,
                        std::span<const std::string> inputs = {});
 
+// Throws InputError when `path` is the same file (device and inode) as one of `inputs`.
+void check_not_an_input(const std::string& option, const std::string& path,
+                        std::span<const std::string> inputs);
+
 // Writes `bytes` to `path` as described above; throws OutputError when any step fails.
 void write_output_file(const std::string& path, std::string_view bytes);
 

@@ -111,7 +111,7 @@ TEST_CASE("profile and --set reach the kernel", "[cli][json]") {
   CHECK(strict["quality"] == 0);
 }
 
-TEST_CASE("text summary and the backend list", "[cli]") {
+TEST_CASE("text summary and the backend list", "[cli][all-probes]") {
   ShiftedPair sp;
   const auto r = run_pxflow({"flow", sp.dir.path("prev.png"), sp.dir.path("next.png")});
   REQUIRE(r.exit_code == 0);
@@ -125,7 +125,7 @@ TEST_CASE("text summary and the backend list", "[cli]") {
   CHECK(help.out.find("--set") != std::string::npos);
 }
 
-TEST_CASE("disable-isa option masks CPU paths for one run", "[cli][cpu]") {
+TEST_CASE("disable-isa option masks CPU paths for one run", "[cli][cpu][all-probes]") {
   const auto list = run_pxflow({"backends"});
   if (list.out.find("avx2 ") == std::string::npos) {
     WARN("no avx2 row compiled into this build: nothing to mask");

@@ -2,6 +2,7 @@
 // binary: an output never overwrites an input, a lost write is an error (files and stdout), an
 // output file is replaced only when complete, options that would have no effect are refused,
 // and a check that compared nothing is not a pass.
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -88,4 +89,59 @@ TEST_CASE("options that would have no effect are refused", "[cli][green]") {
                     "--radius and --set search_radius");
   require_bad_input({"check", "--seed", "-1"}, "--seed: must be a whole number");
   require_bad_input({"check", "--seed", "18446744073709551616"}, "--seed: must be a whole number");
+}
+
+TEST_CASE("report: wrong or malformed results files are refused before any work", "[cli][lost]") {
+  test::TempDir dir;
+  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
+                      dir.path("c.json")})
+              .exit_code == 0);
+  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
+                      "--json", dir.path("b.json")})
+              .exit_code == 0);
+  dir.write("broken.json", "{\"backends\": [");
+  dir.write("shape.json", "{\"backends\": [{\"name\": 1}], \"passed\": 0, \"failed\": 0}");
+  const std::string out = dir.path("r");
+  require_bad_input({"report", "--out", out, "--check-json", dir.path("b.json"), "--bench-json",
+                     dir.path("b.json")},
+                    "it is a bench file");
+  require_bad_input({"report", "--out", out, "--check-json", dir.path("broken.json"),
+                     "--bench-json", dir.path("b.json")},
+                    "not valid JSON");
+  require_bad_input({"report", "--out", out, "--check-json", dir.path("shape.json"),
+                     "--bench-json", dir.path("b.json")},
+                    "malformed check file");
+  require_bad_input({"report", "--out", dir.path(""), "--check-json", dir.path("results.json")},
+                    "cannot open");
+  CHECK(test::run_program("/bin/ls", {out}).exit_code != 0);  // nothing was made
+}
+
+TEST_CASE("report: a reused folder loses only the files the report wrote there", "[cli][lost]") {
+  test::TempDir dir;
+  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
+                      dir.path("c.json")})
+              .exit_code == 0);
+  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
+                      "--json", dir.path("b.json")})
+              .exit_code == 0);
+  const std::string out = dir.path("r");
+  REQUIRE(::mkdir(out.c_str(), 0755) == 0);
+  dir.write("r/flow-old.png", "old picture");
+  dir.write("r/mine.txt", "the user's");
+  dir.write("escape.txt", "outside");
+  dir.write("r/.pxflow-report", "flow-old.png\n../escape.txt\n/etc/hostname\n");
+  // The user's results file inside the folder is an input: never overwritten.
+  dir.write("r/results.json", slurp(dir.path("c.json")));
+  require_bad_input({"report", "--out", out, "--check-json", dir.path("r/results.json"),
+                     "--bench-json", dir.path("b.json")},
+                    "is an input");
+  ::unlink(dir.path("r/results.json").c_str());
+  const auto r = run_pxflow({"report", "--out", out, "--check-json", dir.path("c.json"),
+                             "--bench-json", dir.path("b.json"), "--no-accuracy", "--backends", "ref-original"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(slurp(dir.path("r/flow-old.png")).empty());  // listed by the old manifest: removed
+  CHECK(slurp(dir.path("r/mine.txt")) == "the user's");
+  CHECK(slurp(dir.path("escape.txt")) == "outside");
+  CHECK(slurp(out + "/.pxflow-report") == "report.md\nreport.html\nresults.json\nresults.csv\n");
 }

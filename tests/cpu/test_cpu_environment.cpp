@@ -56,7 +56,7 @@ TEST_CASE("the --disable-isa option with an unknown ISA names the valid ISAs too
       "--disable-isa: unknown ISA 'avx-512' (known: " + cpu::known_isas() + ")");
 }
 
-TEST_CASE("PXFLOW_DISABLE with a valid ISA masks its row", "[cpu][mask]") {
+TEST_CASE("PXFLOW_DISABLE with a valid ISA masks its row", "[cpu][mask][all-probes]") {
   const std::string strongest = cpu::compiled_isas().back();
   const ScopedEnv env("PXFLOW_DISABLE", strongest.c_str());
   const auto r = test::run_pxflow({"backends"});
