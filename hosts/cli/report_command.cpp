@@ -108,7 +108,9 @@ Json read_json(const std::string& option, const std::string& path, const char* k
   const bool is_bench = j.is_object() && j.contains("rows") && j["rows"].is_array();
   if (std::string(kind) == "check" ? !is_check : !is_bench)
     throw InputError(option + " " + path + ": not the output of pxflow " + kind + " --json" +
-                     (is_check ? " (it is a check file)" : is_bench ? " (it is a bench file)" : ""));
+                     (is_check   ? " (it is a check file)"
+                      : is_bench ? " (it is a bench file)"
+                                 : ""));
   try {  // every field the report reads, with its type
     if (is_check)
       for (const auto& b : j["backends"]) {

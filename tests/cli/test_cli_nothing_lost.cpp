@@ -108,8 +108,8 @@ TEST_CASE("report: wrong or malformed results files are refused before any work"
   require_bad_input({"report", "--out", out, "--check-json", dir.path("broken.json"),
                      "--bench-json", dir.path("b.json")},
                     "not valid JSON");
-  require_bad_input({"report", "--out", out, "--check-json", dir.path("shape.json"),
-                     "--bench-json", dir.path("b.json")},
+  require_bad_input({"report", "--out", out, "--check-json", dir.path("shape.json"), "--bench-json",
+                     dir.path("b.json")},
                     "malformed check file");
   require_bad_input({"report", "--out", dir.path(""), "--check-json", dir.path("results.json")},
                     "cannot open");
@@ -136,8 +136,9 @@ TEST_CASE("report: a reused folder loses only the files the report wrote there",
                      "--bench-json", dir.path("b.json")},
                     "is an input");
   ::unlink(dir.path("r/results.json").c_str());
-  const auto r = run_pxflow({"report", "--out", out, "--check-json", dir.path("c.json"),
-                             "--bench-json", dir.path("b.json"), "--no-accuracy", "--backends", "ref-original"});
+  const auto r =
+      run_pxflow({"report", "--out", out, "--check-json", dir.path("c.json"), "--bench-json",
+                  dir.path("b.json"), "--no-accuracy", "--backends", "ref-original"});
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   CHECK(slurp(dir.path("r/flow-old.png")).empty());  // listed by the old manifest: removed
