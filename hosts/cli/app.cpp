@@ -7,17 +7,32 @@
 #include "commands.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
+#include "interrupt.hpp"
 #include "output_file.hpp"
 #include "pxflow_app.hpp"
 #include "registry.hpp"
 
 namespace pxflow {
 
+namespace {
+
+// "pxflow 0.1 (commit ..., GCC 12.2.0; families: reference, cpu, ...)"
+std::string version_text() {
+  std::string families;
+  for (const BackendFamily& f : backend_families())
+    families += (families.empty() ? "" : ", ") + f.name;
+  return std::string("pxflow ") + PXFLOW_VERSION + " (commit " + PXFLOW_COMMIT + ", " +
+         PXFLOW_COMPILER + "; backend families: " + families + ")";
+}
+
+}  // namespace
+
 int run_pxflow(int argc, char** argv) {
   quiet_opencv();
+  install_interrupt_handlers();
   CLI::App app{
       "pxflow: the PX4FLOW optical-flow kernel, cross-checked bit for bit across backends"};
-  app.set_version_flag("--version", "pxflow 0.1");
+  app.set_version_flag("--version", version_text);
   app.require_subcommand(1);
   app.fallthrough();  // global options may follow the subcommand
   // The families' global options (e.g. the cpu family's --disable-isa), applied before the
@@ -68,6 +83,9 @@ int run_pxflow(int argc, char** argv) {
   } catch (const InputError& e) {
     std::fprintf(stderr, "pxflow: error: %s\n", e.what());
     return 2;
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "pxflow: interrupted: %s\n", e.what());
+    return 128 + e.signal;
   } catch (const OutputError& e) {
     std::fprintf(stderr, "pxflow: error: %s\n", e.what());
     return 1;

@@ -12,6 +12,7 @@
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "grid.hpp"
+#include "interrupt.hpp"
 #include "list_option.hpp"
 #include "output_file.hpp"
 #include "registry.hpp"
@@ -167,11 +168,11 @@ int run_report(const ReportArgs& a) {
     std::cout << "== " << in.bench_command << "\n";
     in.bench = bench_json(run_bench(o, std::cout));
   }
-  if (!a.no_accuracy) {
-    add_accuracy(in, a);
-    add_pictures(in, a);
-  }
+  if (!a.no_accuracy) add_accuracy(in, a);
   add_family_sections(in, a);
+  stop_if_interrupted("the report's measurements, before any file was written");
+  remove_previous_report(a.out_dir);
+  if (!a.no_accuracy) add_pictures(in, a);
   write_report(a.out_dir, in);
   std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json, results.csv\n";
   // As `pxflow check`: a failure, or a check that compared nothing, is not green.

@@ -12,6 +12,7 @@
 
 #include "exactness.hpp"
 #include "grid.hpp"
+#include "interrupt.hpp"
 #include "registry.hpp"
 #include "synthetic.hpp"
 
@@ -257,7 +258,10 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
     for (const auto& n : o.backends) rows.push_back(&find_backend(n));
   check_device_option(rows, o.backend_options.device);
   Bench bench(o, out);
+  std::size_t done = 0;
   for (const auto& pt : o.points) {
+    stop_if_interrupted(std::to_string(done++) + " of " + std::to_string(o.points.size()) +
+                        " bench points");
     validate(pt.params);
     out << point_label(pt) << "\n";
     const Inputs in = make_inputs(pt.params, pt.batch);

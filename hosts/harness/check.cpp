@@ -15,6 +15,7 @@
 #include "estimate.hpp"
 #include "exactness.hpp"
 #include "grid.hpp"
+#include "interrupt.hpp"
 #include "registry.hpp"
 
 namespace pxflow {
@@ -211,6 +212,7 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
 
   CheckCase c;
   while (next_case(c)) {
+    stop_if_interrupted(std::to_string(report.cases) + " finished cases");
     ++report.cases;
     report.pairs += static_cast<long>(c.pairs.size());
     progress("check: " + std::to_string(report.cases) + " cases, " + std::to_string(report.pairs) +

@@ -311,6 +311,11 @@ void prepare_report_dir(const std::string& out_dir) {
   fs::create_directories(out_dir, ec);
   if (ec || !fs::is_directory(out_dir))
     throw InputError("--out " + out_dir + ": cannot create the folder");
+}
+
+void remove_previous_report(const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
   std::ifstream manifest(fs::path(out_dir) / kManifest);
   for (std::string name; std::getline(manifest, name);) {
     // Only plain file names the report itself writes: never a path, never anything else.

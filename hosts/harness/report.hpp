@@ -38,10 +38,13 @@ struct ReportInputs {
   std::vector<Section> sections;
 };
 
-// Creates out_dir if needed (InputError when it cannot) and removes the files a previous report
-// wrote there, as its manifest (.pxflow-report) lists them, and nothing else. Call it before any
-// file of the new report is written.
+// Creates out_dir if needed (InputError when it cannot): called before any work.
 void prepare_report_dir(const std::string& out_dir);
+
+// Removes the files a previous report wrote into out_dir, as its manifest (.pxflow-report) lists
+// them, and nothing else: called after all the work, just before the new files are written, so
+// that an interrupted or failed run leaves the previous report intact.
+void remove_previous_report(const std::string& out_dir);
 
 // Writes the four files into out_dir, then the manifest listing them and the pictures.
 void write_report(const std::string& out_dir, const ReportInputs& in);

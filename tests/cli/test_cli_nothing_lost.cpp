@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <chrono>
 
 #include "bad_input.hpp"
 #include "run_program.hpp"
@@ -145,4 +146,37 @@ TEST_CASE("report: a reused folder loses only the files the report wrote there",
   CHECK(slurp(dir.path("r/mine.txt")) == "the user's");
   CHECK(slurp(dir.path("escape.txt")) == "outside");
   CHECK(slurp(out + "/.pxflow-report") == "report.md\nreport.html\nresults.json\nresults.csv\n");
+}
+
+TEST_CASE("SIGINT and SIGTERM stop a run soon, leave the previous file, exit 130 and 143",
+          "[cli][lost]") {
+  for (const auto& [sig, code] : {std::pair{"INT", "130"}, std::pair{"TERM", "143"}}) {
+    test::TempDir dir;
+    const std::string json = dir.path("prev.json");
+    dir.write("prev.json", "{\"previous\": true}\n");
+    // A campaign far too long to finish, signalled after a second; the shell reports its status.
+    const std::string script = std::string("'") + PXFLOW_BINARY +
+                               "' check --backends ref-original,ref-local --cases 100000000 "
+                               "--json '" +
+                               json + "' >/dev/null & p=$!; sleep 1; kill -" + sig +
+                               " $p; wait $p; echo rc=$?";
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = test::run_program("/bin/sh", {"-c", script});
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    INFO(r.out << r.err);
+    CHECK(r.out == std::string("rc=") + code + "\n");
+    CHECK(r.err.find(std::string("pxflow: interrupted: SIG") + sig + " after") !=
+          std::string::npos);
+    CHECK(seconds < 10);  // a generous bound on this shared machine: it stops at the next batch
+    CHECK(slurp(json) == "{\"previous\": true}\n");
+    CHECK(test::run_program("/bin/ls", {"-A", dir.path("")}).out == "prev.json\n");
+  }
+}
+
+TEST_CASE("--version names the commit, the compiler and the families", "[cli]") {
+  const auto r = run_pxflow({"--version"});
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.rfind("pxflow 0.1 (commit ", 0) == 0);
+  CHECK(r.out.find("backend families: reference") != std::string::npos);
 }

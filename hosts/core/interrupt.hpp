@@ -1,0 +1,24 @@
+// SIGINT and SIGTERM: the first one asks the run to stop at the next point where nothing is
+// half done (between check cases, bench points, report steps); a second one ends the process at
+// once. Outputs are written only when complete (io/output_file), so an interrupted run leaves the
+// previous files as they were. The CLI exits 128 + the signal (130, 143).
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace pxflow {
+
+struct Interrupted : std::runtime_error {
+  int signal;
+  Interrupted(int sig, const std::string& what) : std::runtime_error(what), signal(sig) {}
+};
+
+void install_interrupt_handlers();
+
+// 0 when no signal came, else the signal number.
+int interrupt_signal();
+
+// Throws Interrupted saying what had finished (`done`, e.g. "12 of 33 cases") when a signal came.
+void stop_if_interrupted(const std::string& done);
+
+}  // namespace pxflow
