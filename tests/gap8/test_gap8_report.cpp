@@ -89,3 +89,21 @@ TEST_CASE("gap8 at another profile shows no paper figures beside the model", "[g
 }
 
 }  // namespace pxflow::test
+
+namespace pxflow::test {
+
+TEST_CASE("bench times a GAP8 row by its exact model clock from the one checked run", "[gap8]") {
+  TempDir dir;
+  const auto r = run_pxflow({"bench", "--backends", "gap8-fast", "--batch", "1", "--min-time", "0",
+                             "--json", dir.path("b.json")});
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(slurp(dir.path("b.json")));
+  REQUIRE(j["rows"].size() == 1);  // no host-clock row: the host's time is the simulation's
+  const auto& row = j["rows"][0];
+  CHECK(row["source"] == "gap8-model-cycles");
+  CHECK(row["repeats"] == 1);
+  CHECK(row["cycles_per_frame"].get<double>() > 10000);
+  CHECK(row["note"].get<std::string>().find("host simulation") != std::string::npos);
+}
+
+}  // namespace pxflow::test
