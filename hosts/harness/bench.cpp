@@ -83,6 +83,19 @@ class Bench {
     BenchRow base = row_for(row.name, pt);
     if (std::string why = b->unsupported(pt.params); !why.empty())
       return note(base, "n/a: " + why, report);
+    // A simulated backend's run of a large batch is minutes of host time: from the speed of its
+    // last point, a run that would take longer than max_run_seconds is left out, and said so.
+    if (const auto it = sim_pairs_per_s_.find(row.name); it != sim_pairs_per_s_.end()) {
+      const double estimate = pt.batch / it->second;
+      if (estimate > o_.max_run_seconds) {
+        char why[200];
+        std::snprintf(why, sizeof why,
+                      "not run: simulating %d pairs would take about %.0f s (%.1f pairs/s); "
+                      "measure it with --backends %s --batch %d",
+                      pt.batch, estimate, it->second, row.name.c_str(), pt.batch);
+        return note(base, why, report);
+      }
+    }
     std::vector<PoiRecord> got = sentinel_records(expected.size());
     OpCounts counts;
     // Warm-up and check in one: the first run's records must equal ref-original's.
@@ -104,6 +117,7 @@ class Bench {
       std::snprintf(sim, sizeof sim, "one checked run; host simulation %.1f pairs/s",
                     pt.batch / first);
       dev.note = sim;
+      sim_pairs_per_s_[row.name] = pt.batch / first;
       emit(dev, report);
       return;
     }
@@ -201,6 +215,7 @@ class Bench {
   const BenchOptions& o_;
   std::ostream& out_;
   std::map<std::pair<std::string, int>, std::unique_ptr<Backend>> cache_;
+  std::map<std::string, double> sim_pairs_per_s_;  // exact-clock backends: host simulation speed
 };
 
 // How far each row is from the bound a family offers (the cpu family: the SAD work at the
