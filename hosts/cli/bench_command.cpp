@@ -8,6 +8,7 @@
 #include "frame_io.hpp"
 #include "list_option.hpp"
 #include "output_file.hpp"
+#include "progress.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -93,6 +94,7 @@ Command add_bench_command(CLI::App& app) {
   sub->add_option("--device", a->backend_options.device,
                   "Device index or name substring (GPU backends)");
   sub->add_option("--json", a->json_path, "Write the rows as JSON to FILE");
+  add_progress_flag(*sub);
   return {sub, [a] { return run_bench_command(*a); }};
 }
 

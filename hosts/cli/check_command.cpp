@@ -7,6 +7,7 @@
 #include "errors.hpp"
 #include "list_option.hpp"
 #include "output_file.hpp"
+#include "progress.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -69,6 +70,7 @@ Command add_check_command(CLI::App& app) {
   sub->add_flag("--generated-only", a->generated_only,
                 "Skip the real frames (random, hostile, threshold cases only)");
   sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
+  add_progress_flag(*sub);
   sub->add_option("--threads", a->backend_options.threads,
                   "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)")
       ->check(CLI::Range(0, 1024));

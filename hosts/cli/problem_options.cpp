@@ -2,8 +2,16 @@
 
 #include "commands.hpp"
 #include "errors.hpp"
+#include "list_option.hpp"
+#include "progress.hpp"
 
 namespace pxflow::cli {
+
+void add_progress_flag(CLI::App& sub) {
+  sub.add_flag_callback(
+      "--progress", [] { force_progress(true); },
+      "Progress on stderr even when it is not a terminal");
+}
 
 void ProblemOptions::add_to(CLI::App& app) {
   std::string profiles;

@@ -15,6 +15,7 @@
 #include "interrupt.hpp"
 #include "list_option.hpp"
 #include "output_file.hpp"
+#include "progress.hpp"
 #include "registry.hpp"
 #include "report.hpp"
 #include "truth_pairs.hpp"
@@ -200,6 +201,7 @@ Command add_report_command(CLI::App& app) {
   sub->add_flag("--quick", a->quick,
                 "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
   sub->add_flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");
+  add_progress_flag(*sub);
   for (const CliExtension& e : registered_cli_extensions()) a->extensions.push_back({e, false});
   for (auto& [e, skipped] : a->extensions)
     if (e.add_report_section && !e.report_skip_flag.empty())

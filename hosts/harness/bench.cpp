@@ -13,6 +13,7 @@
 #include "exactness.hpp"
 #include "grid.hpp"
 #include "interrupt.hpp"
+#include "progress.hpp"
 #include "registry.hpp"
 #include "synthetic.hpp"
 
@@ -288,8 +289,10 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   Bench bench(o, out);
   std::size_t done = 0;
   for (const auto& pt : o.points) {
-    stop_if_interrupted(std::to_string(done++) + " of " + std::to_string(o.points.size()) +
+    stop_if_interrupted(std::to_string(done) + " of " + std::to_string(o.points.size()) +
                         " bench points");
+    progress("bench: point " + std::to_string(++done) + " of " + std::to_string(o.points.size()) +
+             ": " + point_label(pt));
     validate(pt.params);
     out << point_label(pt) << "\n";
     const Inputs in = make_inputs(pt.params, pt.batch);
@@ -298,6 +301,7 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
     find_backend(kReferenceBackend).create({})->run(in.batch_for(0), pt.params, expected, counts);
     for (const BackendRow* row : rows) bench.measure(*row, pt, in, expected, report);
   }
+  progress("");
   add_speedups(report);
   add_bound_ratios(report, out);
   for (const auto& s : report.skipped) out << "skipped " << s << "\n";

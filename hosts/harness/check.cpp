@@ -1,7 +1,5 @@
 #include "check.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <bit>
 #include <chrono>
@@ -16,6 +14,7 @@
 #include "exactness.hpp"
 #include "grid.hpp"
 #include "interrupt.hpp"
+#include "progress.hpp"
 #include "registry.hpp"
 
 namespace pxflow {
@@ -146,11 +145,6 @@ class Checker {
   const CheckOptions& o_;
   std::ostream& out_;
 };
-
-void progress(const std::string& text) {
-  static const bool tty = isatty(2);
-  if (tty) std::fprintf(stderr, "\r\033[K%s", text.c_str());
-}
 
 }  // namespace
 

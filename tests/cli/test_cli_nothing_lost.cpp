@@ -180,3 +180,16 @@ TEST_CASE("--version names the commit, the compiler and the families", "[cli]") 
   CHECK(r.out.rfind("pxflow 0.1 (commit ", 0) == 0);
   CHECK(r.out.find("backend families: reference") != std::string::npos);
 }
+
+TEST_CASE("progress goes to stderr when asked for, and only then off a terminal", "[cli]") {
+  const std::vector<std::string> bench = {"bench", "--backends", "ref-local", "--batch",
+                                          "1",     "--min-time", "0"};
+  const auto quiet = run_pxflow(bench);
+  CHECK(quiet.exit_code == 0);
+  CHECK(quiet.err.empty());
+  auto with = bench;
+  with.push_back("--progress");
+  const auto loud = run_pxflow(with);
+  CHECK(loud.exit_code == 0);
+  CHECK(loud.err.find("bench: point 1 of 1") != std::string::npos);
+}
