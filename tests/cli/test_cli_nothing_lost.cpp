@@ -50,7 +50,7 @@ TEST_CASE("a failed write is an error: stdout and files", "[cli][lost]") {
   CHECK(check.err.find("cannot write /dev/full") != std::string::npos);
 }
 
-TEST_CASE("a JSON file is replaced only when complete; a failed run leaves it intact",
+TEST_CASE("a JSON file is replaced only when complete: a failed run leaves it intact",
           "[cli][lost]") {
   test::TempDir dir;
   const std::string json = dir.path("prev.json");
@@ -174,7 +174,7 @@ TEST_CASE("SIGINT and SIGTERM stop a run soon, leave the previous file, exit 130
   }
 }
 
-TEST_CASE("--version names the commit, the compiler and the families", "[cli]") {
+TEST_CASE("pxflow --version names the commit, the compiler and the families", "[cli]") {
   const auto r = run_pxflow({"--version"});
   CHECK(r.exit_code == 0);
   CHECK(r.out.rfind("pxflow 0.1 (commit ", 0) == 0);

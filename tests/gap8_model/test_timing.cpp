@@ -78,7 +78,7 @@ TEST_CASE("DMA L2 -> L1, 1-D: completes at push + 2 + ceil(bytes / 8), in push o
   CHECK(big.NextCompletion() == 2u + 4096u / 8u);
 }
 
-TEST_CASE("DMA pieces end at 32-bit boundaries; a second transfer follows the first") {
+TEST_CASE("DMA pieces end at 32-bit boundaries: a second transfer follows the first") {
   gap8::Dma dma;
   // 8 bytes at L1 + 2: pieces of 2, 4 and 2 bytes -> cycles 3, 3, 4.
   dma.Push(ToL1(2, 8), 0, 0, 0, kEvent, kBroadcast);

@@ -12,7 +12,7 @@ TEST_CASE("pv.maxu.b / pv.minu.b per unsigned byte, and their .sc forms") {
   CHECK(f.RunR(Simd(0x0A, true), 0x80FF1203u, 0x00000010u) == 0x10101003u);
 }
 
-TEST_CASE("pv.sub.b / pv.add.b wrap per byte; .sc uses rs2's low byte") {
+TEST_CASE("pv.sub.b / pv.add.b wrap per byte: .sc uses rs2's low byte") {
   CoreFixture f;
   CHECK(f.RunR(Simd(0x02, false), 0x80FF1203u, 0x7F01F004u) == 0x01FE22FFu);
   CHECK(f.RunR(Simd(0x02, true), 0x00010203u, 0xFFFFFF01u) == 0xFF000102u);

@@ -45,7 +45,7 @@ TEST_CASE("an unwritten record is caught by the sentinel", "[check]") {
         std::string::npos);
 }
 
-TEST_CASE("correct backends pass; the summary line counts cases", "[check]") {
+TEST_CASE("correct backends pass: the summary line counts cases", "[check]") {
   const auto r = check({"--backends", "ref-local,ref-global", "--generated-only"});
   INFO(r.out);
   CHECK(r.exit_code == 0);

@@ -23,7 +23,7 @@ TEST_CASE("uhadd8 is the floor average in every lane, for every byte pair", "[pr
   CHECK(uhadd8(0xFFFFFFFFu, 0xFFFFFFFFu) == 0xFFFFFFFFu);  // 9-bit intermediate, no overflow
 }
 
-TEST_CASE("usad8 sums four absolute differences; usada8 wraps mod 2^32", "[primitives]") {
+TEST_CASE("usad8 sums four absolute differences: usada8 wraps mod 2^32", "[primitives]") {
   CHECK(usad8(0x00000000u, 0xFFFFFFFFu) == 1020);
   CHECK(usad8(0x01020304u, 0x04030201u) == 3 + 1 + 1 + 3);
   CHECK(usada8(0xFF00FF00u, 0x00FF00FFu, 0xFFFFFFFFu) == 1019);  // 2^32-1 + 1020 wraps
