@@ -24,6 +24,9 @@ Command add_bench_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_accuracy_command(CLI::App& app);
 
+// --progress: progress lines on stderr even when it is not a terminal (CI logs).
+void add_progress_flag(CLI::App& sub);
+
 // Options that describe the problem, shared by every command that runs kernels.
 struct ProblemOptions {
   std::string profile = "px4flow-64";

@@ -45,7 +45,4 @@ inline CLI::Validator seed_value() {
       "SEED");
 }
 
-// --progress: progress lines on stderr even when it is not a terminal (CI logs).
-void add_progress_flag(CLI::App& sub);
-
 }  // namespace pxflow::cli

@@ -2,7 +2,6 @@
 
 #include "commands.hpp"
 #include "errors.hpp"
-#include "list_option.hpp"
 #include "progress.hpp"
 
 namespace pxflow::cli {

@@ -9,6 +9,7 @@
 #include <chrono>
 
 #include "bad_input.hpp"
+#include "results_files.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
 
@@ -94,12 +95,7 @@ TEST_CASE("options that would have no effect are refused", "[cli][green]") {
 
 TEST_CASE("report: wrong or malformed results files are refused before any work", "[cli][lost]") {
   test::TempDir dir;
-  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
-                      dir.path("c.json")})
-              .exit_code == 0);
-  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
-                      "--json", dir.path("b.json")})
-              .exit_code == 0);
+  test::make_small_results(dir);
   dir.write("broken.json", "{\"backends\": [");
   dir.write("shape.json", "{\"backends\": [{\"name\": 1}], \"passed\": 0, \"failed\": 0}");
   const std::string out = dir.path("r");
@@ -119,12 +115,7 @@ TEST_CASE("report: wrong or malformed results files are refused before any work"
 
 TEST_CASE("report: a reused folder loses only the files the report wrote there", "[cli][lost]") {
   test::TempDir dir;
-  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
-                      dir.path("c.json")})
-              .exit_code == 0);
-  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
-                      "--json", dir.path("b.json")})
-              .exit_code == 0);
+  test::make_small_results(dir);
   const std::string out = dir.path("r");
   REQUIRE(::mkdir(out.c_str(), 0755) == 0);
   dir.write("r/flow-old.png", "old picture");

@@ -5,20 +5,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "results_files.hpp"
 #include "run_program.hpp"
 
 namespace pxflow::test {
 namespace {
-
-// Small check and bench results of ref-original, so the report runs nothing else but the model.
-void make_inputs(const TempDir& dir) {
-  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
-                      dir.path("c.json")})
-              .exit_code == 0);
-  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
-                      "--json", dir.path("b.json")})
-              .exit_code == 0);
-}
 
 RunResult report(const TempDir& dir, const std::string& out, std::vector<std::string> extra) {
   std::vector<std::string> args{
@@ -32,7 +23,7 @@ RunResult report(const TempDir& dir, const std::string& out, std::vector<std::st
 
 TEST_CASE("pxflow report shows the GAP8 model beside the paper's Tables I-III", "[gap8][report]") {
   TempDir dir;
-  make_inputs(dir);
+  make_small_results(dir);
   const RunResult r = report(dir, "all", {});
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
@@ -54,7 +45,7 @@ TEST_CASE("pxflow report shows the GAP8 model beside the paper's Tables I-III", 
   CHECK(eight["speedup"].get<double>() > 1.0);
   CHECK(eight["speedup"].get<double>() <= eight["amdahl_limit"].get<double>());
   // The table shows the figure of the JSON.
-  char cycles[32];
+  char cycles[64];
   std::snprintf(cycles, sizeof cycles, "| cycles, 8 core(s) | original | %.1fk |",
                 eight["cycles"].get<double>() / 1000);
   CHECK(md.find(cycles) != std::string::npos);
@@ -65,7 +56,7 @@ TEST_CASE("pxflow report shows the GAP8 model beside the paper's Tables I-III", 
 TEST_CASE("pxflow report leaves the GAP8 section out for other backends or with --no-gap8",
           "[gap8][report]") {
   TempDir dir;
-  make_inputs(dir);
+  make_small_results(dir);
   for (const auto& extra : {std::vector<std::string>{"--backends", "ref-original"},
                             std::vector<std::string>{"--no-gap8"}}) {
     const RunResult r = report(dir, "without", extra);

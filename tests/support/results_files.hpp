@@ -1,0 +1,21 @@
+// Small `pxflow check --json` and `pxflow bench --json` files (c.json, b.json in `dir`) of the
+// reference rows, for tests that feed a report without running anything else.
+#pragma once
+#include <catch2/catch.hpp>
+
+#include "run_program.hpp"
+
+namespace pxflow::test {
+
+#ifdef PXFLOW_BINARY
+inline void make_small_results(const TempDir& dir) {
+  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
+                      dir.path("c.json")})
+              .exit_code == 0);
+  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
+                      "--json", dir.path("b.json")})
+              .exit_code == 0);
+}
+#endif
+
+}  // namespace pxflow::test
