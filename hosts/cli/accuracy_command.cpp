@@ -1,6 +1,8 @@
 // pxflow accuracy: pxflow's frame flow against the true motion of synthetic pairs and against DIS
 // on real video, side by side with OpenCV's Lucas-Kanade and DIS flow (hosts/accuracy/).
+#include <algorithm>
 #include <iostream>
+#include <thread>
 
 #include "accuracy_run.hpp"
 #include "commands.hpp"
@@ -12,6 +14,9 @@ namespace {
 
 int run_accuracy_command(accuracy::AccuracyOptions o) {
   find_backend(o.backend);  // unknown names fail before any work
+  // 0 = all cores, as everywhere in pxflow; OpenCV and the backend get the same count.
+  if (o.threads == 0)
+    o.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   o.backend_options.threads = o.threads;
   const auto report = accuracy::run_accuracy(o);
   std::cout << accuracy::format_accuracy(report, o);
@@ -38,10 +43,12 @@ Command add_accuracy_command(CLI::App& app) {
   sub->add_option("--seed", o->seed, "Seed of the synthetic motions")
       ->check(seed_value())
       ->capture_default_str();
-  sub->add_option("--threads", o->threads, "Threads for OpenCV and the backend alike")
+  sub->add_option("--threads", o->threads,
+                  "Threads for OpenCV and the backend alike (0 = all cores)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 1024));
-  sub->add_option("--data-dir", o->data_dir, "Where opencv-doc's images and videos are")
+      ->check(CLI::Range(0, 1024));
+  // --data as in check and report; --data-dir is its old name.
+  sub->add_option("--data,--data-dir", o->data_dir, "Where opencv-doc's images and videos are")
       ->capture_default_str();
   sub->add_flag("--by-kind", o->by_kind, "Also one block of rows per kind of motion");
   return {sub, [o] { return run_accuracy_command(*o); }};

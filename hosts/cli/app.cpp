@@ -9,6 +9,7 @@
 #include "frame_io.hpp"
 #include "interrupt.hpp"
 #include "output_file.hpp"
+#include "parse_errors.hpp"
 #include "pxflow_app.hpp"
 #include "registry.hpp"
 
@@ -48,11 +49,21 @@ int run_pxflow(int argc, char** argv) {
       cli::add_report_command(app), cli::add_accuracy_command(app), cli::add_backends_command(app)};
   for (const cli::CliExtension& e : cli::registered_cli_extensions())
     if (e.add_command) commands.push_back(e.add_command(app));
+  std::string command;  // the subcommand being parsed, for "see pxflow CMD --help"
   if (argc > 1 && argv[1][0] != '-') {
-    bool known = false;
-    for (const auto& c : commands) known |= c.app->get_name() == argv[1];
-    if (!known) {
+    for (const auto& c : commands)
+      if (c.app->get_name() == argv[1]) command = argv[1];
+    if (command.empty()) {
       std::fprintf(stderr, "pxflow: error: unknown command '%s' (see pxflow --help)\n", argv[1]);
+      return 2;
+    }
+  } else if (argc > 1) {
+    // An option before any command must be one of the top level's (CLI11 would report a missing
+    // command instead of the unknown option).
+    const std::string arg = argv[1];
+    const std::string name = arg.substr(0, arg.find('='));
+    if (app.get_option_no_throw(name) == nullptr && name != "-h" && name != "--help") {
+      std::fprintf(stderr, "pxflow: error: unknown option %s (see pxflow --help)\n", name.c_str());
       return 2;
     }
   }
@@ -65,7 +76,7 @@ int run_pxflow(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "pxflow: error: %s (see pxflow --help)\n", e.what());
+    std::fprintf(stderr, "pxflow: error: %s\n", cli::describe_parse_error(e, command).c_str());
     return 2;
   }
   try {

@@ -1,24 +1,49 @@
-// pxflow backends: the registry as a table: name, whether it can run here (or why not), needs.
+// pxflow backends: the registry as a table (name, whether it can run here or why not, needs), or
+// as JSON with the family of each row.
 #include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "registry.hpp"
 
 namespace pxflow::cli {
+namespace {
+
+int run_backends(const std::string& json_path) {
+  if (!json_path.empty()) check_output_path("--json", json_path);
+  nlohmann::json rows = nlohmann::json::array();
+  const bool table = json_path != kStdoutPath;
+  if (table) std::printf("%-14s %-10s %s\n", "backend", "status", "needs / reason");
+  for (const auto& row : backend_rows()) {
+    const std::string why = row.probe();
+    if (table)
+      std::printf("%-14s %-10s %s\n", row.name.c_str(), why.empty() ? "available" : "skipped",
+                  why.empty() ? row.needs.c_str() : why.c_str());
+    rows.push_back({{"name", row.name},
+                    {"family", row.family},
+                    {"available", why.empty()},
+                    {"reason", why},
+                    {"needs", row.needs},
+                    {"has_devices", row.has_devices},
+                    {"preferred", row.preferred}});
+  }
+  if (!json_path.empty())
+    write_output_file(json_path, nlohmann::json{{"backends", rows}}.dump(2) + "\n");
+  return 0;
+}
+
+}  // namespace
 
 Command add_backends_command(CLI::App& app) {
+  auto json_path = std::make_shared<std::string>();
   CLI::App* sub =
       app.add_subcommand("backends", "List the compiled backends and whether each can run here");
-  return {sub, [] {
-            std::printf("%-14s %-10s %s\n", "backend", "status", "needs / reason");
-            for (const auto& row : backend_rows()) {
-              const std::string why = row.probe();
-              std::printf("%-14s %-10s %s\n", row.name.c_str(),
-                          why.empty() ? "available" : "skipped",
-                          why.empty() ? row.needs.c_str() : why.c_str());
-            }
-            return 0;
-          }};
+  sub->add_option("--json", *json_path,
+                  "Also write the rows as JSON to FILE ('-': standard output, instead of the "
+                  "table): name, family, available, reason, needs, has_devices, preferred");
+  return {sub, [json_path] { return run_backends(*json_path); }};
 }
 
 }  // namespace pxflow::cli

@@ -41,6 +41,7 @@ void check_output_path(const std::string& option, const std::string& path,
                        std::span<const std::string> inputs) {
   namespace fs = std::filesystem;
   if (path.empty()) throw InputError(option + " needs a file name (got an empty one)");
+  if (path == kStdoutPath) return;
   const fs::path p(path);
   std::error_code ec;
   if (fs::is_directory(p, ec)) throw InputError(option + " " + path + ": is a directory");
@@ -59,6 +60,11 @@ void check_not_an_input(const std::string& option, const std::string& path,
 }
 
 void write_output_file(const std::string& path, std::string_view bytes) {
+  if (path == kStdoutPath) {
+    std::cout << bytes;
+    check_stdout();
+    return;
+  }
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
     // A device or FIFO: nothing to keep intact, write straight through.

@@ -2,7 +2,8 @@
 // is not a folder, it is none of the inputs), and the bytes go to a temporary file beside it that
 // is renamed into place only when complete, so an interrupt, a crash or a full disk leaves the
 // previous file intact. A device or FIFO (e.g. /dev/full, a pipe) is written directly. Every
-// write and close is checked: a failure is an OutputError (one line, exit 1).
+// write and close is checked: a failure is an OutputError (one line, exit 1). The path "-" is
+// standard output (`--json -`).
 #pragma once
 #include <span>
 #include <stdexcept>
@@ -25,7 +26,10 @@ void check_output_path(const std::string& option, const std::string& path,
 void check_not_an_input(const std::string& option, const std::string& path,
                         std::span<const std::string> inputs);
 
-// Writes `bytes` to `path` as described above; throws OutputError when any step fails.
+inline constexpr const char* kStdoutPath = "-";
+
+// Writes `bytes` to `path` as described above ("-": standard output, checked like a file);
+// throws OutputError when any step fails.
 void write_output_file(const std::string& path, std::string_view bytes);
 
 // Flushes standard output (C and C++ streams) and throws OutputError when anything written to it

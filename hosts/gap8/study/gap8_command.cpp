@@ -83,7 +83,8 @@ int run_gap8(const Gap8Options& o) {
   options.paper_problem = p == profile("px4flow-64");
   const FramePair pair{frames.prev.view(), frames.next.view()};
   const gap8_study::Study study = gap8_study::run_study(pair, frames.name, p, options);
-  gap8_study::print_tables(study);
+  // `--json -` puts the JSON alone on standard output, so that it can be piped.
+  if (o.json_path != kStdoutPath) gap8_study::print_tables(study);
   if (!o.json_path.empty())
     write_output_file(o.json_path, gap8_study::to_json(study).dump(2) + "\n");
   return 0;
@@ -100,7 +101,9 @@ Command add_gap8_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--cores", o->cores, "Core counts, e.g. 1,8 or 1-8")->capture_default_str();
   sub->add_option("--mhz", o->mhz, "Cluster clock for fps and latency")->capture_default_str();
-  sub->add_option("--json", o->json_path, "Also write the figures as JSON to this file");
+  sub->add_option(
+      "--json", o->json_path,
+      "Also write the figures as JSON to FILE ('-': standard output, instead of the tables)");
   sub->add_flag("--no-contention", o->no_contention, "Do not model TCDM bank conflicts");
   sub->add_flag("--chunked", o->chunked, "Split POIs in contiguous chunks, not round robin");
   sub->add_option("frames", o->frames, "PREV NEXT (default: a real pair, all 64 POIs accepted)");

@@ -1,0 +1,67 @@
+// One vocabulary and one error style across the subcommands: option errors name the option, the
+// bad value and what is allowed, and where to read more; `--json -` is standard output.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "bad_input.hpp"
+#include "run_program.hpp"
+
+using pxflow::test::require_bad_input;
+using pxflow::test::run_pxflow;
+
+TEST_CASE("option errors in pxflow's style, not CLI11's sentences", "[cli][errors]") {
+  require_bad_input(
+      {"check", "--cases", "1e3"},
+      "--cases: '1e3': must be a number from 1 to 100000000 (see pxflow check --help)");
+  require_bad_input({"bench", "--min-time", "1000"},
+                    "--min-time: '1000': must be a number from 0 to 600 (see pxflow bench --help)");
+  require_bad_input({"check", "--seed", "1", "--seed", "2"},
+                    "--seed: given 2 times: give it once (see pxflow check --help)");
+  require_bad_input({"flow", "--backend"}, "--backend: needs a value (see pxflow flow --help)");
+  require_bad_input({"report"}, "--out: missing: it is required (see pxflow report --help)");
+  require_bad_input({"check", "--bogus"}, "unknown option --bogus (see pxflow check --help)");
+  require_bad_input({"backends", "extra"},
+                    "unexpected argument 'extra' (see pxflow backends --help)");
+  require_bad_input({"-V"}, "unknown option -V (see pxflow --help)");
+  require_bad_input({"--nope=3", "check"}, "unknown option --nope (see pxflow --help)");
+  require_bad_input({}, "no command given");
+  require_bad_input({"frobnicate"}, "unknown command 'frobnicate' (see pxflow --help)");
+}
+
+TEST_CASE("no CLI11 sentence reaches the user", "[cli][errors]") {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"check", "--cases", "0"},
+                                               {"check", "--json"},
+                                               {"flow", "a.png", "b.png", "c.png"},
+                                               {"accuracy", "--pairs", "0"},
+                                               {"check", "--threads", "-1"}}) {
+    const auto r = run_pxflow(args);
+    INFO(r.err);
+    CHECK(r.exit_code == 2);
+    for (const char* clis : {"At Most", "not in range", "not expected", "required TEXT", "Value "})
+      CHECK(r.err.find(clis) == std::string::npos);
+    CHECK(r.err.find("--help)") != std::string::npos);
+  }
+}
+
+TEST_CASE("pxflow backends --json lists every row with its family", "[cli][all-probes]") {
+  const auto table = run_pxflow({"backends"});
+  const auto r = run_pxflow({"backends", "--json", "-"});
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);  // the JSON alone on stdout
+  REQUIRE(j["backends"].is_array());
+  REQUIRE(j["backends"].size() >= 4);
+  CHECK(j["backends"][0]["name"] == "ref-original");
+  CHECK(j["backends"][0]["family"] == "reference");
+  CHECK(j["backends"][0]["available"] == true);
+  for (const auto& row : j["backends"]) {
+    const std::string name = row["name"];
+    // the table and the JSON agree on every row's status
+    const auto at = table.out.find("\n" + name + " ");
+    REQUIRE(at != std::string::npos);
+    const bool listed_available =
+        table.out.compare(table.out.find_first_not_of(' ', at + 1 + name.size()), 9, "available") ==
+        0;
+    CHECK(listed_available == row["available"].get<bool>());
+    CHECK(row["available"].get<bool>() == row["reason"].get<std::string>().empty());
+  }
+}
