@@ -106,12 +106,13 @@ TEST_CASE("pxflow accuracy --by-kind adds a block per kind of motion", "[accurac
 }
 
 TEST_CASE("bad input to pxflow accuracy: one line, exit 2", "[accuracy][cli][errors]") {
-  require_bad_input({"accuracy", "--data-dir", "/nonexistent/data"},
+  require_bad_input({"accuracy", "--data", "/nonexistent/data"},
                     "/nonexistent/data/rubberwhale1.png: no such file");
   require_bad_input({"accuracy", "--pairs", "0"}, "--pairs");
   require_bad_input({"accuracy", "--pairs", "many"}, "--pairs");
   require_bad_input({"accuracy", "--backend", "no-such-backend"},
                     "unknown backend 'no-such-backend'");
-  require_bad_input({"accuracy", "--threads", "0"}, "--threads");
+  require_bad_input({"accuracy", "--threads", "-1"}, "--threads");
+  require_bad_input({"accuracy", "--threads", "1025"}, "--threads");
   require_bad_input({"accuracy", "--video-pairs", "-1"}, "--video-pairs");
 }
