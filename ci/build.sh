@@ -9,4 +9,5 @@ shift || true
 # CI and the README commands require every backend family this machine kind has: a missing SDK
 # fails the configure instead of silently dropping a family.
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPXFLOW_REQUIRE_ALL=ON "$@" >/dev/null
-cmake --build "$build" -j"$(nproc)"
+# PXFLOW_BUILD_TARGET: build only that target (the main job needs only the CLI, not the tests).
+cmake --build "$build" -j"$(nproc)" ${PXFLOW_BUILD_TARGET:+--target "$PXFLOW_BUILD_TARGET"}

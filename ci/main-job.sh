@@ -4,7 +4,7 @@
 # the performance report in out/report (report.md, report.html, results.json, results.csv).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-"$root/ci/build.sh" "$root/build"
+PXFLOW_BUILD_TARGET=pxflow "$root/ci/build.sh" "$root/build"
 pxflow="$root/build/pxflow"
 
 mkdir -p "$root/out"
