@@ -28,7 +28,6 @@ std::string version_text() {
 }  // namespace
 
 int run_pxflow(int argc, char** argv) {
-  quiet_opencv();
   install_interrupt_handlers();
   CLI::App app{
       "pxflow: the PX4FLOW optical-flow kernel, cross-checked bit for bit across backends"};

@@ -27,7 +27,4 @@ bool is_raw_path(const std::string& path);
 // files, directories, and images whose header declares more than kMaxFramePixels.
 Frame load_frame(const std::string& path, std::optional<FrameSize> raw_size);
 
-// Silences OpenCV's own log lines, so that a bad file gives our one error line and nothing else.
-void quiet_opencv();
-
 }  // namespace pxflow

@@ -1,0 +1,24 @@
+#include "video_file.hpp"
+
+#include <filesystem>
+
+#include "errors.hpp"
+#include "opencv_module.hpp"
+
+namespace pxflow {
+
+VideoFile::VideoFile(const std::string& path) : api_(opencv_api()) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
+  std::string error;
+  video_ = api_.open_video(path, error);
+  if (!video_) throw InputError(path + ": " + error);
+}
+
+VideoFile::~VideoFile() { api_.close_video(video_); }
+
+bool VideoFile::read(Frame& out) { return api_.read_video_frame(video_, &out); }
+
+bool VideoFile::skip() { return api_.read_video_frame(video_, nullptr); }
+
+}  // namespace pxflow
