@@ -82,12 +82,8 @@ bool is_raw_path(const std::string& path) {
 
 Frame load_frame(const std::string& path, std::optional<FrameSize> raw_size) {
   const auto bytes = checked_file_size(path);
-  if (is_raw_path(path)) {
-    if (!raw_size) throw InputError(path + ": a .raw file needs --size WIDTHxHEIGHT");
-    return load_raw(path, *raw_size, bytes);
-  }
-  if (raw_size)
-    throw InputError(path + ": --size applies to .raw files only (image files carry their size)");
+  if (raw_size) return load_raw(path, *raw_size, bytes);  // --size: raw, whatever the name
+  if (is_raw_path(path)) throw InputError(path + ": a .raw file needs --size WIDTHxHEIGHT");
   return load_image(path);
 }
 

@@ -7,9 +7,17 @@
 
 namespace pxflow {
 
-VideoFile::VideoFile(const std::string& path) : api_(opencv_api()) {
+namespace {
+
+const opencv::Api& existing_video_api(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
+  return opencv_api();
+}
+
+}  // namespace
+
+VideoFile::VideoFile(const std::string& path) : api_(existing_video_api(path)) {
   std::string error;
   video_ = api_.open_video(path, error);
   if (!video_) throw InputError(path + ": " + error);
