@@ -31,6 +31,7 @@ struct FlowOptions {
   ProblemOptions problem;
   std::string size, crop;
   int bin = 1;
+  int max_pairs = 0;                        // 0 = all
   std::string backend = kReferenceBackend;  // the executable spec, and it counts its work
   BackendOptions backend_options;
   std::string json, jsonl, csv, draw, pairs;
@@ -228,12 +229,14 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
         (r.device.empty() ? "" : " on " + r.device);
     ++pairs;
   };
+  const auto more = [&] { return o.max_pairs == 0 || pairs < o.max_pairs; };
   if (o.pairs_given) {
     for (const auto& [a, b] : list)
-      one_pair(shaped({a, load_frame(a, raw_size)}, shaping),
-               shaped({b, load_frame(b, raw_size)}, shaping));
+      if (more())
+        one_pair(shaped({a, load_frame(a, raw_size)}, shaping),
+                 shaped({b, load_frame(b, raw_size)}, shaping));
   } else {
-    while (sequence->next(next)) {
+    while (more() && sequence->next(next)) {
       next = shaped(std::move(next), shaping);
       if (have_prev) one_pair(prev, next);
       prev = std::move(next), have_prev = true;
@@ -320,6 +323,8 @@ Command add_flow_command(CLI::App& app) {
       "folder DIR as pair-NNNNNN.png (a sequence)");
   CLI::Option* pairs =
       sub->add_option("--pairs", o->pairs, "A list file of pairs: PREV NEXT a line");
+  sub->add_option("--max-pairs", o->max_pairs, "Stop a sequence after N pairs (0 = all)")
+      ->check(CLI::Range(0, 100000000));
   sub->add_flag("--progress", o->progress,
                 "A line per pair on stderr even when stdout is taken and stderr is no terminal");
   sub->add_option("PREV", o->first, "First frame (image file, or raw with --size), or SOURCE");

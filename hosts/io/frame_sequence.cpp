@@ -162,6 +162,10 @@ std::unique_ptr<FrameSequence> open_frame_sequence(const std::string& source,
   if (!fs::exists(st)) throw InputError(source + ": no such file");
   if (!fs::is_regular_file(st)) throw InputError(source + ": not a regular file");
   if (raw_size) return std::make_unique<RawFrames>(source, *raw_size);
+  if (is_image_name(source))
+    throw InputError(source +
+                     ": one image is not a sequence; give PREV NEXT for one pair, or a video, a "
+                     "folder or a glob of frames as SOURCE (see pxflow flow --help)");
   return std::make_unique<VideoFrames>(source);
 }
 
