@@ -202,6 +202,16 @@ TEST_CASE("a frame too large for GAP8's L1 names --crop and --bin, which make it
   REQUIRE(binned.exit_code == 0);
   CHECK(json::parse(binned.out)["width"] == 128);
   CHECK(json::parse(binned.out)["height"] == 64);
+  // pxflow gap8 likewise: checked before any work, exit 2, and the same options make it fit.
+  const auto study = run_pxflow({"gap8", "--cores", "1", "--variant", "local", a, b});
+  CHECK(study.exit_code == 2);
+  CHECK(study.err_lines() == 1);
+  CHECK(study.err.find("does not fit L1") != std::string::npos);
+  CHECK(study.err.find("--crop WxH+X+Y") != std::string::npos);
+  const auto fits = run_pxflow({"gap8", "--cores", "1", "--variant", "local", "--crop",
+                                "128x128+200+100", "--bin", "2", a, b});
+  CHECK(fits.exit_code == 0);
+  CHECK(fits.out.find("(--crop 128x128+200+100 --bin 2: 64x64)") != std::string::npos);
   const auto outside = run_pxflow({"flow", "--crop", "64x64+560+0", a, b});
   CHECK(outside.exit_code == 2);
   CHECK(outside.err.find("does not lie inside the 584x388 frame") != std::string::npos);
