@@ -4,10 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <opencv2/core/utility.hpp>
 
 #include "check_corpus.hpp"
 #include "estimators.hpp"
+#include "opencv_module.hpp"
 #include "params.hpp"
 #include "truth_pairs.hpp"
 
@@ -48,7 +48,7 @@ MethodRow summarise(const std::string& method, const Samples& s, bool has_error)
 
 // Times one estimate with the steady clock and records its validity.
 template <class Estimator>
-FlowEstimate timed(Estimator& e, const cv::Mat& prev, const cv::Mat& next, Samples& s) {
+FlowEstimate timed(Estimator& e, const Frame& prev, const Frame& next, Samples& s) {
   const auto t0 = Clock::now();
   const FlowEstimate est = e.estimate(prev, next);
   const auto t1 = Clock::now();
@@ -69,10 +69,18 @@ struct Methods {
         px_name("pxflow (" + o.backend + ")") {}
 };
 
-cv::Point2d mean_point(const std::vector<cv::Point2f>& pts) {
-  cv::Point2d sum(0, 0);
-  for (const auto& q : pts) sum += cv::Point2d(q.x, q.y);
-  return sum / static_cast<double>(pts.size());
+Point2d mean_point(const std::vector<opencv::Point2f>& pts) {
+  Point2d sum;
+  for (const auto& q : pts) sum.x += q.x, sum.y += q.y;
+  const double n = static_cast<double>(pts.size());
+  return {sum.x / n, sum.y / n};
+}
+
+// The Euclidean distance, computed as cv::norm of the difference computes it (not std::hypot,
+// which may differ in the last bit).
+double distance(const Point2d& a, const Point2d& b) {
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return std::sqrt(dx * dx + dy * dy);
 }
 
 // Synthetic pairs: every method's error against the true motion. The truth for pxflow and LK is
@@ -81,18 +89,18 @@ cv::Point2d mean_point(const std::vector<cv::Point2f>& pts) {
 std::vector<SetRows> truth_sets(const std::string& set, const std::string& setting, const Params& p,
                                 const std::vector<TruthPair>& pairs, const AccuracyOptions& o) {
   Methods m(o, p);
-  const cv::Point2d poi_mean = mean_point(m.px.poi_centres());
-  const cv::Point2d centre((p.width - 1) / 2.0, (p.height - 1) / 2.0);
+  const Point2d poi_mean = mean_point(m.px.poi_centres());
+  const Point2d centre{(p.width - 1) / 2.0, (p.height - 1) / 2.0};
   std::map<std::string, Samples[3]> by_kind;  // "" = all pairs
   for (const TruthPair& t : pairs) {
-    const cv::Point2d at_pois = t.displacement_at(poi_mean.x, poi_mean.y);
-    const cv::Point2d at_centre = t.displacement_at(centre.x, centre.y);
+    const Point2d at_pois = t.displacement_at(poi_mean.x, poi_mean.y);
+    const Point2d at_centre = t.displacement_at(centre.x, centre.y);
     Samples* all = by_kind[""];
     const FlowEstimate px = timed(m.px, t.prev, t.next, all[0]);
     const FlowEstimate lk = timed(m.lk, t.prev, t.next, all[1]);
     const FlowEstimate dis = timed(m.dis, t.prev, t.next, all[2]);
-    const double errors[3] = {cv::norm(px.flow - at_pois), cv::norm(lk.flow - at_pois),
-                              cv::norm(dis.flow - at_centre)};
+    const double errors[3] = {distance(px.flow, at_pois), distance(lk.flow, at_pois),
+                              distance(dis.flow, at_centre)};
     for (int k = 0; k < 3; ++k) all[k].errors.push_back(errors[k]);
     if (!o.by_kind) continue;
     Samples* kind = by_kind[t.kind];
@@ -116,7 +124,7 @@ std::vector<SetRows> truth_sets(const std::string& set, const std::string& setti
 SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
   const auto pairs = video_pairs(o.data_dir + "/" + video, o.video_pairs);
   Params p = profile("px4flow-64");
-  p.width = pairs.front().prev.cols, p.height = pairs.front().prev.rows;
+  p.width = pairs.front().prev.width, p.height = pairs.front().prev.height;
   p.search_radius = 7, p.blocks = 32;  // the full-size setting of pxflow check's real frames
   validate(p);
   Methods m(o, p);
@@ -125,8 +133,8 @@ SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
     const FlowEstimate px = timed(m.px, v.prev, v.next, s[0]);
     const FlowEstimate lk = timed(m.lk, v.prev, v.next, s[1]);
     const FlowEstimate dis = timed(m.dis, v.prev, v.next, s[2]);
-    s[0].errors.push_back(cv::norm(px.flow - dis.flow));
-    s[1].errors.push_back(cv::norm(lk.flow - dis.flow));
+    s[0].errors.push_back(distance(px.flow, dis.flow));
+    s[1].errors.push_back(distance(lk.flow, dis.flow));
   }
   const std::string size = std::to_string(p.width) + "x" + std::to_string(p.height);
   return {video + " " + size + " (real, consecutive frames)",
@@ -139,7 +147,7 @@ SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
 }  // namespace
 
 AccuracyReport run_accuracy(const AccuracyOptions& o) {
-  cv::setNumThreads(o.threads);
+  opencv_api().set_threads(o.threads);
   AccuracyReport r;
   const auto images = load_source_images(o.data_dir);
   for (const auto& img : images) r.images.push_back(img.name);

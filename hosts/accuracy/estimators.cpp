@@ -6,17 +6,10 @@
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "grid.hpp"
+#include "opencv_module.hpp"
 #include "registry.hpp"
 
 namespace pxflow::accuracy {
-namespace {
-
-FrameView view_of(const cv::Mat& m) {
-  return {m.cols, m.rows, static_cast<std::ptrdiff_t>(m.step[0]), m.ptr<std::uint8_t>(0)};
-}
-
-}  // namespace
-
 PxflowEstimator::PxflowEstimator(const std::string& backend_name, const BackendOptions& options,
                                  const Params& p)
     : p_(p), records_(poi_count(p)) {
@@ -25,8 +18,8 @@ PxflowEstimator::PxflowEstimator(const std::string& backend_name, const BackendO
   for (const Poi& poi : poi_grid(p)) centres_.emplace_back(poi.x + 3.5f, poi.y + 3.5f);
 }
 
-FlowEstimate PxflowEstimator::estimate(const cv::Mat& prev, const cv::Mat& next) {
-  const FramePair pair{view_of(prev), view_of(next)};
+FlowEstimate PxflowEstimator::estimate(const Frame& prev, const Frame& next) {
+  const FramePair pair{prev.view(), next.view()};
   check_batch({&pair, 1}, p_, records_);
   OpCounts counts;
   backend_->run({&pair, 1}, p_, records_, counts);
@@ -48,11 +41,11 @@ double histogram_window_mean(const std::vector<double>& values) {
   return used ? sum / used : 0.0;
 }
 
-LucasKanadeEstimator::LucasKanadeEstimator(std::vector<cv::Point2f> points, const Params& p)
+LucasKanadeEstimator::LucasKanadeEstimator(std::vector<opencv::Point2f> points, const Params& p)
     : points_(std::move(points)), p_(p) {}
 
-FlowEstimate LucasKanadeEstimator::estimate(const cv::Mat& prev, const cv::Mat& next) {
-  cv::calcOpticalFlowPyrLK(prev, next, points_, moved_, status_, error_);
+FlowEstimate LucasKanadeEstimator::estimate(const Frame& prev, const Frame& next) {
+  opencv_api().lucas_kanade(prev.view(), next.view(), points_, moved_, status_);
   std::vector<double> xs, ys;
   for (std::size_t i = 0; i < points_.size(); ++i)
     if (status_[i]) {
@@ -66,13 +59,13 @@ FlowEstimate LucasKanadeEstimator::estimate(const cv::Mat& prev, const cv::Mat& 
   return {{sx / xs.size(), sy / ys.size()}, true};
 }
 
-DisEstimator::DisEstimator()
-    : dis_(cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST)) {}
+DisEstimator::DisEstimator() : cv_(opencv_api()), dis_(cv_.create_dis()) {}
 
-FlowEstimate DisEstimator::estimate(const cv::Mat& prev, const cv::Mat& next) {
-  dis_->calc(prev, next, field_);
-  const cv::Scalar mean = cv::mean(field_);
-  return {{mean[0], mean[1]}, true};
+DisEstimator::~DisEstimator() { cv_.destroy_dis(dis_); }
+
+FlowEstimate DisEstimator::estimate(const Frame& prev, const Frame& next) {
+  const auto [x, y] = cv_.dis_mean_flow(dis_, prev.view(), next.view());
+  return {{x, y}, true};
 }
 
 }  // namespace pxflow::accuracy

@@ -4,14 +4,14 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
-#include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "frame_ops.hpp"
+#include "opencv_module.hpp"
 #include "sample_data.hpp"
 #include "synthetic.hpp"
+#include "video_file.hpp"
 
 namespace pxflow::accuracy {
 namespace {
@@ -51,30 +51,10 @@ double uniform(Rng& rng, double lo, double hi) {
 
 // Rotation by angle (degrees, counter-clockwise on screen as OpenCV's) and scale about (cx, cy),
 // then a translation: all in double, so the truth is exact.
-cv::Matx23d affine(double cx, double cy, double angle_deg, double scale, double tx, double ty) {
+opencv::Affine affine(double cx, double cy, double angle_deg, double scale, double tx, double ty) {
   const double a = angle_deg * std::numbers::pi / 180.0;
   const double al = scale * std::cos(a), be = scale * std::sin(a);
   return {al, be, (1 - al) * cx - be * cy + tx, -be, al, be * cx + (1 - al) * cy + ty};
-}
-
-Frame to_frame(const cv::Mat& gray) {
-  Frame f{gray.cols, gray.rows, std::vector<std::uint8_t>(gray.total())};
-  for (int y = 0; y < gray.rows; ++y)
-    std::copy_n(gray.ptr<std::uint8_t>(y), gray.cols, f.pixels.data() + std::size_t(y) * gray.cols);
-  return f;
-}
-
-cv::Mat to_mat(const Frame& f) {
-  return cv::Mat(f.height, f.width, CV_8UC1, const_cast<std::uint8_t*>(f.pixels.data())).clone();
-}
-
-void add_noise(cv::Mat& m, double sigma, std::uint64_t seed) {
-  cv::Mat noise(m.size(), CV_16S), wide;
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::NORMAL, 0, sigma);
-  m.convertTo(wide, CV_16S);
-  wide += noise;
-  wide.convertTo(m, CV_8U);  // saturates
 }
 
 // Where the geometry's frame lies in the full image: binning factor and top-left corner in the
@@ -82,15 +62,16 @@ void add_noise(cv::Mat& m, double sigma, std::uint64_t seed) {
 struct Placement {
   int factor, x0, y0, width, height;
 };
-Placement place(const cv::Mat& full, Geometry g) {
-  if (g == Geometry::kWindow320) return {1, (full.cols - 320) / 2, (full.rows - 240) / 2, 320, 240};
-  const int f = (full.cols >= 256 && full.rows >= 256) ? 4 : 2;  // as check_corpus.cpp's camera
-  return {f, (full.cols / f - 64) / 2, (full.rows / f - 64) / 2, 64, 64};
+Placement place(const Frame& full, Geometry g) {
+  if (g == Geometry::kWindow320)
+    return {1, (full.width - 320) / 2, (full.height - 240) / 2, 320, 240};
+  const int f = (full.width >= 256 && full.height >= 256) ? 4 : 2;  // as check_corpus.cpp's camera
+  return {f, (full.width / f - 64) / 2, (full.height / f - 64) / 2, 64, 64};
 }
 
-cv::Mat capture(const cv::Mat& full, const Placement& pl) {
-  const Frame binned = bin(to_frame(full), pl.factor);
-  return to_mat(crop(binned, pl.x0, pl.y0, pl.width, pl.height));
+Frame capture(const Frame& full, const Placement& pl) {
+  const Frame binned = bin(full, pl.factor);
+  return crop(binned, pl.x0, pl.y0, pl.width, pl.height);
 }
 
 TruthPair make_pair(const SourceImage& img, const Kind& kind, Geometry g, std::uint64_t seed) {
@@ -106,29 +87,31 @@ TruthPair make_pair(const SourceImage& img, const Kind& kind, Geometry g, std::u
   const double cx = (pl.width - 1) / 2.0, cy = (pl.height - 1) / 2.0;
   const double fcx = f * (pl.x0 + cx) + (f - 1) / 2, fcy = f * (pl.y0 + cy) + (f - 1) / 2;
   // The sensor sees the scene move by f times the motion in binned pixels.
-  const cv::Matx23d full_motion = affine(fcx, fcy, angle, scale, f * tx, f * ty);
-  cv::Mat moved;
-  cv::warpAffine(img.gray, moved, cv::Mat(full_motion), img.gray.size(), cv::INTER_LINEAR,
-                 cv::BORDER_REFLECT);
+  const opencv::Api& cv = opencv_api();
+  const Frame moved = cv.warp_affine(img.gray, affine(fcx, fcy, angle, scale, f * tx, f * ty));
 
   TruthPair t{kind.name + std::string("/") + img.name + "/seed=" + std::to_string(seed), kind.name,
               capture(img.gray, pl), capture(moved, pl), affine(cx, cy, angle, scale, tx, ty)};
-  if (kind.blur_sigma > 0) cv::GaussianBlur(t.next, t.next, cv::Size(0, 0), kind.blur_sigma);
-  if (kind.brightness)
-    t.next.convertTo(t.next, CV_8U, uniform(rng, 0.8, 1.2), uniform(rng, -20, 20));
+  if (kind.blur_sigma > 0) cv.gaussian_blur(t.next, kind.blur_sigma);
+  if (kind.brightness) {
+    // The offset is drawn first: the order GCC evaluated the two draws in when they were the
+    // arguments of one call, so every seed still makes the pair it made before.
+    const double offset = uniform(rng, -20, 20);
+    cv.gain_offset(t.next, uniform(rng, 0.8, 1.2), offset);
+  }
   if (kind.noise_sigma > 0) {
-    add_noise(t.prev, kind.noise_sigma, seed * 2);
-    add_noise(t.next, kind.noise_sigma, seed * 2 + 1);
+    cv.add_noise(t.prev, kind.noise_sigma, seed * 2);
+    cv.add_noise(t.next, kind.noise_sigma, seed * 2 + 1);
   }
   return t;
 }
 
 }  // namespace
 
-cv::Point2d TruthPair::displacement_at(double x, double y) const {
-  const cv::Vec3d p(x, y, 1.0);
-  const cv::Vec2d q = motion * p;
-  return {q[0] - x, q[1] - y};
+Point2d TruthPair::displacement_at(double x, double y) const {
+  const double qx = motion[0] * x + motion[1] * y + motion[2];
+  const double qy = motion[3] * x + motion[4] * y + motion[5];
+  return {qx - x, qy - y};
 }
 
 std::vector<SourceImage> load_source_images(const std::string& data_dir) {
@@ -141,7 +124,7 @@ std::vector<SourceImage> load_source_images(const std::string& data_dir) {
     if (f.width < 336 || f.height < 256)
       throw InputError(path + ": " + std::to_string(f.width) + "x" + std::to_string(f.height) +
                        " is smaller than the 336x256 the accuracy pairs need");
-    out.push_back({name, to_mat(f)});
+    out.push_back({name, f});
   }
   return out;
 }
@@ -161,21 +144,18 @@ std::vector<TruthPair> make_truth_pairs(const std::vector<SourceImage>& images, 
 
 std::vector<VideoPair> video_pairs(const std::string& path, int count) {
   if (!std::filesystem::exists(path)) throw InputError(path + ": no such file " + kSampleDataHint);
-  cv::VideoCapture cap(path);
-  if (!cap.isOpened()) throw InputError(path + ": cannot open the video");
   // Count the frames by reading them (the container's own count can be wrong), then reopen.
   int frames = 0;
-  while (cap.grab()) ++frames;
-  cap.open(path);
+  for (VideoFile counting(path); counting.skip();) ++frames;
+  VideoFile video(path);
   const int step = std::max(2, frames / std::max(1, count));
   const std::string name = std::filesystem::path(path).filename().string();
   std::vector<VideoPair> out;
-  cv::Mat frame, gray, previous;
-  for (int n = 0; static_cast<int>(out.size()) < count && cap.read(frame); ++n) {
-    cv::cvtColor(frame, gray, cv::COLOR_BGR2GRAY);
-    if (n % step == 1 && !previous.empty())
-      out.push_back({name + "#" + std::to_string(n - 1), previous, gray.clone()});
-    if (n % step == 0) previous = gray.clone();
+  Frame gray, previous;
+  for (int n = 0; static_cast<int>(out.size()) < count && video.read(gray); ++n) {
+    if (n % step == 1 && !previous.pixels.empty())
+      out.push_back({name + "#" + std::to_string(n - 1), previous, gray});
+    if (n % step == 0) previous = gray;
   }
   if (out.size() < static_cast<std::size_t>(count))
     throw InputError(path + ": has fewer than " + std::to_string(count) + " frame pairs " +

@@ -3,22 +3,31 @@
 // (noise, blur, brightness change), at 64x64 binned like the PX4FLOW camera and at 320x240.
 #pragma once
 #include <cstdint>
-#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
+#include "frame.hpp"
+#include "opencv_api.hpp"
+
 namespace pxflow::accuracy {
 
+// A displacement or a position in pixels (x right, y down).
+struct Point2d {
+  double x = 0, y = 0;
+  friend bool operator==(const Point2d&, const Point2d&) = default;
+};
+
 // How prev maps to next: a point p of prev is at motion * (p, 1) in next (frame pixel units,
-// pixel centres at integer coordinates). Content moving right/down is positive, as in SPEC §5.
+// pixel centres at integer coordinates, row-major 2x3). Content moving right/down is positive,
+// as in SPEC §5.
 struct TruthPair {
   std::string name;  // kind, source image and seed, e.g. "rotate+translate/baboon.jpg/seed=7"
   std::string kind;
-  cv::Mat prev, next;  // CV_8UC1, same size
-  cv::Matx23d motion;
+  Frame prev, next;  // same size
+  opencv::Affine motion{};
 
   // The true displacement of the point (x, y).
-  cv::Point2d displacement_at(double x, double y) const;
+  Point2d displacement_at(double x, double y) const;
 };
 
 // The two geometries of the table.
@@ -29,7 +38,7 @@ enum class Geometry {
 
 struct SourceImage {
   std::string name;  // file name within the data directory
-  cv::Mat gray;
+  Frame gray;
 };
 
 // The opencv-doc images the pairs are made from; throws InputError naming a missing file.
@@ -42,7 +51,7 @@ std::vector<TruthPair> make_truth_pairs(const std::vector<SourceImage>& images, 
 // Consecutive frames of a video, gray.
 struct VideoPair {
   std::string name;  // e.g. "vtest.avi#40"
-  cv::Mat prev, next;
+  Frame prev, next;
 };
 // `count` pairs of consecutive frames spread over the video: frames (k*step, k*step+1) for
 // k = 0, 1, ..., step = frame count / count (at least 2).

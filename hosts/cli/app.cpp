@@ -28,8 +28,11 @@ std::string version_text() {
 
 }  // namespace
 
+namespace cli {
+VersionInfo pxflow_version_info() { return {PXFLOW_VERSION, PXFLOW_COMMIT}; }
+}  // namespace cli
+
 int run_pxflow(int argc, char** argv) {
-  quiet_opencv();
   install_interrupt_handlers();
   CLI::App app{
       "pxflow: the PX4FLOW optical-flow kernel, cross-checked bit for bit across backends"};

@@ -19,7 +19,8 @@ void ProblemOptions::add_to(CLI::App& app) {
   for (const auto& k : param_keys()) keys += (keys.empty() ? "" : ", ") + k;
   app.add_option("--profile", profile, "Parameter profile: " + profiles)->capture_default_str();
   app.add_option("--set", sets, "Override one parameter, KEY=VALUE (repeatable). Keys: " + keys)
-      ->type_name("KEY=VALUE");
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);  // one KEY=VALUE each: `--set S=7 video.avi` keeps the file
 }
 
 Params ProblemOptions::resolve(std::optional<std::pair<int, int>> frame) const {

@@ -74,12 +74,10 @@ void add_pictures(ReportInputs& in, const ReportArgs& a) {
         accuracy::video_pairs(std::string(CorpusOptions{}.data_dir) + "/" + video, 1);
     if (pairs.empty()) continue;
     const auto& vp = pairs.front();
-    p.width = vp.prev.cols, p.height = vp.prev.rows, p.search_radius = 7, p.blocks = 32;
+    p.width = vp.prev.width, p.height = vp.prev.height, p.search_radius = 7, p.blocks = 32;
     validate(p);
     auto b = open_backend_for(find_backend(backend), {}, p);
-    const FramePair pair{
-        {p.width, p.height, static_cast<std::ptrdiff_t>(vp.prev.step), vp.prev.data},
-        {p.width, p.height, static_cast<std::ptrdiff_t>(vp.next.step), vp.next.data}};
+    const FramePair pair{vp.prev.view(), vp.next.view()};
     std::vector<PoiRecord> records(poi_count(p));
     OpCounts counts;
     b->run({&pair, 1}, p, records, counts);

@@ -49,6 +49,12 @@ class Backend {
     bool exact = false;
   };
   virtual std::optional<DeviceTime> last_device_time() const { return std::nullopt; }
+
+  // What actually runs, for flow's summary and JSON: the implementation a row chose (the `cpu`
+  // row's ISA, e.g. "avx512bw"; empty: the row's own name) and the device it runs on (the
+  // OpenCL or Vulkan device's name; empty: the host).
+  virtual std::string implementation() const { return {}; }
+  virtual std::string device() const { return {}; }
 };
 
 // One row of the registry.

@@ -1,32 +1,22 @@
 #include "check_corpus.hpp"
 
+#include <cmath>
 #include <filesystem>
-#include <opencv2/core.hpp>
-#include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
+#include <numbers>
 
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "frame_ops.hpp"
 #include "grid.hpp"
 #include "kernel.hpp"
+#include "opencv_module.hpp"
+#include "video_file.hpp"
 
 namespace pxflow {
 namespace {
 
 OwnedPair owned(std::string name, const Frame& a, const Frame& b) {
   return {std::move(name), a.width, a.height, a.pixels, b.pixels};
-}
-
-Frame from_mat(const cv::Mat& gray) {
-  Frame f{gray.cols, gray.rows, std::vector<std::uint8_t>(gray.total())};
-  for (int y = 0; y < gray.rows; ++y)
-    std::copy_n(gray.ptr<std::uint8_t>(y), gray.cols, f.pixels.data() + y * gray.cols);
-  return f;
-}
-
-cv::Mat to_mat(const Frame& f) {
-  return cv::Mat(f.height, f.width, CV_8UC1, const_cast<std::uint8_t*>(f.pixels.data())).clone();
 }
 
 // The PX4FLOW camera bins its 752x480 sensor 4x4 and reads a 64x64 window from the middle.
@@ -50,15 +40,17 @@ std::vector<std::pair<std::string, std::pair<Frame, Frame>>> real_pairs(const Co
                     load_frame(path((std::string(stem) + "2.png").c_str()), std::nullopt)}});
   for (auto [video, first] :
        {std::pair{"vtest.avi", 0}, {"vtest.avi", 120}, {"tree.avi", 0}, {"tree.avi", 30}}) {
-    cv::VideoCapture cap(path(video));
-    cv::Mat frame, gray[2];
-    for (int n = 0; n <= first + 1 && cap.read(frame); ++n)
-      if (n >= first) cv::cvtColor(frame, gray[n - first], cv::COLOR_BGR2GRAY);
-    if (gray[1].empty())
+    VideoFile cap(path(video));
+    Frame gray[2];
+    int n = 0;
+    for (; n < first && cap.skip(); ++n) {
+    }
+    for (; n <= first + 1 && cap.read(gray[n - first]); ++n) {
+    }
+    if (n <= first + 1)
       throw InputError(std::string(video) + ": cannot read frames " + std::to_string(first) + ".." +
                        std::to_string(first + 1));
-    out.push_back(
-        {std::string(video) + "#" + std::to_string(first), {from_mat(gray[0]), from_mat(gray[1])}});
+    out.push_back({std::string(video) + "#" + std::to_string(first), {gray[0], gray[1]}});
   }
   return out;
 }
@@ -69,27 +61,25 @@ struct Motion {
   double noise_sigma, blur_sigma, gain, offset;
 };
 
+// OpenCV's getRotationMatrix2D (imgproc/src/imgwarp.cpp): rotation by angle (degrees) and scale
+// about (cx, cy), in double from float centre coordinates as OpenCV takes them.
+opencv::Affine rotation_matrix(float cx, float cy, double angle_deg, double scale) {
+  const double a = angle_deg * (std::numbers::pi / 180);
+  const double alpha = std::cos(a) * scale, beta = std::sin(a) * scale;
+  return {alpha, beta, (1 - alpha) * cx - beta * cy, -beta, alpha, beta * cx + (1 - alpha) * cy};
+}
+
 // Known motion applied with OpenCV (bilinear warp), then the camera's ills.
 Frame moved(const Frame& src, const Motion& m, std::uint64_t seed) {
-  const cv::Mat a = to_mat(src);
-  cv::Mat M = cv::getRotationMatrix2D(cv::Point2f(src.width / 2.0f, src.height / 2.0f), m.angle_deg,
-                                      m.scale);
-  M.at<double>(0, 2) += m.tx;
-  M.at<double>(1, 2) += m.ty;
-  cv::Mat b;
-  cv::warpAffine(a, b, M, a.size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
-  if (m.blur_sigma > 0) cv::GaussianBlur(b, b, cv::Size(0, 0), m.blur_sigma);
-  if (m.gain != 1.0 || m.offset != 0.0) b.convertTo(b, CV_8U, m.gain, m.offset);
-  if (m.noise_sigma > 0) {
-    cv::Mat n(b.size(), CV_16S);
-    cv::RNG rng(seed);
-    rng.fill(n, cv::RNG::NORMAL, 0, m.noise_sigma);
-    cv::Mat wide;
-    b.convertTo(wide, CV_16S);
-    wide += n;
-    wide.convertTo(b, CV_8U);  // saturates
-  }
-  return from_mat(b);
+  const opencv::Api& cv = opencv_api();
+  opencv::Affine M = rotation_matrix(src.width / 2.0f, src.height / 2.0f, m.angle_deg, m.scale);
+  M[2] += m.tx;
+  M[5] += m.ty;
+  Frame b = cv.warp_affine(src, M);
+  if (m.blur_sigma > 0) cv.gaussian_blur(b, m.blur_sigma);
+  if (m.gain != 1.0 || m.offset != 0.0) cv.gain_offset(b, m.gain, m.offset);
+  if (m.noise_sigma > 0) cv.add_noise(b, m.noise_sigma, seed);
+  return b;
 }
 
 const Motion kMotions[] = {

@@ -1,19 +1,13 @@
 #include "frame_io.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <opencv2/core.hpp>
-#include <opencv2/core/utils/logger.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "errors.hpp"
 #include "image_header.hpp"
+#include "opencv_module.hpp"
 #include "params.hpp"
 
 namespace pxflow {
@@ -56,71 +50,18 @@ Frame load_raw(const std::string& path, FrameSize size, std::uintmax_t bytes) {
   return f;
 }
 
-// libpng and libjpeg print their own complaints straight to stderr, below OpenCV's logger.
-// While a decoder runs, fd 2 points at /dev/null, so a bad file gives our one line only.
-class StderrSilenced {
- public:
-  StderrSilenced() : saved_(dup(2)) {
-    const int null_fd = open("/dev/null", O_WRONLY);
-    if (null_fd >= 0) {
-      dup2(null_fd, 2);
-      close(null_fd);
-    }
-  }
-  ~StderrSilenced() {
-    if (saved_ >= 0) {
-      dup2(saved_, 2);
-      close(saved_);
-    }
-  }
-  StderrSilenced(const StderrSilenced&) = delete;
-  StderrSilenced& operator=(const StderrSilenced&) = delete;
-
- private:
-  int saved_;
-};
-
 Frame load_image(const std::string& path) {
   if (auto declared = declared_image_size(path))
     check_size_limits(path, declared->width, declared->height);
-  cv::Mat img;
-  try {
-    StderrSilenced quiet;
-    img = cv::imread(path, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception&) {
-    img.release();
-  }
-  if (img.empty())
-    throw InputError(path + ": cannot decode as an image (corrupt, truncated or unknown format)");
-  if (img.depth() != CV_8U)
-    throw InputError(path + ": " + (img.depth() == CV_16U ? "16-bit" : "non-8-bit") +
-                     " image; pxflow needs 8-bit frames (convert it, e.g. to 8-bit PNG)");
-  check_size_limits(path, img.cols, img.rows);
-  cv::Mat gray;
-  switch (img.channels()) {
-    case 1:
-      gray = img;
-      break;
-    case 3:
-      cv::cvtColor(img, gray, cv::COLOR_BGR2GRAY);
-      break;  // OpenCV's weights
-    case 4:
-      cv::cvtColor(img, gray, cv::COLOR_BGRA2GRAY);
-      break;
-    default:
-      throw InputError(path + ": " + std::to_string(img.channels()) +
-                       "-channel image; expected gray, BGR or BGRA");
-  }
-  Frame f{gray.cols, gray.rows, {}};
-  f.pixels.resize(static_cast<std::size_t>(gray.cols) * gray.rows);
-  for (int y = 0; y < gray.rows; ++y)
-    std::copy_n(gray.ptr<std::uint8_t>(y), gray.cols, f.pixels.data() + y * gray.cols);
+  Frame f;
+  std::string error;
+  opencv_api().decode_gray(path, f, error);
+  if (!error.empty()) throw InputError(path + ": " + error);
+  check_size_limits(path, f.width, f.height);
   return f;
 }
 
 }  // namespace
-
-void quiet_opencv() { cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT); }
 
 FrameSize parse_frame_size(std::string_view text) {
   const auto x = text.find('x');
@@ -141,12 +82,8 @@ bool is_raw_path(const std::string& path) {
 
 Frame load_frame(const std::string& path, std::optional<FrameSize> raw_size) {
   const auto bytes = checked_file_size(path);
-  if (is_raw_path(path)) {
-    if (!raw_size) throw InputError(path + ": a .raw file needs --size WIDTHxHEIGHT");
-    return load_raw(path, *raw_size, bytes);
-  }
-  if (raw_size)
-    throw InputError(path + ": --size applies to .raw files only (image files carry their size)");
+  if (raw_size) return load_raw(path, *raw_size, bytes);  // --size: raw, whatever the name
+  if (is_raw_path(path)) throw InputError(path + ": a .raw file needs --size WIDTHxHEIGHT");
   return load_image(path);
 }
 

@@ -1,5 +1,6 @@
-// Frames in: any 8-bit image OpenCV reads (colour converted to gray the OpenCV way) or a raw
-// 8-bit file of a given size. Every bad input is an InputError naming the file.
+// Frames in: any 8-bit image OpenCV reads (colour converted to gray the OpenCV way, through the
+// OpenCV module) or a raw 8-bit file of a given size. Every bad input is an InputError naming the
+// file.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -22,12 +23,10 @@ FrameSize parse_frame_size(std::string_view text);
 // True for paths that name raw 8-bit files (extension .raw, any case).
 bool is_raw_path(const std::string& path);
 
-// Loads one frame. A .raw file needs `raw_size` and must hold exactly W*H bytes; other files
-// are decoded by OpenCV and must not be given a size. Refuses 16-bit and float images, empty
-// files, directories, and images whose header declares more than kMaxFramePixels.
+// Loads one frame. With `raw_size` the file is raw 8-bit, whatever its name, and must hold
+// exactly W*H bytes; without it a .raw file is an error and any other is decoded by OpenCV. Refuses
+// 16-bit and float images, empty files, directories, and images whose header declares more than
+// kMaxFramePixels.
 Frame load_frame(const std::string& path, std::optional<FrameSize> raw_size);
-
-// Silences OpenCV's own log lines, so that a bad file gives our one error line and nothing else.
-void quiet_opencv();
 
 }  // namespace pxflow

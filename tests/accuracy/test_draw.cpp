@@ -31,8 +31,11 @@ TEST_CASE("flow --draw writes a PNG of the expected size with vectors in it", "[
   const auto images = pxflow::accuracy::load_source_images(kData);
   const auto pair =
       pxflow::accuracy::make_truth_pairs(images, pxflow::accuracy::Geometry::kCamera64, 1, 3)[0];
-  REQUIRE(cv::imwrite(dir.path("a.png"), pair.prev));
-  REQUIRE(cv::imwrite(dir.path("b.png"), pair.next));
+  const auto mat = [](const pxflow::Frame& f) {
+    return cv::Mat(f.height, f.width, CV_8UC1, const_cast<std::uint8_t*>(f.pixels.data()));
+  };
+  REQUIRE(cv::imwrite(dir.path("a.png"), mat(pair.prev)));
+  REQUIRE(cv::imwrite(dir.path("b.png"), mat(pair.next)));
 
   struct Case {
     std::string prev, next, out;

@@ -82,8 +82,8 @@ TEST_CASE("raw files need --size and exactly W*H bytes", "[cli][errors]") {
   Files f;
   require_bad_input({"flow", f.raw, f.raw}, "needs --size");
   require_bad_input({"flow", "--size", "64x32", f.raw, f.raw}, "holds 4096 bytes");
-  require_bad_input({"flow", "--size", "64x64", f.good, f.good2},
-                    "--size applies to .raw files only");
+  // With --size every input is raw, whatever its name: a PNG is then the wrong number of bytes.
+  require_bad_input({"flow", "--size", "64x64", f.good, f.good2}, "but --size 64x64 needs 4096");
 }
 
 TEST_CASE("frames that do not fit each other or the profile", "[cli][errors]") {

@@ -40,9 +40,9 @@ TEST_CASE("an output path that is one of the inputs is refused before any work",
 }
 
 TEST_CASE("a failed write is an error: stdout and files", "[cli][lost]") {
-  const auto to_full = test::run_program(
-      "/bin/sh",
-      {"-c", std::string(PXFLOW_BINARY) + " flow --json " + kPrev + " " + kNext + " > /dev/full"});
+  const auto to_full =
+      test::run_program("/bin/sh", {"-c", std::string(PXFLOW_BINARY) + " flow --json - " + kPrev +
+                                              " " + kNext + " > /dev/full"});
   CHECK(to_full.exit_code == 1);
   CHECK(to_full.err.find("cannot write to standard output") != std::string::npos);
   const auto check = run_pxflow(

@@ -7,7 +7,9 @@
 
 #include "errors.hpp"
 #include "frame_io.hpp"
+#include "frame_ops.hpp"
 #include "gap8_cli.hpp"
+#include "gap8_flow_runner.hpp"
 #include "gap8_study.hpp"
 #include "output_file.hpp"
 
@@ -22,6 +24,8 @@ struct Gap8Options {
   std::string json_path;
   bool no_contention = false;
   bool chunked = false;
+  std::string crop;
+  int bin = 1;
   std::vector<std::string> frames;  // PREV NEXT, or none for the default pair
 };
 
@@ -69,7 +73,12 @@ int run_gap8(const Gap8Options& o) {
   options.mhz = o.mhz;
   options.contention = !o.no_contention;
   options.chunked = o.chunked;
+  FrameShaping shaping;
+  if (!o.crop.empty()) parse_crop(o.crop, shaping);
+  shaping.bin = o.bin;
   gap8_study::NamedFrames frames;
+  if (o.frames.empty() && shaping.any())
+    throw InputError("--crop and --bin shape the frames PREV NEXT; give them too");
   if (o.frames.empty()) {
     frames = gap8_study::default_pair(o.problem.resolve(std::pair{64, 64}));
   } else {
@@ -78,8 +87,22 @@ int run_gap8(const Gap8Options& o) {
               load_frame(o.frames[1], std::nullopt)};
     if (frames.prev.width != frames.next.width || frames.prev.height != frames.next.height)
       throw InputError("PREV and NEXT differ in size");
+    if (shaping.any()) {
+      frames.prev = shape_frame(frames.prev, shaping);
+      frames.next = shape_frame(frames.next, shaping);
+      frames.name += " (" + (o.crop.empty() ? "" : "--crop " + o.crop + " ") + "--bin " +
+                     std::to_string(shaping.bin) + ": " + std::to_string(frames.prev.width) + "x" +
+                     std::to_string(frames.prev.height) + ")";
+    }
   }
   const Params p = o.problem.resolve(std::pair{frames.prev.width, frames.prev.height});
+  // A problem outside L1 or L2 is the user's input, checked before any work.
+  for (Gap8Variant v : options.variants)
+    if (const std::string why = gap8_host::FlowRunner(v).unsupported(p); !why.empty())
+      throw InputError("PREV NEXT (" + std::to_string(p.width) + "x" + std::to_string(p.height) +
+                       "): " + why +
+                       "; make the frames smaller with --crop WxH+X+Y (a window) or --bin N (N x N "
+                       "pixels averaged) (see pxflow gap8 --help)");
   options.paper_problem = p == profile("px4flow-64");
   const FramePair pair{frames.prev.view(), frames.next.view()};
   const gap8_study::Study study = gap8_study::run_study(pair, frames.name, p, options);
@@ -106,6 +129,10 @@ Command add_gap8_command(CLI::App& app) {
       "Also write the figures as JSON to FILE ('-': standard output, instead of the tables)");
   sub->add_flag("--no-contention", o->no_contention, "Do not model TCDM bank conflicts");
   sub->add_flag("--chunked", o->chunked, "Split POIs in contiguous chunks, not round robin");
+  sub->add_option("--crop", o->crop,
+                  "Use the window WxH+X+Y of PREV and NEXT (e.g. 64x64+100+40), before --bin");
+  sub->add_option("--bin", o->bin, "Average N x N pixels of PREV and NEXT into one (after --crop)")
+      ->check(CLI::Range(1, 64));
   sub->add_option("frames", o->frames, "PREV NEXT (default: a real pair, all 64 POIs accepted)");
   return {sub, [o] { return run_gap8(*o); }};
 }
