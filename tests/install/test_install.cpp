@@ -7,12 +7,13 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "frame_io.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
 
@@ -33,8 +34,12 @@ RunResult must_run(const std::string& binary, const std::vector<std::string>& ar
   return r;
 }
 
-// `pxflow flow` with its JSON on stdout.
+// `pxflow flow` with its JSON on stdout: `--json` when it is a flag, `--json -` when it takes a
+// file (issue 15's shared convention), as `pxflow flow --help` says.
 json flow_json(const std::string& pxflow, std::vector<std::string> args) {
+  const std::string help = must_run(pxflow, {"flow", "--help"}).out;
+  const bool takes_file = std::regex_search(help, std::regex("\\n +--json [A-Z]"));
+  if (takes_file) args.insert(args.begin(), "-");
   args.insert(args.begin(), {"flow", "--json"});
   const RunResult r = must_run(pxflow, args);
   return json::parse(r.out);
@@ -54,11 +59,20 @@ std::vector<std::string> subcommands(const std::string& help) {
   return names;
 }
 
-void write_raw(const std::string& path, const pxflow::Frame& f) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(f.pixels.data()),
-            static_cast<std::streamsize>(f.pixels.size()));
+// An 8-bit image as raw gray bytes, converted as pxflow's loader does (hosts/io: OpenCV's
+// BGR(A)-to-gray weights); the test proves it by comparing pxflow flow on both. Returns "WxH".
+std::string write_raw(const std::string& image, const std::string& raw) {
+  const cv::Mat img = cv::imread(image, cv::IMREAD_UNCHANGED);
+  REQUIRE(!img.empty());
+  REQUIRE(img.depth() == CV_8U);
+  cv::Mat gray = img;
+  if (img.channels() == 3) cv::cvtColor(img, gray, cv::COLOR_BGR2GRAY);
+  if (img.channels() == 4) cv::cvtColor(img, gray, cv::COLOR_BGRA2GRAY);
+  REQUIRE(gray.channels() == 1);
+  std::ofstream out(raw, std::ios::binary);
+  for (int y = 0; y < gray.rows; ++y) out.write(gray.ptr<char>(y), gray.cols);
   REQUIRE(out.good());
+  return std::to_string(gray.cols) + "x" + std::to_string(gray.rows);
 }
 
 // The same answer, key by key: the float bits, the quality, the accepted count, every record.
@@ -141,14 +155,11 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
     WARN("PXFLOW_MAN_PAGES=OFF: no man pages to check");
   }
 
-  // A real pair, as raw frames decoded by pxflow's own loader (the consumer reads raw only).
+  // A real pair, also as raw frames (the consumer reads raw frames only: it needs no OpenCV).
   const std::string data = pxflow::kSampleDataDir;
   const std::string png1 = data + "/rubberwhale1.png", png2 = data + "/rubberwhale2.png";
-  const pxflow::Frame prev = pxflow::load_frame(png1, std::nullopt);
-  const pxflow::Frame next = pxflow::load_frame(png2, std::nullopt);
-  write_raw(tmp.path("prev.raw"), prev);
-  write_raw(tmp.path("next.raw"), next);
-  const std::string size = std::to_string(prev.width) + "x" + std::to_string(prev.height);
+  const std::string size = write_raw(png1, tmp.path("prev.raw"));
+  REQUIRE(write_raw(png2, tmp.path("next.raw")) == size);
 
   // The consumer, with CMake: find_package(pxflow) from the prefix and nowhere else.
   const std::string cmake_build = tmp.path("consumer-cmake");
