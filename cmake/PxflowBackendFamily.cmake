@@ -76,13 +76,15 @@ function(pxflow_backend_family name)
     target_compile_definitions(pxflow_core PUBLIC ${F_DEFINITIONS})
   endif()
   target_link_libraries(pxflow_core PUBLIC ${F_LINK} PRIVATE ${F_PRIVATE_LINK})
-  # An imported target the family links (OpenCL::OpenCL) is seen where it was found only; global,
-  # pxflow_install() can name it in pxflowConfig.cmake and pxflow.pc.
+  # An imported target the family found (OpenCL::OpenCL) is seen in its folder only; global,
+  # pxflow_install() can name it in pxflowConfig.cmake and pxflow.pc. (CMake lets only the folder
+  # that created it do this; one found higher up is left as it is.)
   foreach(item ${F_LINK} ${F_PRIVATE_LINK})
     if(TARGET ${item})
       get_target_property(imported ${item} IMPORTED)
       get_target_property(global ${item} IMPORTED_GLOBAL)
-      if(imported AND NOT global)
+      get_target_property(origin ${item} SOURCE_DIR)
+      if(imported AND NOT global AND origin STREQUAL CMAKE_CURRENT_SOURCE_DIR)
         set_target_properties(${item} PROPERTIES IMPORTED_GLOBAL TRUE)
       endif()
     endif()

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # A new family's libraries are installed with no install line of their own: a build configured
 # with tests/install/library_family (one pxflow_backend_family() call whose LINK is a library of
-# its own and an SDK's imported target) exports that library, links it from pxflow::core, finds
-# the SDK in pxflowConfig.cmake and names both in pxflow.pc, in link order. Configure only.
+# its own, an SDK's imported target found in its folder and Threads::Threads found higher up)
+# configures, exports that library, links it from pxflow::core, finds the SDK in
+# pxflowConfig.cmake and names both in pxflow.pc, in link order. Configure only.
 # Usage: family_install.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 src=$1
