@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# A new family's libraries are installed with no install line of their own: a build configured
+# with tests/install/library_family (one pxflow_backend_family() call whose LINK is a library of
+# its own, an SDK's imported target found in its folder and Threads::Threads found higher up)
+# configures, exports that library, links it from pxflow::core, finds the SDK in
+# pxflowConfig.cmake and names both in pxflow.pc, in link order. Configure only.
+# Usage: family_install.sh SOURCE_DIR WORK_DIR
+set -euo pipefail
+src=$1
+work=$2
+rm -rf "$work"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+cmake -S "$src" -B "$work" -DBUILD_TESTING=OFF -DPXFLOW_WITH_ALL=OFF -DPXFLOW_MAN_PAGES=OFF \
+      -DPXFLOW_WITH_LIBRARY_FAMILY=ON "-DPXFLOW_EXTRA_FAMILY_DIRS=$src/tests/install/library_family" \
+      >"$work.log" 2>&1 || { cat "$work.log"; fail "configure"; }
+grep -q "pxflow: installed libraries: pxflow_core pxflow_library_family_kernel pxflow_reference" \
+  "$work.log" || { grep "installed libraries" "$work.log"; fail "the family's library is not installed, or not in link order"; }
+
+targets=$(echo "$work"/CMakeFiles/Export/*/pxflowTargets.cmake)
+grep -q "add_library(pxflow::library_family_kernel STATIC IMPORTED)" "$targets" \
+  || fail "pxflowTargets.cmake does not export the family's library"
+grep -A4 "set_target_properties(pxflow::core PROPERTIES" "$targets" \
+  | grep "INTERFACE_LINK_LIBRARIES" | grep -q "pxflow::library_family_kernel;FakeSdk::fake" \
+  || fail "pxflow::core does not link the family's library and the SDK"
+grep -q "libpxflow_library_family_kernel.a" "$work/cmake_install.cmake" \
+  || fail "cmake --install would not copy the family's library"
+grep -qx "find_dependency(FakeSdk)" "$work/pxflow-package/pxflowConfig.cmake" \
+  || fail "pxflowConfig.cmake does not find the SDK"
+grep -q "^Libs: .*-lpxflow_core -lpxflow_library_family_kernel -lpxflow_reference .*-L/opt/fakesdk/lib -lfakesdk" \
+  "$work/pxflow-package/pxflow.pc" || { grep Libs "$work/pxflow-package/pxflow.pc"; fail "pxflow.pc"; }
+echo "family install: ok"

@@ -1,0 +1,214 @@
+// The installed tree as a user meets it: `cmake --install` of this build into a temporary
+// prefix; the installed pxflow, gap8-run, man pages and package files; and a consumer program
+// (consumer/) built against that prefix only, once with find_package(pxflow) and once with
+// pkg-config, whose records on a real pair must equal the installed `pxflow flow --json`.
+#include <catch2/catch.hpp>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "run_program.hpp"
+#include "sample_data.hpp"
+
+using nlohmann::json;
+using pxflow::test::run_program;
+using pxflow::test::RunResult;
+using pxflow::test::slurp;
+namespace fs = std::filesystem;
+
+namespace {
+
+RunResult must_run(const std::string& binary, const std::vector<std::string>& args) {
+  RunResult r = run_program(binary, args);
+  std::string line = binary;
+  for (const auto& a : args) line += " " + a;
+  INFO("command: " << line << "\nstdout: " << r.out << "\nstderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  return r;
+}
+
+// `pxflow flow` with its JSON on stdout: `--json` when it is a flag, `--json -` when it takes a
+// file (issue 15's shared convention), as `pxflow flow --help` says.
+json flow_json(const std::string& pxflow, std::vector<std::string> args) {
+  const std::string help = must_run(pxflow, {"flow", "--help"}).out;
+  const bool takes_file = std::regex_search(help, std::regex("\\n +--json [A-Z]"));
+  if (takes_file) args.insert(args.begin(), "-");
+  args.insert(args.begin(), {"flow", "--json"});
+  const RunResult r = must_run(pxflow, args);
+  return json::parse(r.out);
+}
+
+// The subcommands `pxflow --help` lists (the lines of its "Subcommands:" section).
+std::vector<std::string> subcommands(const std::string& help) {
+  std::vector<std::string> names;
+  const auto start = help.find("\nSubcommands:\n");
+  REQUIRE(start != std::string::npos);
+  std::istringstream lines(help.substr(start + 14));
+  const std::regex entry("^  ([a-z0-9][a-z0-9-]*)( .*)?$");
+  for (std::string line; std::getline(lines, line) && !line.empty();) {
+    std::smatch m;
+    if (std::regex_match(line, m, entry)) names.push_back(m[1]);
+  }
+  return names;
+}
+
+// An 8-bit image as raw gray bytes, converted as pxflow's loader does (hosts/io: OpenCV's
+// BGR(A)-to-gray weights); the test proves it by comparing pxflow flow on both. Returns "WxH".
+std::string write_raw(const std::string& image, const std::string& raw) {
+  const cv::Mat img = cv::imread(image, cv::IMREAD_UNCHANGED);
+  REQUIRE(!img.empty());
+  REQUIRE(img.depth() == CV_8U);
+  cv::Mat gray = img;
+  if (img.channels() == 3) cv::cvtColor(img, gray, cv::COLOR_BGR2GRAY);
+  if (img.channels() == 4) cv::cvtColor(img, gray, cv::COLOR_BGRA2GRAY);
+  REQUIRE(gray.channels() == 1);
+  std::ofstream out(raw, std::ios::binary);
+  for (int y = 0; y < gray.rows; ++y) out.write(gray.ptr<char>(y), gray.cols);
+  REQUIRE(out.good());
+  return std::to_string(gray.cols) + "x" + std::to_string(gray.rows);
+}
+
+// The same answer: the float bits, the quality, the accepted count, and every record field by
+// field (SPEC §4's fields; pxflow may print more keys per record, such as a status name).
+void require_same_answer(const json& a, const json& b) {
+  for (const char* key : {"flow_x_bits", "flow_y_bits", "quality", "meancount"}) {
+    CAPTURE(key);
+    REQUIRE(a.at(key) == b.at(key));
+  }
+  const json& pa = a.at("pois");
+  const json& pb = b.at("pois");
+  REQUIRE(pa.size() == pb.size());
+  for (std::size_t i = 0; i < pa.size(); ++i)
+    for (const char* field :
+         {"x", "y", "status", "feature", "dx", "dy", "sad", "dir", "sub", "hx", "hy"}) {
+      CAPTURE(i, field);
+      REQUIRE(pa[i].at(field) == pb[i].at(field));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the installed tree runs, and a consumer built against it alone matches pxflow flow",
+          "[install]") {
+  pxflow::test::TempDir tmp;
+  const std::string prefix = tmp.path("prefix");
+  const std::string libdir = prefix + "/" + PXFLOW_LIBDIR;
+  must_run(PXFLOW_CMAKE, {"--install", PXFLOW_BUILD_DIR, "--prefix", prefix});
+
+  const std::string pxflow = prefix + "/bin/pxflow";
+  for (const std::string& file :
+       {pxflow, prefix + "/include/pxflow/registry.hpp", prefix + "/include/pxflow/backend.hpp",
+        prefix + "/include/pxflow/params.hpp", prefix + "/include/pxflow/frame.hpp",
+        prefix + "/include/pxflow/record.hpp", libdir + "/libpxflow_core.a",
+        libdir + "/libpxflow_reference.a", libdir + "/cmake/pxflow/pxflowConfig.cmake",
+        libdir + "/cmake/pxflow/pxflowConfigVersion.cmake",
+        libdir + "/cmake/pxflow/pxflowTargets.cmake", libdir + "/pkgconfig/pxflow.pc"}) {
+    CAPTURE(file);
+    CHECK(fs::is_regular_file(file));
+  }
+  if (PXFLOW_HAS_GAP8_RUN) {
+    CHECK(fs::is_regular_file(prefix + "/bin/gap8-run"));
+    // It starts (its libelf resolves) and is the runner: no ELF is exit 2 with its usage.
+    const RunResult runner = run_program(prefix + "/bin/gap8-run", {});
+    CHECK(runner.exit_code == 2);
+    CHECK(runner.err.find("usage: gap8-run") != std::string::npos);
+  }
+
+  // Nothing installed points back into the build or the source tree.
+  const std::string source_dir =
+      fs::path(PXFLOW_CONSUMER_DIR).parent_path().parent_path().parent_path();
+  for (const std::string& file :
+       {libdir + "/cmake/pxflow/pxflowTargets.cmake", libdir + "/cmake/pxflow/pxflowConfig.cmake",
+        libdir + "/pkgconfig/pxflow.pc"}) {
+    CAPTURE(file);
+    const std::string text = slurp(file);
+    REQUIRE(!text.empty());
+    CHECK(text.find(PXFLOW_BUILD_DIR) == std::string::npos);
+    CHECK(text.find(source_dir + "/") == std::string::npos);
+  }
+
+  // The installed binary is this build's: the same --version line (commit, compiler, families).
+  const RunResult version = must_run(pxflow, {"--version"});
+  CHECK(version.out.rfind("pxflow ", 0) == 0);
+  CHECK(version.out == must_run(PXFLOW_BINARY, {"--version"}).out);
+
+  // The man pages: pxflow.1 and one page per subcommand of --help, named in pxflow.1.
+  if (PXFLOW_HAS_MAN_PAGES) {
+    const std::string man1 = prefix + "/" + PXFLOW_MANDIR + "/man1/";
+    const std::string main_page = slurp(man1 + "pxflow.1");
+    REQUIRE(main_page.find(".TH PXFLOW \"1\"") != std::string::npos);
+    const auto names = subcommands(must_run(pxflow, {"--help"}).out);
+    REQUIRE(names.size() >= 6);
+    for (const auto& name : names) {
+      CAPTURE(name);
+      std::string upper = name;
+      for (auto& c : upper) c = static_cast<char>(std::toupper(c));
+      CHECK(slurp(man1 + "pxflow-" + name + ".1").find(".TH PXFLOW-" + upper + " \"1\"") !=
+            std::string::npos);
+      CHECK(main_page.find(".BR pxflow\\-" + name + " (1)") != std::string::npos);
+    }
+    if (fs::exists("/usr/bin/man")) {
+      const RunResult shown = must_run("/usr/bin/man", {"-P", "cat", "-l", man1 + "pxflow.1"});
+      CHECK(shown.out.find("PXFLOW(1)") != std::string::npos);
+      CHECK(shown.out.find("pxflow-flow(1)") != std::string::npos);
+      CHECK(shown.out.find(version.out.substr(0, version.out.find(' ', 7))) !=
+            std::string::npos);  // the footer: "pxflow 0.1"
+    } else {
+      WARN("no /usr/bin/man (man-db): the pages were checked as files only");
+    }
+  } else {
+    WARN("PXFLOW_MAN_PAGES=OFF: no man pages to check");
+  }
+
+  // A real pair, also as raw frames (the consumer reads raw frames only: it needs no OpenCV).
+  const std::string data = pxflow::kSampleDataDir;
+  const std::string png1 = data + "/rubberwhale1.png", png2 = data + "/rubberwhale2.png";
+  const std::string size = write_raw(png1, tmp.path("prev.raw"));
+  REQUIRE(write_raw(png2, tmp.path("next.raw")) == size);
+
+  // The consumer, with CMake: find_package(pxflow) from the prefix and nowhere else.
+  const std::string cmake_build = tmp.path("consumer-cmake");
+  must_run(PXFLOW_CMAKE,
+           {"-S", PXFLOW_CONSUMER_DIR, "-B", cmake_build, "-DCMAKE_BUILD_TYPE=Release",
+            "-DCMAKE_CXX_COMPILER=" PXFLOW_CXX, "-DCMAKE_PREFIX_PATH=" + prefix,
+            "-DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF"});
+  CHECK(slurp(cmake_build + "/CMakeCache.txt")
+            .find("pxflow_DIR:PATH=" + libdir + "/cmake/pxflow\n") != std::string::npos);
+  must_run(PXFLOW_CMAKE, {"--build", cmake_build});
+
+  // The consumer, with pkg-config: one compiler line, as the README shows it.
+  const std::string pc_binary = tmp.path("consumer-pkg-config");
+  must_run(
+      "/bin/sh",
+      {"-c", "PKG_CONFIG_PATH='" + libdir + "/pkgconfig' && export PKG_CONFIG_PATH && '" +
+                 PXFLOW_CXX + "' -std=c++20 -O2 '" + PXFLOW_CONSUMER_DIR + "/consumer.cpp' -o '" +
+                 pc_binary + "' $('" + PXFLOW_PKG_CONFIG + "' --cflags --libs pxflow)"});
+
+  // Both answer with the registry's default backend; pxflow flow runs the same backend on the
+  // PNG files, and ref-original on the raw ones (the raw frames are the PNGs' pixels).
+  const json from_png_ref = flow_json(pxflow, {png1, png2});
+  const json from_raw_ref =
+      flow_json(pxflow, {"--size", size, tmp.path("prev.raw"), tmp.path("next.raw")});
+  require_same_answer(from_png_ref, from_raw_ref);
+  std::size_t accepted = 0;
+  for (const auto& poi : from_png_ref.at("pois")) accepted += poi.at("status") == 2;
+  CHECK(from_png_ref.at("pois").size() == 64);  // px4flow-64: 8x8 POIs
+  CHECK(accepted >= 10);  // a real estimate: MINCOUNT (10) accepted POIs or more
+
+  for (const std::string& consumer : {cmake_build + "/consumer", pc_binary}) {
+    CAPTURE(consumer);
+    const RunResult r = must_run(consumer, {tmp.path("prev.raw"), tmp.path("next.raw"), size});
+    const json mine = json::parse(r.out);
+    const std::string backend = mine.at("backend");
+    CAPTURE(backend);
+    require_same_answer(mine, flow_json(pxflow, {"--backend", backend, png1, png2}));
+    require_same_answer(mine, from_png_ref);
+  }
+}
