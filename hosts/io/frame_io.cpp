@@ -24,9 +24,9 @@ void check_size_limits(const std::string& what, std::int64_t w, std::int64_t h) 
 
 // Existence, type and emptiness, with the message a user needs.
 std::uintmax_t checked_file_size(const std::string& path) {
+  require_existing(path);
   std::error_code ec;
   const auto st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw InputError(path + ": no such file");
   if (fs::is_directory(st)) throw InputError(path + ": is a directory, not an image file");
   if (!fs::is_regular_file(st)) throw InputError(path + ": not a regular file");
   const auto size = fs::file_size(path, ec);
@@ -62,6 +62,19 @@ Frame load_image(const std::string& path) {
 }
 
 }  // namespace
+
+void require_existing(const std::string& path) {
+  std::error_code ec;
+  const auto st = fs::status(path, ec);
+  if (!ec && fs::exists(st)) return;
+  if (ec == std::errc::too_many_symbolic_link_levels)
+    throw InputError(path + ": a loop of symbolic links");
+  if (ec == std::errc::permission_denied)
+    throw InputError(path + ": cannot be reached (a folder on the way may not be searched)");
+  if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
+    throw InputError(path + ": cannot be opened (" + ec.message() + ")");
+  throw InputError(path + ": no such file");
+}
 
 FrameSize parse_frame_size(std::string_view text) {
   const auto x = text.find('x');

@@ -20,6 +20,10 @@ struct FrameSize {
 // Parses "WxH" (e.g. "64x64"); throws InputError for anything else or a size beyond the limits.
 FrameSize parse_frame_size(std::string_view text);
 
+// Throws InputError when `path` names nothing that can be opened, saying why: no such file, a
+// loop of symbolic links, a folder on the way that may not be searched.
+void require_existing(const std::string& path);
+
 // True for paths that name raw 8-bit files (extension .raw, any case).
 bool is_raw_path(const std::string& path);
 

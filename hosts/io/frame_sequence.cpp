@@ -159,7 +159,7 @@ std::unique_ptr<FrameSequence> open_frame_sequence(const std::string& source,
     return std::make_unique<FileFrames>(folder_frames(source, raw_size.has_value()), raw_size);
   if (!fs::exists(st) && source.find_first_of("*?[") != std::string::npos)
     return std::make_unique<FileFrames>(glob_frames(source), raw_size);
-  if (!fs::exists(st)) throw InputError(source + ": no such file");
+  require_existing(source);
   if (!fs::is_regular_file(st)) throw InputError(source + ": not a regular file");
   if (raw_size) return std::make_unique<RawFrames>(source, *raw_size);
   if (is_image_name(source))

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "errors.hpp"
+#include "frame_io.hpp"
 #include "opencv_module.hpp"
 
 namespace pxflow {
@@ -10,8 +11,7 @@ namespace pxflow {
 namespace {
 
 const opencv::Api& existing_video_api(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
+  require_existing(path);
   return opencv_api();
 }
 

@@ -1,5 +1,7 @@
 // One vocabulary and one error style across the subcommands: option errors name the option, the
 // bad value and what is allowed, and where to read more; `--json -` is standard output.
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -64,4 +66,14 @@ TEST_CASE("pxflow backends --json lists every row with its family", "[cli][all-p
     CHECK(listed_available == row["available"].get<bool>());
     CHECK(row["available"].get<bool>() == row["reason"].get<std::string>().empty());
   }
+}
+
+TEST_CASE("a loop of symbolic links is named as such, not 'no such file'", "[cli][errors]") {
+  pxflow::test::TempDir dir;
+  const std::string a = dir.path("a.png"), b = dir.path("b.png");
+  REQUIRE(::symlink(a.c_str(), b.c_str()) == 0);
+  REQUIRE(::symlink(b.c_str(), a.c_str()) == 0);
+  require_bad_input({"flow", a, b}, "a.png: a loop of symbolic links");
+  require_bad_input({"flow", a}, "a.png: a loop of symbolic links");
+  require_bad_input({"flow", dir.path("none.png"), b}, "none.png: no such file");
 }
