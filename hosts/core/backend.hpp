@@ -49,6 +49,17 @@ class Backend {
     bool exact = false;
   };
   virtual std::optional<DeviceTime> last_device_time() const { return std::nullopt; }
+
+  // What actually runs behind the row, for summaries and results files (`pxflow check`):
+  // `implementation` is the code path a row chooses at run time (the `cpu` row: the ISA it
+  // dispatched to, e.g. "avx512bw"; `opencl`: the kernel layout's row, e.g. "opencl-item"),
+  // `device` the device it runs on (OpenCL, Vulkan: the driver's device name). Empty: the row's
+  // own name, and the host.
+  struct Identity {
+    std::string implementation;
+    std::string device;
+  };
+  virtual Identity identity() const { return {}; }
 };
 
 // One row of the registry.
