@@ -20,7 +20,8 @@ struct CheckArgs {
   long cases = 0;
   bool verbose = false, generated_only = false;
   BackendOptions backend_options;
-  CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr;
+  CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr,
+              *shard_opt = nullptr;
 };
 
 // --backend NAME runs one backend, --backends LIST several: one meaning each, never both.
@@ -49,7 +50,7 @@ std::string command_line(const CheckArgs& a) {
   if (!a.require.empty()) c += " --require " + a.require;
   if (a.cases > 0) c += " --cases " + std::to_string(a.cases);
   c += " --seed " + std::to_string(a.seed);
-  if (!a.shard.empty()) c += " --shard " + a.shard;
+  if (a.shard_opt->count() > 0) c += " --shard " + a.shard;
   if (a.generated_only) c += " --generated-only";
   if (a.data_opt->count() > 0) c += " --data " + a.data_dir;
   if (!a.backend_options.device.empty()) c += " --device " + a.backend_options.device;
@@ -64,7 +65,7 @@ int run_check_command(const CheckArgs& a) {
   o.backends = chosen_backends(a);
   o.require = split_list(a.require);
   o.fuzz_pairs = a.cases;
-  if (!a.shard.empty()) o.shard = parse_shard("--shard", a.shard);
+  if (a.shard_opt->count() > 0) o.shard = parse_shard("--shard", a.shard);
   o.verbose = a.verbose;
   o.backend_options = a.backend_options;
   o.corpus.seed = a.seed;
@@ -121,9 +122,9 @@ Command add_check_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--cases", a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
       ->check(pair_count());
-  sub->add_option("--shard", a->shard,
-                  "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
-                  "`pxflow merge` combines the parts' --json files)");
+  a->shard_opt = sub->add_option("--shard", a->shard,
+                                 "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
+                                 "`pxflow merge` combines the parts' --json files)");
   sub->add_option("--json", a->json_path, "Write the results as JSON to FILE ('-': stdout)");
   a->data_opt = sub->add_option("--data", a->data_dir, "Folder of the real frames (opencv-doc)")
                     ->capture_default_str();
