@@ -67,6 +67,11 @@ Command add_merge_command(CLI::App& app) {
       "merge",
       "Combine the --json files of a campaign's shards (pxflow check --shard K/M) into one "
       "verdict and check file; exit 0 only when every shard is there and passed");
+  sub->footer(
+      "Exit 0: every shard 1..M given and passed. 1: a shard failed, nothing was checked, or "
+      "shards are missing (verdict 'incomplete'; OUT is written). 2: the files are not the "
+      "shards of one campaign (another commit, seed, --cases, corpus, backends, --require or "
+      "M; a shard twice; a merged file); nothing is written. See docs/harness.md.");
   sub->add_option("OUT", a->out, "The merged check file to write ('-': stdout)")->required();
   sub->add_option("FILES", a->files, "The shards' check files, every K of one M once")->required();
   return {sub, [a] { return run_merge_command(*a); }};

@@ -131,6 +131,41 @@ TEST_CASE("shard: the fixed corpus splits too, with skips, n/a and a required ba
   CHECK(m2["backends"][1]["state"] == "skipped");
 }
 
+TEST_CASE("shard: a shard whose cases are all n/a exits 0; merge judges the campaign", "[shard]") {
+  TempDir dir;
+  // The generated corpus is 4 cases per setting: shard 4/4 holds the 640x480 ones, n/a for
+  // test-small-only.
+  std::vector<std::string> merge = {"merge", dir.path("m.json")};
+  for (int k = 1; k <= 4; ++k) {
+    const std::string file = dir.path("s" + std::to_string(k) + ".json");
+    const RunResult r = pxflow_run({"check", "--backend", "test-small-only", "--generated-only",
+                                    "--shard", std::to_string(k) + "/4", "--json", file});
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    const json j = read(file);
+    CHECK(j["verdict"] == (k <= 2 ? "passed" : "nothing-checked"));
+    if (k > 2)
+      CHECK(r.out.find("compared nothing: exit 0, pxflow merge judges") != std::string::npos);
+    merge.push_back(file);
+  }
+  const RunResult m = pxflow_run(merge);
+  CHECK(m.exit_code == 0);
+  CHECK(read(dir.path("m.json"))["passed"] == 8);
+  // A campaign in which no shard compared anything tested nothing: merge exits 1.
+  std::vector<std::string> skipped = {"merge", "-"};
+  for (int k = 1; k <= 2; ++k) {
+    const std::string file = dir.path("u" + std::to_string(k) + ".json");
+    CHECK(pxflow_run({"check", "--backend", "test-unavailable", "--generated-only", "--shard",
+                      std::to_string(k) + "/2", "--json", file})
+              .exit_code == 0);
+    skipped.push_back(file);
+  }
+  const RunResult none = pxflow_run(skipped);
+  CHECK(none.exit_code == 1);
+  CHECK(json::parse(none.out)["verdict"] == "nothing-checked");
+  CHECK(none.err.find("nothing was checked") != std::string::npos);
+}
+
 TEST_CASE("merge: mismatched, repeated or merged files are refused with one line", "[shard]") {
   TempDir dir;
   auto shard = [&](const std::string& name, std::vector<std::string> args,
