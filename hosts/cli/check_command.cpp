@@ -98,19 +98,6 @@ int run_check_command(const CheckArgs& a) {
   return r.ok() || merge_judges ? 0 : 1;
 }
 
-// --cases N: a whole number of pairs, said in the CLI's style (not CLI11's "not in range").
-CLI::Validator pair_count() {
-  return CLI::Validator(
-      [](std::string& s) {
-        const bool digits =
-            !s.empty() && s.size() <= 9 && s.find_first_not_of("0123456789") == std::string::npos;
-        if (!digits || std::stol(s) < 1)
-          return "'" + s + "': a whole number of random pairs from 1 to 100000000";
-        return std::string();
-      },
-      "N");
-}
-
 }  // namespace
 
 Command add_check_command(CLI::App& app) {
@@ -127,7 +114,7 @@ Command add_check_command(CLI::App& app) {
       ->check(seed_value())
       ->capture_default_str();
   sub->add_option("--cases", a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
-      ->check(pair_count());
+      ->check(CLI::Range(1L, 100000000L));
   a->shard_opt = sub->add_option("--shard", a->shard,
                                  "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
                                  "`pxflow merge` combines the parts' --json files)");

@@ -44,10 +44,14 @@ int run_merge_command(const MergeArgs& a) {
   m.command = "pxflow merge " + a.out;
   for (const std::string& f : a.files) m.command += " " + f;
 
+  // The campaign named by the command of its lowest shard given.
+  const ShardFile* lowest = &shards.front();
+  for (const ShardFile& f : shards)
+    if (f.report.shard.index < lowest->report.shard.index) lowest = &f;
   std::ostream& human = to_stdout ? std::cerr : std::cout;
-  human << "pxflow merge: " << shards.size() << " of " << shards.front().report.shard.count
+  human << "pxflow merge: " << shards.size() << " of " << lowest->report.shard.count
         << " shards of the " << m.campaign.kind << " campaign of seed " << m.seed << " (`"
-        << shards.front().report.command << "`)\n";
+        << lowest->report.command << "`)\n";
   for (const BackendOutcome& b : m.backends)
     for (const std::string& line : b.failures) human << line << "\n";
   print_check_summary(m, human);
