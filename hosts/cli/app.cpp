@@ -27,8 +27,9 @@ std::string version_text() {
 
 }  // namespace
 
-const char* cli::pxflow_version() { return PXFLOW_VERSION; }
-const char* cli::pxflow_commit() { return PXFLOW_COMMIT; }
+namespace cli {
+VersionInfo pxflow_version_info() { return {PXFLOW_VERSION, PXFLOW_COMMIT}; }
+}  // namespace cli
 
 int run_pxflow(int argc, char** argv) {
   quiet_opencv();

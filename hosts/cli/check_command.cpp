@@ -72,8 +72,9 @@ int run_check_command(const CheckArgs& a) {
   o.corpus.data_dir = a.data_dir;
   o.corpus.real = !a.generated_only;
   o.command = command_line(a);
-  o.pxflow_version = pxflow_version();
-  o.pxflow_commit = pxflow_commit();
+  const VersionInfo built = pxflow_version_info();
+  o.pxflow_version = built.version;
+  o.pxflow_commit = built.commit;
   const bool json_to_stdout = a.json_path == "-";
   if (!a.json_path.empty() && !json_to_stdout) check_output_path("--json", a.json_path);
   o.banner = "pxflow check: seed " + std::to_string(a.seed) +

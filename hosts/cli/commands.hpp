@@ -18,16 +18,18 @@ struct Command {
 };
 
 Command add_flow_command(CLI::App& app);
+Command add_merge_command(CLI::App& app);  // pxflow merge: check shards combined
 Command add_backends_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_accuracy_command(CLI::App& app);
-Command add_merge_command(CLI::App& app);
 
-// The version and git commit this binary was built from, as --version prints them (app.cpp).
-const char* pxflow_version();
-const char* pxflow_commit();
+// pxflow's version and the commit it was built from (what --version prints first).
+struct VersionInfo {
+  std::string version, commit;
+};
+VersionInfo pxflow_version_info();
 
 // --progress: progress lines on stderr even when it is not a terminal (CI logs).
 void add_progress_flag(CLI::App& sub);

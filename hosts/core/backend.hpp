@@ -50,16 +50,11 @@ class Backend {
   };
   virtual std::optional<DeviceTime> last_device_time() const { return std::nullopt; }
 
-  // What actually runs behind the row, for summaries and results files (`pxflow check`):
-  // `implementation` is the code path a row chooses at run time (the `cpu` row: the ISA it
-  // dispatched to, e.g. "avx512bw"; `opencl`: the kernel layout's row, e.g. "opencl-item"),
-  // `device` the device it runs on (OpenCL, Vulkan: the driver's device name). Empty: the row's
-  // own name, and the host.
-  struct Identity {
-    std::string implementation;
-    std::string device;
-  };
-  virtual Identity identity() const { return {}; }
+  // What actually runs, for flow's summary and JSON: the implementation a row chose (the `cpu`
+  // row's ISA, e.g. "avx512bw"; empty: the row's own name) and the device it runs on (the
+  // OpenCL or Vulkan device's name; empty: the host).
+  virtual std::string implementation() const { return {}; }
+  virtual std::string device() const { return {}; }
 };
 
 // One row of the registry.

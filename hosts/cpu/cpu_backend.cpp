@@ -46,7 +46,7 @@ class CpuBackend final : public Backend {
     }
     for (const OpCounts& c : item_counts) counts += c;
   }
-  Identity identity() const override { return {kernel_.name, {}}; }
+  std::string implementation() const override { return kernel_.name; }
 
  private:
   // Few large frames would leave cores idle (and one late-waking worker costs a whole frame):

@@ -53,10 +53,7 @@ class OpenclBackend final : public Backend {
     return DeviceTime{"opencl-event-profiling", timing_.kernel_seconds * 1e9, std::nullopt};
   }
   const std::string& device_name() const { return program_->device.name; }
-  Identity identity() const override {
-    return {tuning_.layout == OpenclLayout::kItemPerPoi ? "opencl-item" : "opencl-group",
-            program_->device.name + " (" + program_->device.platform_name + ")"};
-  }
+  std::string device() const override { return device_name(); }
   std::size_t group_size() const { return group_size_; }
   OpenclLayout layout() const { return tuning_.layout; }  // never kAuto
 

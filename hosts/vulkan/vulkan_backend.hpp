@@ -52,7 +52,7 @@ class VulkanBackend final : public Backend {
   std::size_t last_chunks() const { return last_chunks_; }
   std::size_t last_dispatches() const { return last_dispatches_; }
   std::string device_name() const;
-  Identity identity() const override { return {{}, device_name()}; }
+  std::string device() const override { return device_name(); }
   // Validation-layer messages so far (only with config.validation or PXFLOW_VULKAN_VALIDATION).
   std::vector<std::string> validation_messages() const;
 
