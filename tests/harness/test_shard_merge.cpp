@@ -131,7 +131,7 @@ TEST_CASE("shard: the fixed corpus splits too, with skips, n/a and a required ba
   CHECK(m2["backends"][1]["state"] == "skipped");
 }
 
-TEST_CASE("shard: a shard whose cases are all n/a exits 0; merge judges the campaign", "[shard]") {
+TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the campaign", "[shard]") {
   TempDir dir;
   // The generated corpus is 4 cases per setting: shard 4/4 holds the 640x480 ones, n/a for
   // test-small-only.
@@ -222,7 +222,7 @@ TEST_CASE("merge: mismatched, repeated or merged files are refused with one line
   CHECK(self.err.find("is an input") != std::string::npos);
 }
 
-TEST_CASE("merge: shards missing make an incomplete verdict, exit 1; '-' writes stdout",
+TEST_CASE("merge: shards missing make an incomplete verdict, exit 1, and - writes stdout",
           "[shard]") {
   TempDir dir;
   for (const char* k : {"1", "3"}) {
@@ -298,7 +298,7 @@ TEST_CASE("check --shard, --backend and --json -: the options and their errors",
   CHECK(last_line(r.err).find(" failed, 0 skipped") != std::string::npos);
 }
 
-TEST_CASE("check: progress counts the fixed corpus against its total; the summary its time",
+TEST_CASE("check: progress counts the fixed corpus against its total, the summary its time",
           "[shard]") {
   const RunResult r =
       pxflow_run({"check", "--backend", "ref-local", "--generated-only", "--progress"});
