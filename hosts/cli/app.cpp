@@ -49,7 +49,8 @@ int run_pxflow(int argc, char** argv) {
     family_flags.push_back(app.add_option(opt->flag, value, opt->help));
   std::vector<cli::Command> commands = {
       cli::add_flow_command(app),   cli::add_check_command(app),    cli::add_bench_command(app),
-      cli::add_report_command(app), cli::add_accuracy_command(app), cli::add_backends_command(app)};
+      cli::add_report_command(app), cli::add_accuracy_command(app), cli::add_backends_command(app),
+      cli::add_merge_command(app)};
   for (const cli::CliExtension& e : cli::registered_cli_extensions())
     if (e.add_command) commands.push_back(e.add_command(app));
   std::string command;  // the subcommand being parsed, for "see pxflow CMD --help"

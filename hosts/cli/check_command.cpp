@@ -1,5 +1,4 @@
 // pxflow check: the cross-check of every backend against ref-original.
-#include <fstream>
 #include <iostream>
 
 #include "check.hpp"
@@ -12,41 +11,92 @@
 namespace pxflow::cli {
 namespace {
 
+constexpr const char* kHelp = " (see pxflow check --help)";
+
 struct CheckArgs {
-  std::string backends, require, json_path, data_dir = CorpusOptions{}.data_dir;
+  std::string backend, backends, require, json_path, shard;
+  std::string data_dir = CorpusOptions{}.data_dir;
   std::uint64_t seed = 1;
   long cases = 0;
   bool verbose = false, generated_only = false;
   BackendOptions backend_options;
+  CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr,
+              *shard_opt = nullptr;
 };
+
+// --backend NAME runs one backend, --backends LIST several: one meaning each, never both.
+std::vector<std::string> chosen_backends(const CheckArgs& a) {
+  const bool one = a.backend_opt->count() > 0, list = a.backends_opt->count() > 0;
+  if (one && list)
+    throw InputError("--backend " + a.backend + " and --backends " + a.backends +
+                     ": give one of them (--backend NAME for one, --backends LIST for several)" +
+                     kHelp);
+  if (one && (a.backend.empty() || a.backend.find(',') != std::string::npos))
+    throw InputError("--backend: '" + a.backend +
+                     "': one backend name (several: --backends LIST; names: pxflow backends)" +
+                     kHelp);
+  if (one) return {a.backend};
+  if (list && split_list(a.backends).empty())
+    throw InputError("--backends: '" + a.backends +
+                     "': a comma-separated list of backend names (names: pxflow backends)" + kHelp);
+  return split_list(a.backends);
+}
+
+// The command that reproduces this run, for the results file.
+std::string command_line(const CheckArgs& a) {
+  std::string c = "pxflow check";
+  if (a.backend_opt->count() > 0) c += " --backend " + a.backend;
+  if (a.backends_opt->count() > 0) c += " --backends " + a.backends;
+  if (!a.require.empty()) c += " --require " + a.require;
+  if (a.cases > 0) c += " --cases " + std::to_string(a.cases);
+  c += " --seed " + std::to_string(a.seed);
+  if (a.shard_opt->count() > 0) c += " --shard " + a.shard;
+  if (a.generated_only) c += " --generated-only";
+  if (a.data_opt->count() > 0) c += " --data " + a.data_dir;
+  if (!a.backend_options.device.empty()) c += " --device " + a.backend_options.device;
+  if (a.backend_options.threads != 0)
+    c += " --threads " + std::to_string(a.backend_options.threads);
+  if (!a.json_path.empty()) c += " --json " + a.json_path;
+  return c;
+}
 
 int run_check_command(const CheckArgs& a) {
   CheckOptions o;
-  o.backends = split_list(a.backends);
+  o.backends = chosen_backends(a);
   o.require = split_list(a.require);
   o.fuzz_pairs = a.cases;
+  if (a.shard_opt->count() > 0) o.shard = parse_shard("--shard", a.shard);
   o.verbose = a.verbose;
   o.backend_options = a.backend_options;
   o.corpus.seed = a.seed;
   o.corpus.data_dir = a.data_dir;
   o.corpus.real = !a.generated_only;
-  if (!a.json_path.empty()) check_output_path("--json", a.json_path);
+  o.command = command_line(a);
+  const VersionInfo built = pxflow_version_info();
+  o.pxflow_version = built.version;
+  o.pxflow_commit = built.commit;
+  const bool json_to_stdout = a.json_path == "-";
+  if (!a.json_path.empty() && !json_to_stdout) check_output_path("--json", a.json_path);
   o.banner = "pxflow check: seed " + std::to_string(a.seed) +
              (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
-                          : ", fixed corpus");
-  const CheckReport r = run_check(o, std::cout);
-
-  std::printf("\n%-14s %-8s %7s %7s %5s %9s  %s\n", "backend", "result", "cases", "pairs", "n/a",
-              "run time", "note");
-  for (const auto& b : r.backends)
-    std::printf("%-14s %-8s %7ld %7ld %5ld %8.2fs  %s\n", b.name.c_str(), state_name(b.state),
-                b.passed + b.failed, b.pairs, b.not_applicable, b.seconds, b.reason.c_str());
-  std::printf("%ld passed, %ld failed, %ld skipped\n", r.passed, r.failed, r.skipped);
-  if (r.compared == 0)
-    std::printf(
-        "nothing was checked: no backend but the reference ran a case (see the skips above)\n");
-  if (!a.json_path.empty()) write_output_file(a.json_path, check_json(r).dump(2) + "\n");
-  return r.ok() ? 0 : 1;
+                          : ", fixed corpus") +
+             (o.shard.count > 1 ? ", shard " + o.shard.text() : "");
+  // With the JSON on stdout, everything for humans goes to stderr.
+  std::ostream& human = json_to_stdout ? std::cerr : std::cout;
+  const CheckReport r = run_check(o, human);
+  print_check_summary(r, human);
+  // A shard whose cases are all n/a for its backends (say the 640x480 ones for the GAP8 rows)
+  // compared nothing, rightly: whether the campaign tested anything is merge's verdict.
+  const bool merge_judges = o.shard.count > 1 && r.verdict() == "nothing-checked";
+  if (merge_judges)
+    human << "shard " << o.shard.text()
+          << " compared nothing: exit 0, pxflow merge judges the whole campaign\n";
+  const std::string json = check_json(r).dump(2) + "\n";
+  if (json_to_stdout)
+    std::cout << json;
+  else if (!a.json_path.empty())
+    write_output_file(a.json_path, json);
+  return r.ok() || merge_judges ? 0 : 1;
 }
 
 }  // namespace
@@ -55,8 +105,10 @@ Command add_check_command(CLI::App& app) {
   auto a = std::make_shared<CheckArgs>();
   CLI::App* sub =
       app.add_subcommand("check", "Check every backend against ref-original, bit for bit");
-  sub->add_option("--backends", a->backends,
-                  "Comma-separated backends to check (default: all compiled in)");
+  a->backend_opt =
+      sub->add_option("--backend", a->backend, "The one backend to check (see pxflow backends)");
+  a->backends_opt = sub->add_option("--backends", a->backends,
+                                    "Comma-separated backends to check (default: all compiled in)");
   sub->add_option("--require", a->require,
                   "Backends that must run (comma-separated, or 'all'): their skips fail");
   sub->add_option("--seed", a->seed, "Seed of the random pairs (printed; reproduces any failure)")
@@ -64,9 +116,12 @@ Command add_check_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--cases", a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
       ->check(CLI::Range(1L, 100000000L));
-  sub->add_option("--json", a->json_path, "Write the results as JSON to FILE");
-  sub->add_option("--data", a->data_dir, "Folder of the real frames (opencv-doc)")
-      ->capture_default_str();
+  a->shard_opt = sub->add_option("--shard", a->shard,
+                                 "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
+                                 "`pxflow merge` combines the parts' --json files)");
+  sub->add_option("--json", a->json_path, "Write the results as JSON to FILE ('-': stdout)");
+  a->data_opt = sub->add_option("--data", a->data_dir, "Folder of the real frames (opencv-doc)")
+                    ->capture_default_str();
   sub->add_flag("--generated-only", a->generated_only,
                 "Skip the real frames (random, hostile, threshold cases only)");
   sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");

@@ -53,6 +53,11 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
     }
     OpenedBackend opened = open_backend(*c.row, o.backend_options);
     c.backend = std::move(opened.backend);
+    if (c.backend) {  // what runs behind the row (Backend::implementation(), device())
+      const std::string implementation = c.backend->implementation();
+      c.outcome.implementation = implementation.empty() ? c.row->name : implementation;
+      c.outcome.device = c.backend->device();
+    }
     const std::string why = opened.why_not;
     if (!why.empty()) {
       const bool required =
@@ -158,44 +163,58 @@ const char* state_name(BackendState s) {
       return "skipped";
     case BackendState::kReference:
       return "reference";
+    case BackendState::kIncomplete:
+      return "incomplete";
   }
   return "?";
 }
 
+BackendState state_from_name(const std::string& name) {
+  for (BackendState s : {BackendState::kPassed, BackendState::kFailed, BackendState::kSkipped,
+                         BackendState::kReference, BackendState::kIncomplete})
+    if (name == state_name(s)) return s;
+  throw std::invalid_argument("unknown backend state '" + name + "'");
+}
+
+std::string CheckReport::verdict() const {
+  if (failed > 0) return "failed";
+  if (!missing_shards.empty()) return "incomplete";
+  if (compared == 0) return "nothing-checked";
+  return "passed";
+}
+
 CheckReport run_check(const CheckOptions& o, std::ostream& out) {
+  const auto t0 = std::chrono::steady_clock::now();
   CheckReport report;
   report.seed = o.corpus.seed;
+  report.command = o.command;
+  report.pxflow_version = o.pxflow_version;
+  report.pxflow_commit = o.pxflow_commit;
+  report.shard = o.shard;
   std::vector<Contender> contenders = select_backends(o);
+
+  // The fixed corpus is built whole in every shard (its fingerprint covers every case); a fuzz
+  // campaign's batches are made one at a time, so that 100,000 pairs never sit in memory.
+  Campaign campaign({o.fuzz_pairs, o.corpus});
+  if (o.shard.count > campaign.cases())
+    throw InputError("--shard " + o.shard.text() + ": the campaign has " +
+                     std::to_string(campaign.cases()) + " cases (" +
+                     (o.fuzz_pairs > 0 ? "batches of 256 pairs" : "the fixed corpus") +
+                     "): at most that many shards (see pxflow check --help)");
+  report.range = shard_range(campaign.cases(), o.shard);
+  CampaignInfo& info = report.campaign;
+  info.kind = campaign.kind();
+  info.fuzz_pairs = o.fuzz_pairs;
+  info.generated_only = !o.corpus.real;
+  info.fingerprint = campaign.fingerprint();
+  info.settings = campaign.settings();
+  for (const auto& k : contenders) info.backends.push_back(k.row->name);
+  info.require = o.require;
+  info.cases = campaign.cases();
+  info.pairs = campaign.pairs();
+
   if (!o.banner.empty()) out << o.banner << "\n";
   Checker checker(o, out);
-
-  // The cases come from the fixed corpus or, for a fuzz campaign, are made batch by batch so
-  // that 100,000 pairs never sit in memory at once.
-  std::function<bool(CheckCase&)> next_case;
-  std::vector<CheckCase> corpus;
-  std::size_t corpus_at = 0;
-  long fuzz_done = 0;
-  const auto settings = check_settings();
-  if (o.fuzz_pairs > 0) {
-    next_case = [&](CheckCase& c) {
-      if (fuzz_done >= o.fuzz_pairs) return false;
-      const int n = static_cast<int>(std::min<long>(256, o.fuzz_pairs - fuzz_done));
-      const auto& [setting, p] =
-          settings[(fuzz_done / 256) % 2];  // alternate the two 64x64 profiles
-      c = fuzz_case(setting, p,
-                    o.corpus.seed * 1000000007ull + static_cast<std::uint64_t>(fuzz_done), n);
-      c.name = "fuzz";
-      fuzz_done += n;
-      return true;
-    };
-  } else {
-    corpus = build_check_corpus(o.corpus);
-    next_case = [&](CheckCase& c) {
-      if (corpus_at >= corpus.size()) return false;
-      c = std::move(corpus[corpus_at++]);
-      return true;
-    };
-  }
   for (auto& k : contenders) {
     if (k.backend || k.outcome.state == BackendState::kReference) continue;
     if (k.outcome.state == BackendState::kFailed)
@@ -204,13 +223,16 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
       out << "skip " << k.row->name << " (" << k.outcome.reason << ")\n";
   }
 
-  CheckCase c;
-  while (next_case(c)) {
+  // Totals on the live line for the fixed corpus as for a fuzz campaign: this run's share.
+  const std::string of_cases = " of " + std::to_string(report.range.size()) + " cases, ";
+  const std::string of_pairs = " of " + std::to_string(campaign.pairs_in(report.range)) + " pairs";
+  for (long index = report.range.first; index < report.range.end; ++index) {
     stop_if_interrupted(std::to_string(report.cases) + " finished cases");
+    const CheckCase c = campaign.take(index);
     ++report.cases;
     report.pairs += static_cast<long>(c.pairs.size());
-    progress("check: " + std::to_string(report.cases) + " cases, " + std::to_string(report.pairs) +
-             (o.fuzz_pairs > 0 ? " of " + std::to_string(o.fuzz_pairs) : std::string()) + " pairs");
+    progress("check: " + std::to_string(report.cases) + of_cases + std::to_string(report.pairs) +
+             of_pairs);
     std::vector<FramePair> views;
     for (const auto& p : c.pairs) views.push_back(p.view());
     const ReferenceAnswer e = reference_answer(views, c.params);
@@ -233,31 +255,8 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
     }
     report.backends.push_back(b);
   }
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return report;
-}
-
-Json check_json(const CheckReport& r) {
-  Json j;
-  j["seed"] = r.seed;
-  j["cases"] = r.cases;
-  j["pairs"] = r.pairs;
-  j["passed"] = r.passed;
-  j["failed"] = r.failed;
-  j["skipped"] = r.skipped;
-  j["not_applicable"] = r.not_applicable;
-  j["compared"] = r.compared;
-  j["backends"] = Json::array();
-  for (const auto& b : r.backends)
-    j["backends"].push_back({{"name", b.name},
-                             {"state", state_name(b.state)},
-                             {"reason", b.reason},
-                             {"passed", b.passed},
-                             {"failed", b.failed},
-                             {"not_applicable", b.not_applicable},
-                             {"pairs", b.pairs},
-                             {"seconds", b.seconds},
-                             {"failures", b.failures}});
-  return j;
 }
 
 }  // namespace pxflow

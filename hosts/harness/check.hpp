@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "backend.hpp"
+#include "check_campaign.hpp"
 #include "check_corpus.hpp"
 #include "result_json.hpp"
 
@@ -16,6 +17,7 @@ struct CheckOptions {
   std::vector<std::string> backends;  // empty: every registered backend
   std::vector<std::string> require;   // skips of these become failures; "all": every selected
   long fuzz_pairs = 0;                // > 0: a fuzz campaign of that many random pairs instead
+  Shard shard;                        // the part of the campaign to run (check_campaign.hpp)
   bool verbose = false;               // dump the 8x8 blocks behind each mismatch
   int max_lines_per_case = 5;
   BackendOptions backend_options;
@@ -23,38 +25,81 @@ struct CheckOptions {
   // Printed once the backends are chosen and opened, so that bad input (an unknown or absent
   // backend, a device that does not exist) leaves no partial output.
   std::string banner;
+  // What the results file records of the run: the command and the binary that ran it.
+  std::string command, pxflow_version, pxflow_commit;
 };
 
 // How a backend came out of a check (JSON and reports spell it with state_name()).
 // kReference: ref-original, whose records are the answer (never counted as checked).
-enum class BackendState { kPassed, kFailed, kSkipped, kReference };
-const char* state_name(BackendState s);  // "passed", "failed", "skipped", "reference"
+// kIncomplete: only from `pxflow merge`: passed in every shard given, but shards are missing.
+enum class BackendState { kPassed, kFailed, kSkipped, kReference, kIncomplete };
+const char* state_name(BackendState s);  // "passed", "failed", "skipped", "reference", ...
+BackendState state_from_name(const std::string& name);  // throws std::invalid_argument
 
 struct BackendOutcome {
   std::string name;
   BackendState state = BackendState::kPassed;
-  std::string reason;                               // why skipped
+  std::string reason;                  // why skipped
+  std::string implementation, device;  // Backend::implementation(), device(); empty: not opened
   long passed = 0, failed = 0, not_applicable = 0;  // cases
   long pairs = 0;
   double seconds = 0;                 // host time inside run()
   std::vector<std::string> failures;  // the mismatch lines printed
 };
 
+// What campaign a results file belongs to: shards merge only when all of it is equal.
+struct CampaignInfo {
+  std::string kind;     // "fixed-corpus" or "fuzz"
+  long fuzz_pairs = 0;  // N of --cases; 0 for the fixed corpus
+  bool generated_only = false;
+  int corpus_version = kCheckCorpusVersion;
+  std::string fingerprint;                     // Campaign::fingerprint()
+  std::vector<std::string> settings;           // parameter settings of its cases
+  std::vector<std::string> backends, require;  // as selected (every backend: the registry's)
+  long cases = 0, pairs = 0;                   // of the whole campaign, every shard
+  bool operator==(const CampaignInfo&) const = default;
+};
+
+// One shard's file in a merged result.
+struct MergedShard {
+  std::string file;
+  Shard shard;
+  CaseRange range;
+  long pairs = 0;
+  double seconds = 0;
+};
+
 struct CheckReport {
   std::uint64_t seed = 0;
-  long cases = 0, pairs = 0;
+  long cases = 0, pairs = 0;  // run here (this shard's, or every merged shard's)
   std::vector<BackendOutcome> backends;
   long passed = 0, failed = 0, skipped = 0, not_applicable = 0;
   long compared = 0;  // (backend, case) comparisons made, the reference's own not counted
-  // A check passes when nothing failed and something was compared: a run in which every
-  // backend was skipped or n/a tested nothing and is not green.
-  bool ok() const { return failed == 0 && compared > 0; }
+  std::string command, pxflow_version, pxflow_commit;
+  CampaignInfo campaign;
+  Shard shard;         // of a single run; a merged result has merged_from instead
+  CaseRange range;     // the cases of the campaign this run ran
+  double seconds = 0;  // wall time of the run (merged: summed over the shards)
+  std::vector<MergedShard> merged_from;
+  std::vector<int> missing_shards;  // merged: the shards not given (incomplete)
+
+  // "failed" (something failed), "incomplete" (a merge without every shard), "nothing-checked"
+  // (no backend but the reference ran a case: a run of skips is not green) or "passed".
+  std::string verdict() const;
+  bool ok() const { return verdict() == "passed"; }
 };
 
 // Runs the check, printing progress lines to `out` as it goes (and a live counter to stderr
 // when stderr is a terminal). Throws InputError for unknown backend names.
 CheckReport run_check(const CheckOptions& o, std::ostream& out);
 
+// The results file (docs/harness.md, "The check file"), and back; check_from_json throws
+// InputError naming the missing or mistyped key.
 Json check_json(const CheckReport& r);
+CheckReport check_from_json(const Json& j);
+
+// The human summary after the mismatch lines: the table of backends (with the implementation
+// and device that ran), the time taken, and the last line "N passed, M failed, K skipped".
+void print_check_summary(const CheckReport& r, std::ostream& out);
 
 }  // namespace pxflow

@@ -20,6 +20,11 @@ struct CheckCase {
   std::vector<OwnedPair> pairs;  // each pair's name says where it came from (and its seed)
 };
 
+// The version of what build_check_corpus() and a fuzz campaign's batches contain. Raise it with
+// every change to the cases, their order, their pairs or their parameters: check files record it
+// and `pxflow merge` refuses shards of different versions.
+inline constexpr int kCheckCorpusVersion = 1;
+
 struct CorpusOptions {
   std::uint64_t seed = 1;
   std::string data_dir = kSampleDataDir;

@@ -1,0 +1,84 @@
+// pxflow merge: the results files of a campaign's shards (pxflow check --shard K/M --json F)
+// combined into one verdict and one check file (docs/harness.md, "Campaigns over a CI matrix").
+#include <fstream>
+#include <iostream>
+
+#include "check_merge.hpp"
+#include "commands.hpp"
+#include "errors.hpp"
+#include "output_file.hpp"
+
+namespace pxflow::cli {
+namespace {
+
+struct MergeArgs {
+  std::string out;
+  std::vector<std::string> files;
+};
+
+ShardFile read_shard(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open (see pxflow merge --help)");
+  Json j;
+  try {
+    j = Json::parse(in);
+  } catch (const std::exception&) {
+    throw InputError(path +
+                     ": not valid JSON: expected a file of pxflow check --json (see pxflow merge "
+                     "--help)");
+  }
+  try {
+    return {path, check_from_json(j)};
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what() + ": expected a file of pxflow check --shard K/M " +
+                     "--json (see pxflow merge --help)");
+  }
+}
+
+int run_merge_command(const MergeArgs& a) {
+  const bool to_stdout = a.out == "-";
+  if (!to_stdout) check_output_path("OUT", a.out, a.files);
+  std::vector<ShardFile> shards;
+  for (const std::string& f : a.files) shards.push_back(read_shard(f));
+  CheckReport m = merge_shards(shards);
+  m.command = "pxflow merge " + a.out;
+  for (const std::string& f : a.files) m.command += " " + f;
+
+  // The campaign named by the command of its lowest shard given.
+  const ShardFile* lowest = &shards.front();
+  for (const ShardFile& f : shards)
+    if (f.report.shard.index < lowest->report.shard.index) lowest = &f;
+  std::ostream& human = to_stdout ? std::cerr : std::cout;
+  human << "pxflow merge: " << shards.size() << " of " << lowest->report.shard.count
+        << " shards of the " << m.campaign.kind << " campaign of seed " << m.seed << " (`"
+        << lowest->report.command << "`)\n";
+  for (const BackendOutcome& b : m.backends)
+    for (const std::string& line : b.failures) human << line << "\n";
+  print_check_summary(m, human);
+  const std::string json = check_json(m).dump(2) + "\n";
+  if (to_stdout)
+    std::cout << json;
+  else
+    write_output_file(a.out, json);
+  return m.ok() ? 0 : 1;
+}
+
+}  // namespace
+
+Command add_merge_command(CLI::App& app) {
+  auto a = std::make_shared<MergeArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "merge",
+      "Combine the --json files of a campaign's shards (pxflow check --shard K/M) into one "
+      "verdict and check file; exit 0 only when every shard is there and passed");
+  sub->footer(
+      "Exit 0: every shard 1..M given and passed. 1: a shard failed, nothing was checked, or "
+      "shards are missing (verdict 'incomplete'; OUT is written). 2: the files are not the "
+      "shards of one campaign (another commit, seed, --cases, corpus, backends, --require or "
+      "M; a shard twice; a merged file); nothing is written. See docs/harness.md.");
+  sub->add_option("OUT", a->out, "The merged check file to write ('-': stdout)")->required();
+  sub->add_option("FILES", a->files, "The shards' check files, every K of one M once")->required();
+  return {sub, [a] { return run_merge_command(*a); }};
+}
+
+}  // namespace pxflow::cli

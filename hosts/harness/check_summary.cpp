@@ -1,0 +1,74 @@
+// The human summary of a check or a merge of check shards.
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+#include "check.hpp"
+
+namespace pxflow {
+namespace {
+
+std::string format(const char* f, auto... args) {
+  char b[512];
+  std::snprintf(b, sizeof b, f, args...);
+  return b;
+}
+
+// What ran behind the row ("avx512bw", "opencl-item on <device>"), or why it did not.
+std::string note(const BackendOutcome& b) {
+  std::string s;
+  if (!b.implementation.empty() && b.implementation != b.name) s = b.implementation;
+  if (!b.device.empty()) s += (s.empty() ? "on " : " on ") + b.device;
+  if (!b.reason.empty()) s += (s.empty() ? "" : "; ") + b.reason;
+  return s;
+}
+
+std::string shard_list(const std::vector<Shard>& shards) {
+  std::string s;
+  for (const Shard& k : shards) s += (s.empty() ? "" : ", ") + k.text();
+  return s;
+}
+
+// Where the figures come from: this shard, the whole campaign, or the shards merged.
+std::string scope(const CheckReport& r) {
+  const std::string ran = std::to_string(r.cases) + " cases, " + std::to_string(r.pairs) + " pairs";
+  if (!r.merged_from.empty()) {
+    std::vector<Shard> given, missing;
+    for (const MergedShard& m : r.merged_from) given.push_back(m.shard);
+    for (int k : r.missing_shards) missing.push_back({k, given.front().count});
+    std::string s = "merged shard" + std::string(given.size() > 1 ? "s " : " ") +
+                    shard_list(given) + ": " + ran + " (the campaign has " +
+                    std::to_string(r.campaign.cases) + " cases), " +
+                    format("%.2f s summed over the shards", r.seconds);
+    if (missing.size() == 1)
+      s += "\nincomplete: shard " + shard_list(missing) + " not given: its cases were not checked";
+    else if (!missing.empty())
+      s += "\nincomplete: shards " + shard_list(missing) +
+           " not given: their cases were not checked";
+    return s;
+  }
+  if (r.shard.count > 1)
+    return "shard " + r.shard.text() + ": " + ran + " (cases " + std::to_string(r.range.first) +
+           ".." + std::to_string(r.range.end - 1) + " of the campaign's " +
+           std::to_string(r.campaign.cases) + ")" + format(" in %.2f s", r.seconds);
+  return ran + format(" in %.2f s", r.seconds);
+}
+
+}  // namespace
+
+void print_check_summary(const CheckReport& r, std::ostream& out) {
+  out << format("\n%-14s %-10s %7s %7s %5s %9s  %s\n", "backend", "result", "cases", "pairs", "n/a",
+                "run time", "runs as / note");
+  for (const auto& b : r.backends) {
+    const std::string n = note(b);
+    out << format("%-14s %-10s %7ld %7ld %5ld %8.2fs", b.name.c_str(), state_name(b.state),
+                  b.passed + b.failed, b.pairs, b.not_applicable, b.seconds)
+        << (n.empty() ? "" : "  " + n) << "\n";
+  }
+  out << scope(r) << "\n";
+  out << r.passed << " passed, " << r.failed << " failed, " << r.skipped << " skipped\n";
+  if (r.compared == 0)
+    out << "nothing was checked: no backend but the reference ran a case (see the skips above)\n";
+}
+
+}  // namespace pxflow
