@@ -75,8 +75,8 @@ int run_check_command(const CheckArgs& a) {
   const VersionInfo built = pxflow_version_info();
   o.pxflow_version = built.version;
   o.pxflow_commit = built.commit;
-  const bool json_to_stdout = a.json_path == "-";
-  if (!a.json_path.empty() && !json_to_stdout) check_output_path("--json", a.json_path);
+  const bool json_to_stdout = a.json_path == kStdoutPath;
+  if (!a.json_path.empty()) check_output_path("--json", a.json_path);
   o.banner = "pxflow check: seed " + std::to_string(a.seed) +
              (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
                           : ", fixed corpus") +
@@ -92,10 +92,7 @@ int run_check_command(const CheckArgs& a) {
     human << "shard " << o.shard.text()
           << " compared nothing: exit 0, pxflow merge judges the whole campaign\n";
   const std::string json = check_json(r).dump(2) + "\n";
-  if (json_to_stdout)
-    std::cout << json;
-  else if (!a.json_path.empty())
-    write_output_file(a.json_path, json);
+  if (!a.json_path.empty()) write_output_file(a.json_path, json);
   return r.ok() || merge_judges ? 0 : 1;
 }
 
