@@ -207,7 +207,7 @@ int main(int argc, char **argv) {
   }
   mode = kModes[m].mode;
   arg = argc > 2 ? atol(argv[2]) : 0;
-  static const pxdut_device dev = {"pxdut-faulty", "test", "dut-cycles"};
+  static const pxdut_device dev = {"pxdut-faulty", "test", "dut-ref-monotonic-ns"};
   pxdut_serve(&dev);
   return 0;
 }
