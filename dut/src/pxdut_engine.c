@@ -172,7 +172,7 @@ static void on_frame(uint8_t seq, const uint8_t *body, uint32_t n) {
     return;
   }
   if (!g.params_ok) {
-    error_reply(seq, kErrNotReady, "no PARAMS yet (did the device reset?)");
+    error_reply(seq, kErrNotReady, "no PARAMS since the device started");
     return;
   }
   const uint32_t offset = get_u32(body + 4), len = n - 8u;
@@ -193,7 +193,7 @@ static void on_run(uint8_t seq, const uint8_t *body, uint32_t n) {
     return;
   }
   if (!g.params_ok) {
-    error_reply(seq, kErrNotReady, "no PARAMS yet (did the device reset?)");
+    error_reply(seq, kErrNotReady, "no PARAMS since the device started");
     return;
   }
   const uint32_t reps = get_u32(body), warmups = get_u32(body + 4);
