@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <stdexcept>
 #include <thread>
 
@@ -80,12 +81,12 @@ std::string unique_word() {
   return "dut-test-" + std::to_string(getpid()) + "-" + std::to_string(n++);
 }
 
-bool process_with_word(const std::string& word) {
+bool process_with_word(const std::string& word, pid_t except) {
   DIR* d = opendir("/proc");
   if (!d) return false;
   bool found = false;
   while (dirent* e = readdir(d)) {
-    if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
+    if (e->d_name[0] < '0' || e->d_name[0] > '9' || std::atoi(e->d_name) == except) continue;
     const std::string cmd = slurp(std::string("/proc/") + e->d_name + "/cmdline");
     if (cmd.find(word) != std::string::npos) found = true;
   }

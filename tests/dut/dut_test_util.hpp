@@ -35,7 +35,8 @@ class BesideDevice {
 
 // A word unique to this test process, to pass to a device so that process_with_word() finds it.
 std::string unique_word();
-// Whether a process whose command line contains `word` exists (an orphan of a finished run).
-bool process_with_word(const std::string& word);
+// Whether a process whose command line contains `word` exists (an orphan of a finished run),
+// other than `except` (pxflow itself, whose --dut argument holds the word too).
+bool process_with_word(const std::string& word, pid_t except = -1);
 
 }  // namespace pxflow::test
