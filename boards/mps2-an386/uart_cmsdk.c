@@ -35,7 +35,12 @@ static volatile uint8_t ring[RING_SIZE];
 static volatile uint32_t ring_head, ring_tail; /* written by the ISR, by the reader */
 static volatile uint32_t ring_overflows;
 
-void m4_uart0_rx_handler(void) {
+/* Acknowledge first, then empty the UART: a byte that lands after the last STATE read raises
+ * INTSTATUS.RX again and the handler runs again. (Acknowledging after the reads would clear the
+ * interrupt of a byte that arrived in between: it would sit in the UART with no interrupt, and
+ * QEMU, which only delivers a byte when the buffer is empty, would deliver no more.) */
+static void drain_rx(void) {
+  UART_INTSTATUS = INT_RX;
   while (UART_STATE & STATE_RX_FULL) {
     const uint8_t byte = (uint8_t)UART_DATA;
     if (ring_head - ring_tail < RING_SIZE) {
@@ -45,8 +50,9 @@ void m4_uart0_rx_handler(void) {
       ++ring_overflows; /* dropped: the protocol's CRC and resends recover */
     }
   }
-  UART_INTSTATUS = INT_RX;
 }
+
+void m4_uart0_rx_handler(void) { drain_rx(); }
 
 void board_uart_init(void) {
   /* 25 MHz / 217 = 115,200 baud on the real board; QEMU only checks BAUDDIV >= 16. */
@@ -68,7 +74,11 @@ size_t board_uart_read(uint8_t *buf, size_t max) {
    * the WFI still wakes it (WFI wakes on a pending interrupt even when PRIMASK masks it,
    * DDI 0403E B1.5.19). */
   __asm__ volatile("cpsid i" ::: "memory");
-  while (ring_head == ring_tail) __asm__ volatile("wfi\n\tcpsie i\n\tcpsid i" ::: "memory");
+  while (ring_head == ring_tail) {
+    drain_rx(); /* a byte the interrupt missed is read here all the same */
+    if (ring_head != ring_tail) break;
+    __asm__ volatile("wfi\n\tcpsie i\n\tcpsid i" ::: "memory");
+  }
   size_t n = 0;
   while (n < max && ring_tail != ring_head) {
     buf[n++] = ring[ring_tail % RING_SIZE];
