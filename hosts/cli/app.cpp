@@ -37,12 +37,17 @@ int run_pxflow(int argc, char** argv) {
   app.fallthrough();  // global options may follow the subcommand
   // The families' global options (e.g. the cpu family's --disable-isa), applied before the
   // command runs.
-  std::vector<std::pair<const FamilyOption*, std::string>> family_options;
+  std::vector<std::pair<const FamilyOption*, std::vector<std::string>>> family_options;
   for (const BackendFamily& f : backend_families())
     for (const FamilyOption& opt : f.options) family_options.push_back({&opt, {}});
   std::vector<CLI::Option*> family_flags;
-  for (auto& [opt, value] : family_options)
-    family_flags.push_back(app.add_option(opt->flag, value, opt->help));
+  for (auto& [opt, values] : family_options) {
+    // One value per occurrence; only a repeatable option may occur more than once.
+    CLI::Option* flag = app.add_option(opt->flag, values, opt->help)->expected(1);
+    flag->multi_option_policy(opt->repeatable ? CLI::MultiOptionPolicy::TakeAll
+                                              : CLI::MultiOptionPolicy::Throw);
+    family_flags.push_back(flag);
+  }
   std::vector<cli::Command> commands = {
       cli::add_flow_command(app),   cli::add_check_command(app),    cli::add_bench_command(app),
       cli::add_report_command(app), cli::add_accuracy_command(app), cli::add_backends_command(app)};
@@ -72,7 +77,8 @@ int run_pxflow(int argc, char** argv) {
     for (const BackendFamily& f : backend_families())
       if (f.check_environment) f.check_environment();
     for (std::size_t i = 0; i < family_options.size(); ++i)
-      if (family_flags[i]->count() > 0) family_options[i].first->apply(family_options[i].second);
+      for (const std::string& value : family_options[i].second)
+        family_options[i].first->apply(value);
     for (const auto& c : commands)
       if (c.app->parsed()) {
         const int code = c.run();

@@ -73,6 +73,9 @@ struct FamilyOption {
   std::string flag;  // "--disable-isa"
   std::string help;
   std::function<void(const std::string&)> apply;  // throws InputError for a bad value
+  // May be given more than once (the dut family's --dut): `apply` is called for each value, in
+  // command-line order.
+  bool repeatable = false;
 };
 
 // A bound the benchmark puts beside the rows timed by `clock` (the cpu family: the psadbw

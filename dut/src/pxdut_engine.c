@@ -1,0 +1,297 @@
+/* The protocol engine of docs/dut-protocol.md on the device: collects bytes up to each 0x00,
+ * checks the frame (COBS, length, CRC), answers duplicates from the stored reply and executes
+ * new requests. Every buffer is static and sized by pxdut_types.h; nothing is allocated. */
+#include "pxdut.h"
+
+#if PXDUT_MAX_PACKET < 64u || PXDUT_MAX_PACKET > 65535u
+#error "PXDUT_MAX_PACKET must be 64 .. 65535 (docs/dut-protocol.md section 1)"
+#endif
+
+#ifndef PXDUT_COMPUTE_ESTIMATE
+#define PXDUT_COMPUTE_ESTIMATE 1 /* the device runs SPEC §5 itself and RESULT carries it */
+#endif
+
+enum {
+  kHello = 0x01,
+  kParams = 0x02,
+  kFrame = 0x03,
+  kRun = 0x04,
+  kRecords = 0x05,
+  kAck = 0x06,
+  kNak = 0x15,
+  kError = 0x7F,
+  kReply = 0x80, /* HELLO reply = 0x81, RESULT = 0x84, RECORDS reply = 0x85 */
+};
+enum { kNakCrc = 1, kNakCobs = 2, kNakLong = 3, kNakShort = 4 };
+enum {
+  kErrMessage = 1,
+  kErrParams = 2,
+  kErrTooLarge = 3,
+  kErrNotReady = 4,
+  kErrRange = 5,
+  kErrVersion = 6
+};
+
+#define PXDUT_ENCODED_MAX (PXDUT_MAX_PACKET + PXDUT_MAX_PACKET / 254u + 2u)
+#define PXDUT_STRING_MAX 60u /* HELLO's strings are cut here so that the reply fits 256 bytes */
+
+static struct {
+  uint8_t rx[PXDUT_ENCODED_MAX]; /* the frame being received, decoded in place */
+  uint32_t rx_len;
+  int rx_overflow;
+  uint8_t packet[PXDUT_MAX_PACKET];  /* the reply being built */
+  uint8_t tx[PXDUT_ENCODED_MAX + 1]; /* the last reply, encoded: resent for a duplicate */
+  uint32_t tx_len;
+  int have_last;
+  uint8_t last_seq;
+  uint32_t last_crc;
+  pxdut_params params;
+  int params_ok, run_ok;
+  uint32_t pois;
+  uint32_t frames[2][(PXDUT_MAX_PIXELS + 3u) / 4u]; /* prev, next: words, so aligned */
+  pxdut_record records[PXDUT_MAX_POIS];
+} g;
+
+static uint32_t get_u16(const uint8_t *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8; }
+static uint32_t get_u32(const uint8_t *p) { return get_u16(p) | get_u16(p + 2) << 16; }
+static uint8_t *put_u16(uint8_t *p, uint32_t v) {
+  p[0] = (uint8_t)v;
+  p[1] = (uint8_t)(v >> 8);
+  return p + 2;
+}
+static uint8_t *put_u32(uint8_t *p, uint32_t v) { return put_u16(put_u16(p, v), v >> 16); }
+static uint8_t *put_string(uint8_t *p, const char *s) {
+  uint32_t n = 0;
+  while (s && s[n] && n < PXDUT_STRING_MAX) ++n;
+  *p++ = (uint8_t)n;
+  for (uint32_t i = 0; i < n; ++i) *p++ = (uint8_t)s[i];
+  return p;
+}
+
+/* Encodes packet[0 .. body_end) plus its CRC into `out` with the delimiter; returns the length. */
+static uint32_t seal(uint8_t *end, uint8_t *out) {
+  const uint32_t len = (uint32_t)(end - g.packet);
+  put_u32(end, pxdut_crc32(g.packet, len));
+  const uint32_t n = pxdut_cobs_encode(g.packet, len + 4u, out);
+  out[n] = 0;
+  return n + 1u;
+}
+
+/* Sends the reply built in packet[] up to `end` and keeps it for a duplicate request. */
+static void reply(uint8_t *end) {
+  g.tx_len = seal(end, g.tx);
+  pxdut_port_write(g.tx, (int)g.tx_len);
+}
+
+static uint8_t *begin(uint8_t type, uint8_t seq) {
+  g.packet[0] = type;
+  g.packet[1] = seq;
+  return g.packet + 2;
+}
+
+static void error_reply(uint8_t seq, uint32_t code, const char *text) {
+  reply(put_string(put_u16(begin(kError, seq), code), text));
+}
+
+static void nak(uint8_t reason) {
+  uint8_t out[16];
+  uint8_t *p = begin(kNak, 0);
+  *p++ = reason;
+  /* The NAK is built in packet[] but not kept: the stored reply stays in tx[]. */
+  pxdut_port_write(out, (int)seal(p, out));
+}
+
+static void on_hello(const pxdut_device *dev, uint8_t seq, const uint8_t *body, uint32_t n) {
+  if (n != 2u) return error_reply(seq, kErrMessage, "HELLO body is u16 version");
+  uint8_t *p = begin(kHello | kReply, seq);
+  p = put_u16(p, PXDUT_PROTOCOL_VERSION);
+  p = put_u16(p, PXDUT_COMPUTE_ESTIMATE ? 1u : 0u);
+  p = put_u32(p, pxdut_port_cycles_hz());
+  p = put_u16(p, PXDUT_MAX_PACKET);
+  p = put_u16(p, 0);
+  p = put_u32(p, PXDUT_MAX_PIXELS);
+  p = put_u32(p, PXDUT_MAX_POIS);
+  p = put_string(p, dev->name);
+  p = put_string(p, dev->build);
+  p = put_string(p, dev->clock);
+  (void)body; /* a host of another version still gets our version and decides */
+  reply(p);
+}
+
+static void on_params(uint8_t seq, const uint8_t *body, uint32_t n) {
+  g.params_ok = g.run_ok = 0;
+  if (n != 40u) return error_reply(seq, kErrMessage, "PARAMS body is 10 x u32");
+  pxdut_params q;
+  uint32_t *fields[10] = {&q.width,         &q.height,      &q.search_radius,
+                          &q.tile,          &q.blocks,      &q.feature_threshold,
+                          &q.sad_threshold, &q.hist_filter, &q.min_count,
+                          &q.gyro_comp};
+  for (int i = 0; i < 10; ++i) *fields[i] = get_u32(body + 4 * i);
+  if (q.tile != 8u) return error_reply(seq, kErrParams, "T must be 8");
+  if (q.gyro_comp != 0u) return error_reply(seq, kErrParams, "gyro compensation is not supported");
+  if (q.search_radius < 1u || q.search_radius > 31u || q.blocks < 1u || q.blocks > 255u ||
+      q.hist_filter > 1u || q.feature_threshold > 65535u || q.sad_threshold > 65535u ||
+      q.min_count > 65535u || q.width > 65535u || q.height > 65535u)
+    return error_reply(seq, kErrParams, "a parameter is out of range");
+  const uint32_t pois = pxdut_poi_count(&q);
+  if (pois == 0u) return error_reply(seq, kErrParams, "the grid does not fit the frame");
+  if (q.width * q.height > PXDUT_MAX_PIXELS)
+    return error_reply(seq, kErrTooLarge, "frame larger than PXDUT_MAX_PIXELS");
+  if (pois > PXDUT_MAX_POIS)
+    return error_reply(seq, kErrTooLarge, "grid larger than PXDUT_MAX_POIS");
+  g.params = q;
+  g.pois = pois;
+  g.params_ok = 1;
+  reply(begin(kAck, seq));
+}
+
+static void on_frame(uint8_t seq, const uint8_t *body, uint32_t n) {
+  if (n < 9u || body[0] > 1u)
+    return error_reply(seq, kErrMessage, "FRAME body is image, 0, 0, offset, bytes");
+  if (!g.params_ok) return error_reply(seq, kErrNotReady, "no PARAMS yet (did the device reset?)");
+  const uint32_t offset = get_u32(body + 4), len = n - 8u;
+  if (offset > g.params.width * g.params.height || len > g.params.width * g.params.height - offset)
+    return error_reply(seq, kErrRange, "FRAME bytes outside W*H");
+  uint8_t *dst = (uint8_t *)g.frames[body[0]] + offset;
+  for (uint32_t i = 0; i < len; ++i) dst[i] = body[8 + i];
+  g.run_ok = 0;
+  reply(begin(kAck, seq));
+}
+
+static void on_run(uint8_t seq, const uint8_t *body, uint32_t n) {
+  if (n != 8u) return error_reply(seq, kErrMessage, "RUN body is u32 repetitions, u32 warmups");
+  if (!g.params_ok) return error_reply(seq, kErrNotReady, "no PARAMS yet (did the device reset?)");
+  const uint32_t reps = get_u32(body), warmups = get_u32(body + 4);
+  if (reps < 1u) return error_reply(seq, kErrMessage, "RUN needs at least 1 repetition");
+  const uint8_t *prev = (const uint8_t *)g.frames[0], *next = (const uint8_t *)g.frames[1];
+  pxdut_estimate est = {0.0f, 0.0f, 0, 0};
+  for (uint32_t i = 0; i < warmups; ++i) pxdut_port_kernel(&g.params, prev, next, g.records);
+  uint32_t lo = 0, hi = 0, fastest = 0xFFFFFFFFu;
+  for (uint32_t i = 0; i < reps; ++i) {
+    const uint32_t t0 = pxdut_port_cycles();
+    pxdut_port_kernel(&g.params, prev, next, g.records);
+    if (PXDUT_COMPUTE_ESTIMATE) pxdut_estimate_flow(g.records, g.pois, &g.params, &est);
+    const uint32_t ticks = pxdut_port_cycles() - t0; /* mod 2^32 */
+    if (ticks < fastest) fastest = ticks;
+    const uint32_t sum = lo + ticks;
+    hi += sum < lo ? 1u : 0u; /* the 64-bit total without 64-bit arithmetic */
+    lo = sum;
+  }
+  g.run_ok = 1;
+  uint8_t *p = begin(kRun | kReply, seq);
+  p = put_u32(p, g.pois);
+  p = put_u32(p, reps);
+  p = put_u32(put_u32(p, lo), hi);
+  p = put_u32(p, fastest);
+  p = put_u32(p, PXDUT_COMPUTE_ESTIMATE ? 1u : 0u);
+  union {
+    float f;
+    uint32_t u;
+  } bits;
+  bits.f = est.flow_x;
+  p = put_u32(p, bits.u);
+  bits.f = est.flow_y;
+  p = put_u32(p, bits.u);
+  p = put_u32(p, (uint32_t)est.quality);
+  p = put_u32(p, (uint32_t)est.meancount);
+  reply(p);
+}
+
+static uint8_t *put_record(uint8_t *p, const pxdut_record *r) {
+  p = put_u16(put_u16(p, r->x), r->y);
+  *p++ = r->status;
+  *p++ = 0;
+  p = put_u16(p, r->feature);
+  *p++ = (uint8_t)r->dx;
+  *p++ = (uint8_t)r->dy;
+  p = put_u16(p, r->sad);
+  *p++ = r->dir;
+  *p++ = 0;
+  for (int k = 0; k < 8; ++k) p = put_u16(p, r->sub[k]);
+  *p++ = (uint8_t)r->hx;
+  *p++ = (uint8_t)r->hy;
+  return p;
+}
+
+#define PXDUT_RECORDS_PER_REPLY ((PXDUT_MAX_PACKET - 14u) / 32u)
+
+static void on_records(uint8_t seq, const uint8_t *body, uint32_t n) {
+  if (n != 8u) return error_reply(seq, kErrMessage, "RECORDS body is u32 first, u32 count");
+  if (!g.run_ok) return error_reply(seq, kErrNotReady, "no RUN since the last PARAMS or FRAME");
+  const uint32_t first = get_u32(body), count = get_u32(body + 4);
+  if (count < 1u || count > PXDUT_RECORDS_PER_REPLY || first > g.pois || count > g.pois - first)
+    return error_reply(seq, kErrRange, "RECORDS range outside the run's records or reply size");
+  uint8_t *p = put_u32(put_u32(begin(kRecords | kReply, seq), first), count);
+  for (uint32_t i = 0; i < count; ++i) p = put_record(p, &g.records[first + i]);
+  reply(p);
+}
+
+/* One complete frame in rx[0 .. rx_len). */
+static void on_frame_received(const pxdut_device *dev) {
+  if (g.rx_overflow) return nak(kNakLong);
+  if (g.rx_len == 0u) return; /* an empty frame: a sender's resynchronisation */
+  const int32_t n = pxdut_cobs_decode(g.rx, g.rx_len, g.rx);
+  if (n < 0) return nak(kNakCobs);
+  if (n < 6) return nak(kNakShort);
+  const uint32_t len = (uint32_t)n - 4u, crc = get_u32(g.rx + len);
+  if (pxdut_crc32(g.rx, len) != crc) return nak(kNakCrc);
+  const uint8_t type = g.rx[0], seq = g.rx[1];
+  const uint8_t *body = g.rx + 2;
+  const uint32_t body_len = len - 2u;
+  if (type != kHello && g.have_last && seq == g.last_seq && crc == g.last_crc) {
+    pxdut_port_write(g.tx, (int)g.tx_len); /* its reply was lost: the same reply again */
+    return;
+  }
+  g.have_last = 1;
+  g.last_seq = seq;
+  g.last_crc = crc;
+  switch (type) {
+    case kHello:
+      return on_hello(dev, seq, body, body_len);
+    case kParams:
+      return on_params(seq, body, body_len);
+    case kFrame:
+      return on_frame(seq, body, body_len);
+    case kRun:
+      return on_run(seq, body, body_len);
+    case kRecords:
+      return on_records(seq, body, body_len);
+    default:
+      return error_reply(seq, kErrMessage, "unknown message type");
+  }
+}
+
+static void on_byte(const pxdut_device *dev, uint8_t byte) {
+  if (byte == 0) {
+    on_frame_received(dev);
+    g.rx_len = 0;
+    g.rx_overflow = 0;
+    return;
+  }
+  if (g.rx_len < sizeof g.rx)
+    g.rx[g.rx_len++] = byte;
+  else
+    g.rx_overflow = 1;
+}
+
+int pxdut_poll(const pxdut_device *dev) {
+  uint8_t chunk[64];
+  const int n = pxdut_port_read(chunk, (int)sizeof chunk);
+  if (n < 0) return -1;
+  for (int i = 0; i < n; ++i) on_byte(dev, chunk[i]);
+  return 0;
+}
+
+void pxdut_serve(const pxdut_device *dev) {
+  while (pxdut_poll(dev) == 0) {
+  }
+}
+
+void pxdut_reset(void) {
+  g.rx_len = 0;
+  g.rx_overflow = 0;
+  g.have_last = 0;
+  g.params_ok = 0;
+  g.run_ok = 0;
+  g.tx_len = 0;
+}

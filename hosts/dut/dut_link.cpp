@@ -1,0 +1,269 @@
+#include "dut_link.hpp"
+
+#include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <termios.h>
+#include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
+
+#include <cerrno>
+#include <cstring>
+#include <thread>
+
+#include "interrupt.hpp"
+
+namespace pxflow::dut {
+namespace {
+
+std::string os_error(const std::string& what) { return what + ": " + std::strerror(errno); }
+
+void set_nonblocking(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
+
+// Waits for `events` on fd until the deadline, in slices short enough to notice Ctrl-C.
+// Returns false at the deadline.
+bool wait_fd(int fd, short events, Clock::time_point deadline) {
+  for (;;) {
+    stop_if_interrupted("waiting for the device");
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    if (left.count() <= 0) return false;
+    pollfd p{fd, events, 0};
+    const int r = poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 100)));
+    if (r > 0) return true;  // ready, or an error/hang-up the next read or write reports
+    if (r < 0 && errno != EINTR) throw LinkError(os_error("poll"));
+  }
+}
+
+// A pair of file descriptors (the same one for sockets and ttys).
+class FdLink : public Link {
+ public:
+  FdLink(int in, int out) : in_(in), out_(out) {
+    set_nonblocking(in_);
+    set_nonblocking(out_);
+  }
+  ~FdLink() override { close_fds(); }
+
+  void write(std::span<const std::uint8_t> bytes, Clock::time_point deadline) override {
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+      const ssize_t n = ::write(out_, bytes.data() + done, bytes.size() - done);
+      if (n > 0) {
+        done += static_cast<std::size_t>(n);
+        continue;
+      }
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+        if (!wait_fd(out_, POLLOUT, deadline))
+          throw LinkError("the device does not take its input (the link stayed full)");
+        continue;
+      }
+      throw LinkError(closed_reason(os_error("write")));
+    }
+  }
+
+  std::size_t read(std::uint8_t* buf, std::size_t max, Clock::time_point deadline) override {
+    for (;;) {
+      const ssize_t n = ::read(in_, buf, max);
+      if (n > 0) return static_cast<std::size_t>(n);
+      if (n == 0) throw LinkError(closed_reason("the link was closed"));
+      if (errno == EINTR) continue;
+      if (errno != EAGAIN && errno != EWOULDBLOCK) throw LinkError(closed_reason(os_error("read")));
+      if (!wait_fd(in_, POLLIN, deadline)) return 0;
+    }
+  }
+
+ protected:
+  // What a closed link means (an exec link says how the child ended).
+  virtual std::string closed_reason(const std::string& what) { return what; }
+  void close_fds() {
+    if (out_ >= 0 && out_ != in_) ::close(out_);
+    if (in_ >= 0) ::close(in_);
+    in_ = out_ = -1;
+  }
+
+ private:
+  int in_, out_;
+};
+
+class ExecLink : public FdLink {
+ public:
+  ExecLink(int in, int out, pid_t pid, std::string command)
+      : FdLink(in, out), pid_(pid), command_(std::move(command)) {}
+  ~ExecLink() override {
+    close_fds();  // the device sees the end of its input and may exit by itself
+    for (int i = 0; i < 20 && !reaped_; ++i) {
+      reap(WNOHANG);
+      if (!reaped_) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    kill(-pid_, SIGKILL);  // the group: whatever the command started goes too
+    if (!reaped_) reap(0);
+  }
+
+ protected:
+  std::string closed_reason(const std::string& what) override {
+    for (int i = 0; i < 10 && !reaped_; ++i) {  // it usually exits right after closing
+      reap(WNOHANG);
+      if (!reaped_) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    if (!reaped_) return what + " (" + command_ + " still runs)";
+    if (WIFEXITED(status_))
+      return command_ + " exited with status " + std::to_string(WEXITSTATUS(status_));
+    return command_ + " was killed by signal " + std::to_string(WTERMSIG(status_));
+  }
+
+ private:
+  void reap(int flags) {
+    int st = 0;
+    pid_t r;
+    do r = waitpid(pid_, &st, flags);
+    while (r < 0 && errno == EINTR);
+    if (r == pid_ || (r < 0 && errno == ECHILD)) reaped_ = true, status_ = st;
+  }
+  pid_t pid_;
+  std::string command_;
+  bool reaped_ = false;
+  int status_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Link> open_exec_link(const std::vector<std::string>& args) {
+  signal(SIGPIPE, SIG_IGN);  // a device that exits is a write error, not the end of pxflow
+  int to_child[2], from_child[2], exec_errno[2];
+  if (pipe2(to_child, O_CLOEXEC) != 0) throw LinkError(os_error("pipe"));
+  if (pipe2(from_child, O_CLOEXEC) != 0 || pipe2(exec_errno, O_CLOEXEC) != 0) {
+    ::close(to_child[0]), ::close(to_child[1]);
+    throw LinkError(os_error("pipe"));
+  }
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) throw LinkError(os_error("fork"));
+  if (pid == 0) {
+    setpgid(0, 0);  // Ctrl-C goes to pxflow, which stops the device itself
+#ifdef __linux__
+    prctl(PR_SET_PDEATHSIG, SIGKILL);  // no orphan even when pxflow is killed
+    if (getppid() != parent) _exit(127);
+#endif
+    dup2(to_child[0], 0);
+    dup2(from_child[1], 1);
+    signal(SIGPIPE, SIG_DFL);
+    execvp(argv[0], argv.data());
+    const int e = errno;
+    (void)!::write(exec_errno[1], &e, sizeof e);
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  ::close(to_child[0]);
+  ::close(from_child[1]);
+  ::close(exec_errno[1]);
+  int e = 0;
+  ssize_t n;
+  do n = ::read(exec_errno[0], &e, sizeof e);  // closed by a successful exec
+  while (n < 0 && errno == EINTR);
+  ::close(exec_errno[0]);
+  auto link = std::make_unique<ExecLink>(from_child[0], to_child[1], pid, args[0]);
+  if (n == static_cast<ssize_t>(sizeof e))
+    throw LinkError("cannot start " + args[0] + ": " + std::strerror(e));
+  return link;
+}
+
+std::unique_ptr<Link> open_tcp_link(const std::string& host, const std::string& port,
+                                    Clock::time_point deadline) {
+  signal(SIGPIPE, SIG_IGN);
+  addrinfo hints{};
+  hints.ai_socktype = SOCK_STREAM;
+  addrinfo* found = nullptr;
+  if (const int r = getaddrinfo(host.c_str(), port.c_str(), &hints, &found); r != 0)
+    throw LinkError("cannot resolve " + host + ": " + gai_strerror(r));
+  std::string why = "no address";
+  for (addrinfo* a = found; a; a = a->ai_next) {
+    const int s = socket(a->ai_family, a->ai_socktype | SOCK_CLOEXEC, a->ai_protocol);
+    if (s < 0) continue;
+    set_nonblocking(s);
+    int r = connect(s, a->ai_addr, a->ai_addrlen);
+    if (r != 0 && errno == EINPROGRESS && wait_fd(s, POLLOUT, deadline)) {
+      int err = 0;
+      socklen_t len = sizeof err;
+      getsockopt(s, SOL_SOCKET, SO_ERROR, &err, &len);
+      errno = err;
+      r = err == 0 ? 0 : -1;
+    } else if (r != 0 && errno == EINPROGRESS) {
+      errno = ETIMEDOUT;
+    }
+    if (r == 0) {
+      freeaddrinfo(found);
+      const int one = 1;
+      setsockopt(s, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);  // small frames, answered at once
+      return std::make_unique<FdLink>(s, s);
+    }
+    why = std::strerror(errno);
+    ::close(s);
+  }
+  freeaddrinfo(found);
+  throw LinkError("cannot connect to " + host + ":" + port + ": " + why);
+}
+
+namespace {
+
+struct BaudRate {
+  int baud;
+  speed_t code;
+};
+constexpr BaudRate kBauds[] = {{9600, B9600},       {19200, B19200},     {38400, B38400},
+                               {57600, B57600},     {115200, B115200},   {230400, B230400},
+                               {460800, B460800},   {921600, B921600},   {1000000, B1000000},
+                               {1500000, B1500000}, {2000000, B2000000}, {3000000, B3000000},
+                               {4000000, B4000000}};
+
+}  // namespace
+
+bool serial_baud_supported(int baud) {
+  for (const auto& b : kBauds)
+    if (b.baud == baud) return true;
+  return false;
+}
+
+std::string serial_bauds_text() {
+  std::string s;
+  for (const auto& b : kBauds) s += (s.empty() ? "" : ", ") + std::to_string(b.baud);
+  return s;
+}
+
+std::unique_ptr<Link> open_serial_link(const std::string& path, int baud) {
+  const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw LinkError(os_error("cannot open " + path));
+  termios t{};
+  if (tcgetattr(fd, &t) != 0) {
+    const std::string why = os_error(path + " is not a serial port (tcgetattr)");
+    ::close(fd);
+    throw LinkError(why);
+  }
+  cfmakeraw(&t);  // 8 data bits, no parity, no echo, no line editing, no CR/LF translation
+  t.c_cflag |= CLOCAL | CREAD;
+  t.c_cflag &= ~(CSTOPB | CRTSCTS);  // one stop bit, no hardware flow control
+  t.c_iflag &= ~(IXON | IXOFF | IXANY);
+  t.c_cc[VMIN] = 0;
+  t.c_cc[VTIME] = 0;
+  for (const auto& b : kBauds)
+    if (b.baud == baud) cfsetispeed(&t, b.code), cfsetospeed(&t, b.code);
+  if (tcsetattr(fd, TCSANOW, &t) != 0) {
+    const std::string why = os_error(path + ": cannot set raw mode at " + std::to_string(baud));
+    ::close(fd);
+    throw LinkError(why);
+  }
+  tcflush(fd, TCIOFLUSH);  // whatever the device printed before we came is not an answer
+  return std::make_unique<FdLink>(fd, fd);
+}
+
+}  // namespace pxflow::dut

@@ -1,0 +1,130 @@
+#include "dut_session.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace pxflow::dut {
+namespace {
+
+std::string seconds_text(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g s", s);
+  return buf;
+}
+
+constexpr auto kSettle = std::chrono::milliseconds(100);  // after a corrupted frame, see whether
+                                                          // a good one follows before resending
+
+}  // namespace
+
+Session::Session(std::string label, std::unique_ptr<Link> link,
+                 std::chrono::duration<double> timeout)
+    : label_(std::move(label)), link_(std::move(link)), timeout_(timeout) {}
+
+void Session::fail(const std::string& message, const std::string& what, const std::string& hint,
+                   bool fatal) {
+  throw DutError(label_ + ": " + message + ": " + what + (hint.empty() ? "" : "; " + hint), fatal);
+}
+
+Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body,
+                         std::uint8_t expect) {
+  const std::string name = message_name(type);
+  const std::uint8_t seq = next_seq_++;
+  const std::vector<std::uint8_t> frame = encode_frame(type, seq, body);
+  const auto wait = std::chrono::duration_cast<Clock::duration>(timeout_);
+  std::string problem;
+  for (int attempt = 0; attempt <= kResends; ++attempt) {
+    const Clock::time_point deadline = Clock::now() + wait;
+    try {
+      // A leading delimiter ends whatever partial frame the device holds (section 1).
+      if (attempt > 0 || type == kHello) link_->write(std::vector<std::uint8_t>{0}, deadline);
+      link_->write(frame, deadline);
+    } catch (const LinkError& e) {
+      fail(name, std::string("the link broke: ") + e.what(),
+           "is the device still running? (its output above may say why)", true);
+    }
+    Clock::time_point resend_at = deadline;
+    bool resend = false;
+    while (!resend) {
+      if (pending_at_ == pending_.size()) {
+        if (Clock::now() >= resend_at) break;
+        pending_.resize(4096);
+        pending_at_ = 0;
+        std::size_t n = 0;
+        try {
+          n = link_->read(pending_.data(), pending_.size(), resend_at);
+        } catch (const LinkError& e) {
+          pending_.clear();
+          fail(name, std::string("the device went away: ") + e.what(),
+               "is it still running? (its output above may say why)", true);
+        }
+        pending_.resize(n);
+        if (n == 0) {
+          if (resend_at == deadline) problem = "no answer within " + seconds_text(timeout_.count());
+          break;
+        }
+      }
+      const FrameReceiver::Event ev = rx_.push(pending_[pending_at_++]);
+      if (ev == FrameReceiver::Event::kBad) {
+        problem = "a corrupted reply (" + rx_.why_bad() + ")";
+        resend_at = std::min(resend_at, Clock::now() + kSettle);
+        continue;
+      }
+      if (ev != FrameReceiver::Event::kPacket) continue;
+      const Packet& p = rx_.packet();
+      valid_frame_seen_ = true;
+      if (p.type == kNak) {
+        problem = "the device NAKed it (" + nak_reason(p.body) + ")";
+        resend = true;
+        continue;
+      }
+      if (p.seq != seq) continue;  // a late copy of an earlier reply
+      if (p.type == kError) {
+        DeviceErrorReply e;
+        try {
+          e = parse_error(p.body);
+        } catch (const WireError& w) {
+          fail(name, std::string("a malformed ERROR: ") + w.what(), "", false);
+        }
+        fail(name, "the device answered ERROR " + std::to_string(e.code) + " (" + e.text + ")",
+             e.code == 4 ? "did it reset? it lost the parameters or frames" : "", false);
+      }
+      if (p.type != expect)
+        fail(name, "answered with " + message_name(p.type) + ", expected " + message_name(expect),
+             "is this a pxflow device of protocol version 1?", false);
+      return p;
+    }
+  }
+  fail(name,
+       (problem.empty() ? std::string("no valid answer") : problem) + " after " +
+           std::to_string(kResends) + " resends (each waited up to " +
+           seconds_text(timeout_.count()) + ")",
+       "is the device running and on this link (baud rate)? try a longer --dut-timeout", true);
+}
+
+Hello Session::hello() {
+  Packet p;
+  try {
+    p = exchange(kHello, hello_body(), kHelloReply);
+  } catch (const DutError& e) {
+    const std::string line = e.what();
+    if (!valid_frame_seen_ && rx_.bytes_seen() > 0)
+      throw DutError("not a pxflow device: " + std::to_string(rx_.bytes_seen()) +
+                         " bytes arrived but no valid frame (wrong port or baud rate?)",
+                     true);
+    throw DutError(line.substr(std::min(line.size(), label_.size() + 2)), true);
+  }
+  Hello h;
+  try {
+    h = parse_hello(p.body);
+  } catch (const WireError& w) {
+    throw DutError(std::string("not a pxflow device: ") + w.what(), true);
+  }
+  if (h.version != kProtocolVersion)
+    throw DutError("protocol version " + std::to_string(h.version) + ", this pxflow speaks " +
+                       std::to_string(kProtocolVersion),
+                   true);
+  return h;
+}
+
+}  // namespace pxflow::dut
