@@ -10,6 +10,7 @@
 #include "dut_backend.hpp"
 #include "dut_spec.hpp"
 #include "errors.hpp"
+#include "m4qemu_backend.hpp"
 #include "m4qemu_row.hpp"
 
 namespace pxflow {
@@ -106,7 +107,7 @@ BackendRow m4_qemu_row() {
   row.probe = [lazy] { return lazy->probe(); };
   row.create = [lazy](const BackendOptions&) -> std::unique_ptr<Backend> {
     if (const std::string why = lazy->probe(); !why.empty()) throw BackendError(why);
-    return std::make_unique<dut::DutBackend>(lazy->device);
+    return std::make_unique<M4QemuBackend>(lazy->device);
   };
   return row;
 }

@@ -17,8 +17,8 @@
 
 namespace {
 
-using pxflow::test::RunResult;
 using pxflow::test::run_program;
+using pxflow::test::RunResult;
 using Seconds = std::chrono::duration<double>;
 
 std::string fault_firmware(int mode) {
@@ -27,7 +27,8 @@ std::string fault_firmware(int mode) {
 
 // PIDs of QEMU processes running `firmware`.
 std::vector<int> qemu_running(const std::string& firmware) {
-  const RunResult r = run_program("/usr/bin/pgrep", {"-f", "qemu-system-arm .*-kernel " + firmware});
+  const RunResult r =
+      run_program("/usr/bin/pgrep", {"-f", "qemu-system-arm .*-kernel " + firmware});
   std::vector<int> pids;
   std::size_t start = 0;
   while (start < r.out.size()) {
@@ -132,7 +133,7 @@ TEST_CASE("m4-qemu: firmware that never answers: skipped, required, exit 1 withi
   const Timed t = check_with(fw, "0.5");
   INFO(t.result.out << t.result.err);
   CHECK(t.result.exit_code == 1);
-  CHECK(mentions(t.result, "no answer to HELLO"));
+  CHECK(mentions(t.result, "HELLO: no answer within 0.5 s after 3 resends"));
   CHECK(t.seconds < 20);  // 4 x 0.5 s for HELLO, QEMU's start and stop
   require_no_qemu(fw);
 }
@@ -199,14 +200,13 @@ TEST_CASE("m4-qemu: Ctrl-C during a check: pxflow exits 130 and stops QEMU", "[m
 }
 
 TEST_CASE("m4-qemu: the probe says why the row cannot run", "[m4]") {
-  const RunResult no_fw = pxflow::test::run_pxflow(
-      {"backends", "--m4-firmware", "/nonexistent/pxflow_m4_dut.elf"});
+  const RunResult no_fw =
+      pxflow::test::run_pxflow({"backends", "--m4-firmware", "/nonexistent/pxflow_m4_dut.elf"});
   INFO(no_fw.out << no_fw.err);
   CHECK(no_fw.out.find("firmware not built: /nonexistent/pxflow_m4_dut.elf") != std::string::npos);
-  const RunResult no_qemu = run_program("/usr/bin/env", {"PATH=/nonexistent", PXFLOW_BINARY,
-                                                         "check", "--backends", "m4-qemu",
-                                                         "--require", "m4-qemu",
-                                                         "--generated-only"});
+  const RunResult no_qemu =
+      run_program("/usr/bin/env", {"PATH=/nonexistent", PXFLOW_BINARY, "check", "--backends",
+                                   "m4-qemu", "--require", "m4-qemu", "--generated-only"});
   INFO(no_qemu.out << no_qemu.err);
   CHECK(no_qemu.exit_code == 1);
   CHECK(mentions(no_qemu, "qemu-system-arm not found in PATH"));
