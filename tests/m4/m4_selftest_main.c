@@ -57,9 +57,27 @@ static int check_case(const m4_vec_case *c) {
   return 0;
 }
 
+/* The counter measures instructions under -icount shift=3: a loop of exactly 2 * n instructions
+ * (SUBS, BNE) between two readings must read 2n / 5 SysTick ticks (8 ns per instruction, 40 ns
+ * per 25 MHz tick), plus the few instructions of the readings themselves. */
+static int check_instruction_count(void) {
+  const uint32_t n = 1000000u;
+  uint32_t k = n;
+  const uint64_t t0 = board_systick_ticks();
+  __asm__ volatile("1: subs %0, %0, #1\n\tbne 1b" : "+r"(k) : : "cc");
+  const uint64_t insns = (board_systick_ticks() - t0) * 5u;
+  const int ok = insns >= 2u * n && insns <= 2u * n + 50u;
+  printf("%s counter: %lu instructions measured for a loop of %lu (expected %lu + at most 50)\n",
+         ok ? "ok" : "FAIL", (unsigned long)insns, (unsigned long)(2u * n),
+         (unsigned long)(2u * n));
+  return ok ? 0 : 1;
+}
+
 int main(void) {
   initialise_monitor_handles();
-  int failures = m4_selftest_simd();
+  board_systick_init();
+  int failures = check_instruction_count();
+  failures += m4_selftest_simd();
   int failed_cases = 0;
   uint32_t pois = 0;
   for (uint32_t i = 0; i < M4_VEC_CASES; ++i) {
