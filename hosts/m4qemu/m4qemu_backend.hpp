@@ -1,6 +1,7 @@
 // The m4-qemu backend: the dut family's DutBackend over QEMU, with what only this row knows.
 // Under -icount the device's counter counts instructions and, with nothing but the kernel between
-// its two reads, the same count every run: the row's device time is exact (one checked run is
+// its two reads, the same count every run to within its tick (5 instructions: the tick's phase
+// depends on how long the core slept before): the row's device time is exact (one checked run is
 // the measurement, like the GAP8 model's cycles) and is reported as instructions, never cycles.
 #pragma once
 #include <memory>

@@ -128,7 +128,7 @@ std::vector<int> wait_for_qemu(const std::string& firmware, double limit) {
 }  // namespace
 
 TEST_CASE("m4-qemu: firmware that never answers: skipped, required, exit 1 within the bound",
-          "[m4]") {
+          "[m4][fault]") {
   const std::string fw = fault_firmware(1);
   const Timed t = check_with(fw, "0.5");
   INFO(t.result.out << t.result.err);
@@ -138,7 +138,8 @@ TEST_CASE("m4-qemu: firmware that never answers: skipped, required, exit 1 withi
   require_no_qemu(fw);
 }
 
-TEST_CASE("m4-qemu: firmware that hangs in RUN: the case fails, exit 1 within the bound", "[m4]") {
+TEST_CASE("m4-qemu: firmware that hangs in RUN: the case fails, exit 1 within the bound",
+          "[m4][fault]") {
   const std::string fw = fault_firmware(3);
   const Timed t = check_with(fw, "2");
   INFO(t.result.out << t.result.err);
@@ -148,7 +149,7 @@ TEST_CASE("m4-qemu: firmware that hangs in RUN: the case fails, exit 1 within th
   require_no_qemu(fw);
 }
 
-TEST_CASE("m4-qemu: QEMU exits in the middle of a run: the case fails, exit 1", "[m4]") {
+TEST_CASE("m4-qemu: QEMU exits in the middle of a run: the case fails, exit 1", "[m4][fault]") {
   const std::string fw = fault_firmware(2);
   const Timed t = check_with(fw, "2");
   INFO(t.result.out << t.result.err);
@@ -158,7 +159,7 @@ TEST_CASE("m4-qemu: QEMU exits in the middle of a run: the case fails, exit 1", 
   require_no_qemu(fw);
 }
 
-TEST_CASE("m4-qemu: a UART that delivers garbage: not a pxflow device, exit 1", "[m4]") {
+TEST_CASE("m4-qemu: a UART that delivers garbage: not a pxflow device, exit 1", "[m4][fault]") {
   const std::string fw = fault_firmware(4);
   const Timed t = check_with(fw, "0.5");
   INFO(t.result.out << t.result.err);
@@ -169,7 +170,7 @@ TEST_CASE("m4-qemu: a UART that delivers garbage: not a pxflow device, exit 1", 
 }
 
 TEST_CASE("m4-qemu: firmware for another protocol version: skipped with both versions, exit 1",
-          "[m4]") {
+          "[m4][fault]") {
   const std::string fw = fault_firmware(5);
   const Timed t = check_with(fw, "2");
   INFO(t.result.out << t.result.err);
@@ -179,7 +180,8 @@ TEST_CASE("m4-qemu: firmware for another protocol version: skipped with both ver
   require_no_qemu(fw);
 }
 
-TEST_CASE("m4-qemu: QEMU killed during a check: the case fails, exit 1, no QEMU left", "[m4]") {
+TEST_CASE("m4-qemu: QEMU killed during a check: the case fails, exit 1, no QEMU left",
+          "[m4][fault]") {
   const std::string fw = PXFLOW_M4_FIRMWARE;
   Background run({"check", "--backends", "m4-qemu", "--require", "m4-qemu", "--generated-only",
                   "--dut-timeout", "2"});
@@ -190,7 +192,7 @@ TEST_CASE("m4-qemu: QEMU killed during a check: the case fails, exit 1, no QEMU 
   require_no_qemu(fw);
 }
 
-TEST_CASE("m4-qemu: Ctrl-C during a check: pxflow exits 130 and stops QEMU", "[m4]") {
+TEST_CASE("m4-qemu: Ctrl-C during a check: pxflow exits 130 and stops QEMU", "[m4][fault]") {
   const std::string fw = PXFLOW_M4_FIRMWARE;
   Background run({"check", "--backends", "m4-qemu", "--require", "m4-qemu", "--generated-only"});
   REQUIRE(wait_for_qemu(fw, 30).size() == 1);
@@ -199,7 +201,7 @@ TEST_CASE("m4-qemu: Ctrl-C during a check: pxflow exits 130 and stops QEMU", "[m
   require_no_qemu(fw);
 }
 
-TEST_CASE("m4-qemu: the probe says why the row cannot run", "[m4]") {
+TEST_CASE("m4-qemu: the probe says why the row cannot run", "[m4][fault]") {
   const RunResult no_fw =
       pxflow::test::run_pxflow({"backends", "--m4-firmware", "/nonexistent/pxflow_m4_dut.elf"});
   INFO(no_fw.out << no_fw.err);

@@ -75,7 +75,9 @@ void add_m4_section(ReportInputs& in) {
           pair.name +
           " (px4flow-64, all 64 POIs accepted), records checked against ref-original first. "
           "QEMU counts instructions, not cycles: the kernel and the frame estimate between two "
-          "reads of the firmware's counter, the same count every run. The paper's figure is an "
+          "reads of the firmware's counter, the same count every run to within the counter's tick "
+          "(5 "
+          "instructions). The paper's figure is an "
           "estimate of cycles, not a measurement; its 22,880 cycles for 91,520 SAD instructions "
           "is a quarter cycle each, where Cortex-M4 issues USADA8 at one per cycle (91,520 "
           "cycles at least). A real STM32F407 adds to the instruction count: LDR takes 2 cycles "
