@@ -102,7 +102,10 @@ static void nak(uint8_t reason) {
 }
 
 static void on_hello(const pxdut_device *dev, uint8_t seq, const uint8_t *body, uint32_t n) {
-  if (n != 2u) return error_reply(seq, kErrMessage, "HELLO body is u16 version");
+  if (n != 2u) {
+    error_reply(seq, kErrMessage, "HELLO body is u16 version");
+    return;
+  }
   uint8_t *p = begin(kHello | kReply, seq);
   p = put_u16(p, PXDUT_PROTOCOL_VERSION);
   p = put_u16(p, PXDUT_COMPUTE_ESTIMATE ? 1u : 0u);
@@ -120,25 +123,43 @@ static void on_hello(const pxdut_device *dev, uint8_t seq, const uint8_t *body, 
 
 static void on_params(uint8_t seq, const uint8_t *body, uint32_t n) {
   g.params_ok = g.run_ok = 0;
-  if (n != 40u) return error_reply(seq, kErrMessage, "PARAMS body is 10 x u32");
+  if (n != 40u) {
+    error_reply(seq, kErrMessage, "PARAMS body is 10 x u32");
+    return;
+  }
   pxdut_params q;
   uint32_t *fields[10] = {&q.width,         &q.height,      &q.search_radius,
                           &q.tile,          &q.blocks,      &q.feature_threshold,
                           &q.sad_threshold, &q.hist_filter, &q.min_count,
                           &q.gyro_comp};
   for (int i = 0; i < 10; ++i) *fields[i] = get_u32(body + 4 * i);
-  if (q.tile != 8u) return error_reply(seq, kErrParams, "T must be 8");
-  if (q.gyro_comp != 0u) return error_reply(seq, kErrParams, "gyro compensation is not supported");
+  if (q.tile != 8u) {
+    error_reply(seq, kErrParams, "T must be 8");
+    return;
+  }
+  if (q.gyro_comp != 0u) {
+    error_reply(seq, kErrParams, "gyro compensation is not supported");
+    return;
+  }
   if (q.search_radius < 1u || q.search_radius > 31u || q.blocks < 1u || q.blocks > 255u ||
       q.hist_filter > 1u || q.feature_threshold > 65535u || q.sad_threshold > 65535u ||
-      q.min_count > 65535u || q.width > 65535u || q.height > 65535u)
-    return error_reply(seq, kErrParams, "a parameter is out of range");
+      q.min_count > 65535u || q.width > 65535u || q.height > 65535u) {
+    error_reply(seq, kErrParams, "a parameter is out of range");
+    return;
+  }
   const uint32_t pois = pxdut_poi_count(&q);
-  if (pois == 0u) return error_reply(seq, kErrParams, "the grid does not fit the frame");
-  if (q.width * q.height > PXDUT_MAX_PIXELS)
-    return error_reply(seq, kErrTooLarge, "frame larger than PXDUT_MAX_PIXELS");
-  if (pois > PXDUT_MAX_POIS)
-    return error_reply(seq, kErrTooLarge, "grid larger than PXDUT_MAX_POIS");
+  if (pois == 0u) {
+    error_reply(seq, kErrParams, "the grid does not fit the frame");
+    return;
+  }
+  if (q.width * q.height > PXDUT_MAX_PIXELS) {
+    error_reply(seq, kErrTooLarge, "frame larger than PXDUT_MAX_PIXELS");
+    return;
+  }
+  if (pois > PXDUT_MAX_POIS) {
+    error_reply(seq, kErrTooLarge, "grid larger than PXDUT_MAX_POIS");
+    return;
+  }
   g.params = q;
   g.pois = pois;
   g.params_ok = 1;
@@ -146,12 +167,20 @@ static void on_params(uint8_t seq, const uint8_t *body, uint32_t n) {
 }
 
 static void on_frame(uint8_t seq, const uint8_t *body, uint32_t n) {
-  if (n < 9u || body[0] > 1u)
-    return error_reply(seq, kErrMessage, "FRAME body is image, 0, 0, offset, bytes");
-  if (!g.params_ok) return error_reply(seq, kErrNotReady, "no PARAMS yet (did the device reset?)");
+  if (n < 9u || body[0] > 1u) {
+    error_reply(seq, kErrMessage, "FRAME body is image, 0, 0, offset, bytes");
+    return;
+  }
+  if (!g.params_ok) {
+    error_reply(seq, kErrNotReady, "no PARAMS since the device started");
+    return;
+  }
   const uint32_t offset = get_u32(body + 4), len = n - 8u;
-  if (offset > g.params.width * g.params.height || len > g.params.width * g.params.height - offset)
-    return error_reply(seq, kErrRange, "FRAME bytes outside W*H");
+  if (offset > g.params.width * g.params.height ||
+      len > g.params.width * g.params.height - offset) {
+    error_reply(seq, kErrRange, "FRAME bytes outside W*H");
+    return;
+  }
   uint8_t *dst = (uint8_t *)g.frames[body[0]] + offset;
   for (uint32_t i = 0; i < len; ++i) dst[i] = body[8 + i];
   g.run_ok = 0;
@@ -159,10 +188,19 @@ static void on_frame(uint8_t seq, const uint8_t *body, uint32_t n) {
 }
 
 static void on_run(uint8_t seq, const uint8_t *body, uint32_t n) {
-  if (n != 8u) return error_reply(seq, kErrMessage, "RUN body is u32 repetitions, u32 warmups");
-  if (!g.params_ok) return error_reply(seq, kErrNotReady, "no PARAMS yet (did the device reset?)");
+  if (n != 8u) {
+    error_reply(seq, kErrMessage, "RUN body is u32 repetitions, u32 warmups");
+    return;
+  }
+  if (!g.params_ok) {
+    error_reply(seq, kErrNotReady, "no PARAMS since the device started");
+    return;
+  }
   const uint32_t reps = get_u32(body), warmups = get_u32(body + 4);
-  if (reps < 1u) return error_reply(seq, kErrMessage, "RUN needs at least 1 repetition");
+  if (reps < 1u) {
+    error_reply(seq, kErrMessage, "RUN needs at least 1 repetition");
+    return;
+  }
   const uint8_t *prev = (const uint8_t *)g.frames[0], *next = (const uint8_t *)g.frames[1];
   pxdut_estimate est = {0.0f, 0.0f, 0, 0};
   for (uint32_t i = 0; i < warmups; ++i) pxdut_port_kernel(&g.params, prev, next, g.records);
@@ -216,11 +254,19 @@ static uint8_t *put_record(uint8_t *p, const pxdut_record *r) {
 #define PXDUT_RECORDS_PER_REPLY ((PXDUT_MAX_PACKET - 14u) / 32u)
 
 static void on_records(uint8_t seq, const uint8_t *body, uint32_t n) {
-  if (n != 8u) return error_reply(seq, kErrMessage, "RECORDS body is u32 first, u32 count");
-  if (!g.run_ok) return error_reply(seq, kErrNotReady, "no RUN since the last PARAMS or FRAME");
+  if (n != 8u) {
+    error_reply(seq, kErrMessage, "RECORDS body is u32 first, u32 count");
+    return;
+  }
+  if (!g.run_ok) {
+    error_reply(seq, kErrNotReady, "no RUN since the last PARAMS or FRAME");
+    return;
+  }
   const uint32_t first = get_u32(body), count = get_u32(body + 4);
-  if (count < 1u || count > PXDUT_RECORDS_PER_REPLY || first > g.pois || count > g.pois - first)
-    return error_reply(seq, kErrRange, "RECORDS range outside the run's records or reply size");
+  if (count < 1u || count > PXDUT_RECORDS_PER_REPLY || first > g.pois || count > g.pois - first) {
+    error_reply(seq, kErrRange, "RECORDS range outside the run's records or reply size");
+    return;
+  }
   uint8_t *p = put_u32(put_u32(begin(kRecords | kReply, seq), first), count);
   for (uint32_t i = 0; i < count; ++i) p = put_record(p, &g.records[first + i]);
   reply(p);
@@ -228,13 +274,25 @@ static void on_records(uint8_t seq, const uint8_t *body, uint32_t n) {
 
 /* One complete frame in rx[0 .. rx_len). */
 static void on_frame_received(const pxdut_device *dev) {
-  if (g.rx_overflow) return nak(kNakLong);
+  if (g.rx_overflow) {
+    nak(kNakLong);
+    return;
+  }
   if (g.rx_len == 0u) return; /* an empty frame: a sender's resynchronisation */
   const int32_t n = pxdut_cobs_decode(g.rx, g.rx_len, g.rx);
-  if (n < 0) return nak(kNakCobs);
-  if (n < 6) return nak(kNakShort);
+  if (n < 0) {
+    nak(kNakCobs);
+    return;
+  }
+  if (n < 6) {
+    nak(kNakShort);
+    return;
+  }
   const uint32_t len = (uint32_t)n - 4u, crc = get_u32(g.rx + len);
-  if (pxdut_crc32(g.rx, len) != crc) return nak(kNakCrc);
+  if (pxdut_crc32(g.rx, len) != crc) {
+    nak(kNakCrc);
+    return;
+  }
   const uint8_t type = g.rx[0], seq = g.rx[1];
   const uint8_t *body = g.rx + 2;
   const uint32_t body_len = len - 2u;
@@ -246,18 +304,30 @@ static void on_frame_received(const pxdut_device *dev) {
   g.last_seq = seq;
   g.last_crc = crc;
   switch (type) {
-    case kHello:
-      return on_hello(dev, seq, body, body_len);
-    case kParams:
-      return on_params(seq, body, body_len);
-    case kFrame:
-      return on_frame(seq, body, body_len);
-    case kRun:
-      return on_run(seq, body, body_len);
-    case kRecords:
-      return on_records(seq, body, body_len);
-    default:
-      return error_reply(seq, kErrMessage, "unknown message type");
+    case kHello: {
+      on_hello(dev, seq, body, body_len);
+      return;
+    }
+    case kParams: {
+      on_params(seq, body, body_len);
+      return;
+    }
+    case kFrame: {
+      on_frame(seq, body, body_len);
+      return;
+    }
+    case kRun: {
+      on_run(seq, body, body_len);
+      return;
+    }
+    case kRecords: {
+      on_records(seq, body, body_len);
+      return;
+    }
+    default: {
+      error_reply(seq, kErrMessage, "unknown message type");
+      return;
+    }
   }
 }
 

@@ -253,7 +253,7 @@ std::unique_ptr<Link> open_serial_link(const std::string& path, int baud) {
   t.c_cflag |= CLOCAL | CREAD;
   t.c_cflag &= ~(CSTOPB | CRTSCTS);  // one stop bit, no hardware flow control
   t.c_iflag &= ~(IXON | IXOFF | IXANY);
-  t.c_cc[VMIN] = 0;
+  t.c_cc[VMIN] = 1;  // with O_NONBLOCK: EAGAIN when nothing came, 0 only at a hang-up
   t.c_cc[VTIME] = 0;
   for (const auto& b : kBauds)
     if (b.baud == baud) cfsetispeed(&t, b.code), cfsetospeed(&t, b.code);

@@ -1,0 +1,271 @@
+// `pxflow vectors`: test vectors for on-target unit tests and for implementations that cannot
+// talk the protocol (docs/dut-protocol.md section 9): seeded random pairs, their parameters, the
+// expected records and the expected flow bits, as binary files with a JSON manifest or as C
+// arrays with a freestanding checker; `pxflow vectors verify DIR RECORDS` compares records made
+// elsewhere with check's mismatch lines and exit codes.
+#include <bit>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_extension.hpp"
+#include "dut_wire.hpp"
+#include "errors.hpp"
+#include "estimate.hpp"
+#include "exactness.hpp"
+#include "grid.hpp"
+#include "output_file.hpp"
+#include "synthetic.hpp"
+
+namespace pxflow::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct VectorsArgs {
+  std::string out, format = "bin";
+  ProblemOptions problem;
+  int cases = 16;
+  std::uint64_t seed = 1;
+  std::string verify_dir, verify_records;
+};
+
+std::string hex32(std::uint32_t v) {
+  char b[16];
+  std::snprintf(b, sizeof b, "0x%08x", v);
+  return b;
+}
+
+struct Vectors {
+  Params p;
+  std::vector<OwnedPair> pairs;
+  ReferenceAnswer answer;
+};
+
+Vectors make_vectors(const VectorsArgs& a) {
+  Vectors v;
+  v.p = a.problem.resolve(std::nullopt);
+  for (int i = 0; i < a.cases; ++i)
+    v.pairs.push_back(random_pair(v.p.width, v.p.height, v.p.search_radius, a.seed + i));
+  std::vector<FramePair> views;
+  for (const auto& op : v.pairs) views.push_back(op.view());
+  v.answer = reference_answer(views, v.p);
+  return v;
+}
+
+std::string records_bytes(std::span<const PoiRecord> records) {
+  std::string s(records.size() * 32, '\0');
+  for (std::size_t i = 0; i < records.size(); ++i)
+    dut::encode_record(records[i], reinterpret_cast<std::uint8_t*>(s.data() + 32 * i));
+  return s;
+}
+
+void put32(std::string& s, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>(v >> (8 * i)));
+}
+
+Json manifest(const Vectors& v, const VectorsArgs& a) {
+  Json j;
+  j["format"] = "pxflow-vectors";
+  j["version"] = 1;
+  j["seed"] = a.seed;
+  Json params;
+  params["width"] = v.p.width, params["height"] = v.p.height;
+  params["search_radius"] = v.p.search_radius, params["tile"] = v.p.tile;
+  params["blocks"] = v.p.blocks, params["feature_threshold"] = v.p.feature_threshold;
+  params["sad_threshold"] = v.p.sad_threshold, params["hist_filter"] = v.p.hist_filter ? 1 : 0;
+  params["min_count"] = v.p.min_count, params["gyro_comp"] = 0;
+  j["params"] = params;
+  j["pairs"] = v.pairs.size();
+  j["pois_per_pair"] = poi_count(v.p);
+  j["files"] = {{"frames", "frames.bin"}, {"records", "records.bin"}, {"flow", "flow.bin"}};
+  j["layout"] = {
+      {"frames", "per pair: prev then next, W*H bytes each, rows packed"},
+      {"records", "per pair: pois_per_pair records of 32 bytes, SPEC 4, little-endian"},
+      {"flow", "per pair: u32 flow_x bits, u32 flow_y bits, i32 quality, i32 meancount, LE"}};
+  Json cases = Json::array();
+  for (std::size_t i = 0; i < v.pairs.size(); ++i) {
+    const FrameResult& r = v.answer.results[i];
+    cases.push_back({{"index", i},
+                     {"name", v.pairs[i].name},
+                     {"flow_x_bits", hex32(std::bit_cast<std::uint32_t>(r.flow_x))},
+                     {"flow_y_bits", hex32(std::bit_cast<std::uint32_t>(r.flow_y))},
+                     {"quality", r.quality},
+                     {"meancount", r.meancount}});
+  }
+  j["cases"] = cases;
+  return j;
+}
+
+std::string c_array(const std::string& name, const std::string& bytes) {
+  std::ostringstream s;
+  s << "const uint8_t " << name << "[" << bytes.size() << "] = {";
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+    s << (i % 16 ? " " : "\n    ") << static_cast<unsigned>(static_cast<unsigned char>(bytes[i]))
+      << ",";
+  s << "\n};\n";
+  return s.str();
+}
+
+const char* kCChecker =
+    R"(/* The freestanding checker of pxflow's test vectors (no libc): compares records made on the
+ * target (SPEC 4's 32 bytes each, little-endian) and the frame estimate with the expected ones. */
+#include "pxflow_vectors.h"
+
+long pxv_check_records(uint32_t pair, const uint8_t *records) {
+  const uint8_t *want = pxv_records + (unsigned long)pair * PXV_POIS * 32u;
+  for (unsigned long i = 0; i < PXV_POIS * 32ul; ++i)
+    if (records[i] != want[i]) return (long)i;
+  return -1;
+}
+
+int pxv_check_flow(uint32_t pair, uint32_t flow_x_bits, uint32_t flow_y_bits, int32_t quality) {
+  const uint8_t *f = pxv_flow + (unsigned long)pair * 16u;
+  const uint32_t x = (uint32_t)f[0] | (uint32_t)f[1] << 8 | (uint32_t)f[2] << 16 | (uint32_t)f[3] << 24;
+  const uint32_t y = (uint32_t)f[4] | (uint32_t)f[5] << 8 | (uint32_t)f[6] << 16 | (uint32_t)f[7] << 24;
+  const uint32_t q = (uint32_t)f[8] | (uint32_t)f[9] << 8 | (uint32_t)f[10] << 16 | (uint32_t)f[11] << 24;
+  return x == flow_x_bits && y == flow_y_bits && q == (uint32_t)quality ? 0 : 1;
+}
+)";
+
+int write_vectors(const VectorsArgs& a) {
+  const Vectors v = make_vectors(a);
+  std::string frames, flow;
+  for (const auto& op : v.pairs) {
+    frames.append(op.prev.begin(), op.prev.end());
+    frames.append(op.next.begin(), op.next.end());
+  }
+  for (const FrameResult& r : v.answer.results) {
+    put32(flow, std::bit_cast<std::uint32_t>(r.flow_x));
+    put32(flow, std::bit_cast<std::uint32_t>(r.flow_y));
+    put32(flow, static_cast<std::uint32_t>(r.quality));
+    put32(flow, static_cast<std::uint32_t>(r.meancount));
+  }
+  const std::string records = records_bytes(v.answer.records);
+  const std::string dir = a.out + "/";
+  write_output_file(dir + "manifest.json", manifest(v, a).dump(2) + "\n");
+  if (a.format == "bin") {
+    write_output_file(dir + "frames.bin", frames);
+    write_output_file(dir + "records.bin", records);
+    write_output_file(dir + "flow.bin", flow);
+  } else {
+    std::ostringstream h;
+    h << "/* pxflow test vectors (pxflow vectors --format c): " << v.pairs.size() << " pairs of "
+      << v.p.width << "x" << v.p.height << ", S=" << v.p.search_radius << " B=" << v.p.blocks
+      << ", seed " << a.seed << ". Layout: manifest.json. */\n#ifndef PXFLOW_VECTORS_H\n"
+      << "#define PXFLOW_VECTORS_H\n#include <stdint.h>\n#define PXV_PAIRS " << v.pairs.size()
+      << "u\n#define PXV_WIDTH " << v.p.width << "u\n#define PXV_HEIGHT " << v.p.height
+      << "u\n#define PXV_POIS " << poi_count(v.p) << "u\n#define PXV_S " << v.p.search_radius
+      << "u\n#define PXV_B " << v.p.blocks << "u\n#define PXV_FT " << v.p.feature_threshold
+      << "u\n#define PXV_VT " << v.p.sad_threshold << "u\n#define PXV_HF "
+      << (v.p.hist_filter ? 1 : 0) << "u\n#define PXV_MINCOUNT " << v.p.min_count << "u\n"
+      << "extern const uint8_t pxv_frames[], pxv_records[], pxv_flow[];\n"
+      << "long pxv_check_records(uint32_t pair, const uint8_t *records);\n"
+      << "int pxv_check_flow(uint32_t pair, uint32_t flow_x_bits, uint32_t flow_y_bits, "
+         "int32_t quality);\n#endif\n";
+    write_output_file(dir + "pxflow_vectors.h", h.str());
+    write_output_file(dir + "pxflow_vectors.c",
+                      "#include \"pxflow_vectors.h\"\n" + c_array("pxv_frames", frames) +
+                          c_array("pxv_records", records) + c_array("pxv_flow", flow));
+    write_output_file(dir + "pxflow_vectors_check.c", kCChecker);
+  }
+  std::printf("wrote %zu pairs (%dx%d, seed %llu) to %s\n", v.pairs.size(), v.p.width, v.p.height,
+              static_cast<unsigned long long>(a.seed), a.out.c_str());
+  return 0;
+}
+
+std::string read_file(const std::string& path, const char* what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(std::string(what) + ": " + path + ": cannot be read");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int verify_vectors(const VectorsArgs& a) {
+  const std::string dir = a.verify_dir + "/";
+  Json m;
+  try {
+    m = Json::parse(read_file(dir + "manifest.json", "vectors verify"));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("vectors verify: " + dir +
+                     "manifest.json: not a vectors manifest: " + e.what());
+  }
+  if (m.value("format", "") != "pxflow-vectors" || m.value("version", 0) != 1)
+    throw InputError("vectors verify: " + dir +
+                     "manifest.json: not a version-1 pxflow-vectors manifest");
+  Params p;
+  const Json& q = m["params"];
+  p.width = q["width"], p.height = q["height"], p.search_radius = q["search_radius"];
+  p.blocks = q["blocks"], p.feature_threshold = q["feature_threshold"];
+  p.sad_threshold = q["sad_threshold"], p.hist_filter = q["hist_filter"] == 1;
+  p.min_count = q["min_count"];
+  validate(p);
+  const std::size_t pairs = m["pairs"], per = poi_count(p);
+  const std::string want_bytes = read_file(dir + "records.bin", "vectors verify");
+  const std::string got_bytes = read_file(a.verify_records, "vectors verify");
+  if (want_bytes.size() != pairs * per * 32)
+    throw InputError("vectors verify: " + dir +
+                     "records.bin: " + std::to_string(want_bytes.size()) +
+                     " bytes, the manifest says " + std::to_string(pairs * per * 32));
+  if (got_bytes.size() != want_bytes.size())
+    throw InputError("vectors verify: " + a.verify_records + ": " +
+                     std::to_string(got_bytes.size()) + " bytes: allowed " +
+                     std::to_string(want_bytes.size()) + " (" + std::to_string(pairs) +
+                     " pairs x " + std::to_string(per) + " records x 32 bytes, see manifest.json)");
+  ReferenceAnswer want;
+  std::vector<PoiRecord> got;
+  for (std::size_t i = 0; i < pairs * per; ++i) {
+    want.records.push_back(
+        dut::decode_record(reinterpret_cast<const std::uint8_t*>(want_bytes.data()) + 32 * i));
+    got.push_back(
+        dut::decode_record(reinterpret_cast<const std::uint8_t*>(got_bytes.data()) + 32 * i));
+  }
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < pairs; ++i) {
+    want.results.push_back(
+        estimate_flow(std::span<const PoiRecord>(want.records).subspan(i * per, per), p));
+    names.push_back(m["cases"][i].value("name", "pair " + std::to_string(i)));
+  }
+  const Comparison c =
+      compare_with_reference({a.verify_records, "vectors", a.verify_dir}, names, p, want, got, 20);
+  for (const std::string& line : c.lines) std::printf("%s\n", line.c_str());
+  std::printf("%zu pairs: %s\n", pairs, c.ok() ? "all records and flow bits equal" : "MISMATCH");
+  return c.ok() ? 0 : 1;
+}
+
+Command add_vectors_command(CLI::App& app) {
+  auto a = std::make_shared<VectorsArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "vectors",
+      "Write test vectors (inputs, parameters, expected records and flow bits) for "
+      "on-target tests; `vectors verify DIR RECORDS` checks records made elsewhere");
+  sub->add_option("--out", a->out, "Folder to write the vectors into (must exist)");
+  a->problem.add_to(*sub);
+  sub->add_option("--cases", a->cases, "Random pairs (seeded)")->check(CLI::Range(1, 100000));
+  sub->add_option("--seed", a->seed, "Seed of the first pair; pair i has seed + i");
+  sub->add_option("--format", a->format, "bin (files + manifest.json) or c (C arrays + checker)")
+      ->check(CLI::IsMember({"bin", "c"}));
+  CLI::App* verify = sub->add_subcommand("verify",
+                                         "Compare RECORDS (a file of 32-byte records, "
+                                         "all pairs in order) with the vectors in DIR");
+  verify->add_option("DIR", a->verify_dir, "The vectors' folder")->required();
+  verify->add_option("RECORDS", a->verify_records, "The records to check")->required();
+  return {sub, [a, verify] {
+            if (verify->parsed()) return verify_vectors(*a);
+            if (a->out.empty())
+              throw InputError(
+                  "vectors: --out DIR is required: the folder to write into (see "
+                  "pxflow vectors --help)");
+            for (const char* f : {"manifest.json", "frames.bin"})
+              check_output_path("--out", a->out + "/" + f);
+            return write_vectors(*a);
+          }};
+}
+
+}  // namespace
+
+CliExtension dut_cli_extension() { return {"dut", add_vectors_command, "", "", {}}; }
+
+}  // namespace pxflow::cli

@@ -1,0 +1,75 @@
+// The reference device through every transport, the small (20 KiB) device, and the --dut spec's
+// errors, by running pxflow as a user does.
+#include <catch2/catch.hpp>
+
+#include "dut_test_util.hpp"
+
+using namespace pxflow::test;
+
+namespace {
+
+std::vector<std::string> check_args(const std::string& spec, const std::string& cases = "40") {
+  return {"check",     "--dut", spec,      "--backends", "ref-original,d",
+          "--require", "d",     "--cases", cases};
+}
+
+}  // namespace
+
+TEST_CASE("the reference device passes over exec: and the row is named by --dut", "[dut]") {
+  const auto t = timed_pxflow(check_args(std::string("d=exec:") + DUT_REF));
+  INFO(t.r.out << t.r.err);
+  CHECK(t.r.exit_code == 0);
+  CHECK_THAT(t.r.out, Catch::Contains("d ") && Catch::Contains("passed"));
+  CHECK_THAT(t.r.out, Catch::Contains("1 passed, 0 failed"));
+}
+
+TEST_CASE("the reference device passes over tcp: on loopback", "[dut]") {
+  BesideDevice dev({DUT_REF, "--tcp", "0"});
+  REQUIRE_FALSE(dev.first_line().empty());
+  const auto t = timed_pxflow(check_args("d=tcp:127.0.0.1:" + dev.first_line()));
+  INFO(t.r.out << t.r.err);
+  CHECK(t.r.exit_code == 0);
+  CHECK_THAT(t.r.out, Catch::Contains("1 passed, 0 failed"));
+  CHECK(dev.wait_exit(5) == 0);  // the device ends when pxflow hangs up
+}
+
+TEST_CASE("the reference device passes over serial: on a pseudo-terminal", "[dut]") {
+  BesideDevice dev({DUT_REF, "--pty"});
+  REQUIRE_THAT(dev.first_line(), Catch::StartsWith("/dev/"));
+  const auto t = timed_pxflow(check_args("d=serial:" + dev.first_line() + ",115200"));
+  INFO(t.r.out << t.r.err);
+  CHECK(t.r.exit_code == 0);
+  CHECK_THAT(t.r.out, Catch::Contains("1 passed, 0 failed"));
+}
+
+TEST_CASE("a 20 KiB device takes 64x64 pairs in chunks and says n/a to larger frames", "[dut]") {
+  const auto t = timed_pxflow({"check", "--dut", std::string("d=exec:") + DUT_SMALL, "--backends",
+                               "ref-original,d", "--require", "d", "--generated-only"});
+  INFO(t.r.out << t.r.err);
+  CHECK(t.r.exit_code == 0);
+  // 8 cases at 64x64 passed, the 8 at 320x240 and 640x480 are n/a (HELLO's max_pixels 4096).
+  CHECK_THAT(t.r.out, Catch::Matches("(.|\n)*d +passed +8 +238 +8 (.|\n)*"));
+}
+
+TEST_CASE("pxflow backends lists a --dut row and says why it cannot run", "[dut]") {
+  const auto ok = run_pxflow({"backends", "--dut", std::string("d=exec:") + DUT_REF});
+  CHECK(ok.exit_code == 0);
+  CHECK_THAT(ok.out, Catch::Matches("(.|\n)*\nd +available (.|\n)*"));
+  const auto missing = run_pxflow({"backends", "--dut", "d=exec:/nonexistent/device"});
+  CHECK_THAT(missing.out, Catch::Contains("cannot start /nonexistent/device"));
+}
+
+TEST_CASE("a bad --dut spec is one line and exit 2", "[dut]") {
+  for (const std::string spec :
+       {"noequals", "d=", "d=usb:foo", "d=exec:", "d=tcp:localhost", "d=tcp:host:99999",
+        "d=serial:/dev/ttyS0,12345", "ref-original=exec:x", "bad name=exec:x"}) {
+    INFO(spec);
+    const auto r = run_pxflow({"check", "--dut", spec, "--backends", "ref-original"});
+    CHECK(r.exit_code == 2);
+    CHECK(r.err_lines() == 1);
+    CHECK_THAT(r.err, Catch::StartsWith("pxflow: error: --dut"));
+  }
+  const auto t = run_pxflow({"check", "--dut-timeout", "0", "--backends", "ref-original"});
+  CHECK(t.exit_code == 2);
+  CHECK_THAT(t.err, Catch::Contains("--dut-timeout"));
+}
