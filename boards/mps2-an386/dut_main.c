@@ -82,6 +82,13 @@ uint32_t pxdut_port_cycles(void) {
 
 uint32_t pxdut_port_cycles_hz(void) { return 1000000000u >> M4_ICOUNT_SHIFT; }
 
+static m4_flow_params m4_params(const pxdut_params *p) {
+  const m4_flow_params q = {
+      p->width,         p->height,      p->search_radius, p->blocks, p->feature_threshold,
+      p->sad_threshold, p->hist_filter, p->min_count};
+  return q;
+}
+
 void pxdut_port_kernel(const pxdut_params *p, const uint8_t *prev, const uint8_t *next,
                        pxdut_record *out) {
 #if M4_DUT_FAULT == 2
@@ -89,11 +96,25 @@ void pxdut_port_kernel(const pxdut_params *p, const uint8_t *prev, const uint8_t
 #elif M4_DUT_FAULT == 3
   for (;;) __asm__ volatile("" ::: "memory");
 #endif
-  const m4_flow_params q = {
-      p->width,         p->height,      p->search_radius, p->blocks, p->feature_threshold,
-      p->sad_threshold, p->hist_filter, p->min_count};
+  const m4_flow_params q = m4_params(p);
   /* Same layout, 32 bytes (m4_flow.h, pxdut_types.h); built with -fno-strict-aliasing. */
   m4_flow_frame(&q, prev, next, (m4_flow_record *)out);
+}
+
+/* The estimate the engine times and sends in RESULT is this kernel's own (m4_flow_estimate, on
+ * the FPU): the firmware is linked with -Wl,--wrap=pxdut_estimate_flow, so the engine's call
+ * lands here instead of in dut/'s portable one. The host compares its bits with its own. */
+void __wrap_pxdut_estimate_flow(const pxdut_record *records, uint32_t pois, const pxdut_params *p,
+                                pxdut_estimate *out);
+void __wrap_pxdut_estimate_flow(const pxdut_record *records, uint32_t pois, const pxdut_params *p,
+                                pxdut_estimate *out) {
+  const m4_flow_params q = m4_params(p);
+  m4_flow_result r;
+  m4_flow_estimate((const m4_flow_record *)records, pois, &q, &r);
+  out->flow_x = r.flow_x;
+  out->flow_y = r.flow_y;
+  out->quality = r.quality;
+  out->meancount = r.meancount;
 }
 
 typedef char record_layouts_agree[sizeof(pxdut_record) == sizeof(m4_flow_record) ? 1 : -1];

@@ -1,4 +1,5 @@
-# pxflow_m4_firmware(<name> SOURCES <files...> [INCLUDE_DIRS ...] [DEFINITIONS ...] [STDIO])
+# pxflow_m4_firmware(<name> SOURCES <files...> [INCLUDE_DIRS ...] [DEFINITIONS ...]
+#                    [LINK_OPTIONS ...] [STDIO])
 # Builds <name>.elf for QEMU's mps2-an386 (Cortex-M4F) with Debian's arm-none-eabi-gcc: the
 # board's start-up code, UART, SysTick and semihosted exit (boards/mps2-an386), newlib-nano for
 # memcpy/memset, and with STDIO newlib's rdimon (semihosted printf) for the self-tests. The
@@ -39,7 +40,7 @@ set(PXFLOW_M4_BOARD_SOURCES ${PXFLOW_M4_BOARD_DIR}/startup.c ${PXFLOW_M4_BOARD_D
     ${PXFLOW_M4_BOARD_DIR}/uart_cmsdk.c ${PXFLOW_M4_BOARD_DIR}/systick.c)
 
 function(pxflow_m4_firmware name)
-  cmake_parse_arguments(ARG "STDIO" "" "SOURCES;INCLUDE_DIRS;DEFINITIONS;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "STDIO" "" "SOURCES;INCLUDE_DIRS;DEFINITIONS;DEPENDS;LINK_OPTIONS" ${ARGN})
   if(NOT PXFLOW_M4_HAVE_TOOLCHAIN)
     return()
   endif()
@@ -69,7 +70,7 @@ function(pxflow_m4_firmware name)
   add_custom_command(
     OUTPUT ${elf}
     COMMAND ${PXFLOW_M4_CC} ${cflags} ${defs} ${includes} ${specs} -nostartfiles
-            -T ${PXFLOW_M4_BOARD_DIR}/mps2_an386.ld -Wl,--gc-sections
+            -T ${PXFLOW_M4_BOARD_DIR}/mps2_an386.ld -Wl,--gc-sections ${ARG_LINK_OPTIONS}
             ${PXFLOW_M4_BOARD_SOURCES} ${PXFLOW_M4_KERNEL_SOURCES} ${sources} -o ${elf}
     DEPENDS ${sources} ${PXFLOW_M4_BOARD_SOURCES} ${PXFLOW_M4_KERNEL_SOURCES}
             ${PXFLOW_M4_KERNEL_HEADERS} ${PXFLOW_M4_BOARD_DIR}/board.h
