@@ -10,7 +10,8 @@
  *
  * M4_DUT_FAULT (0 for the real firmware) builds the fault firmwares of tests/m4: 1 never
  * answers, 2 exits (QEMU ends) in the middle of the first RUN, 3 hangs in the first RUN, 4 sends
- * garbage instead of replies, 5 answers HELLO with protocol version 2. */
+ * garbage instead of replies, 5 answers HELLO with protocol version 2, 6 sends an estimate whose
+ * flow_x is one unit in the last place off. */
 #include <stdint.h>
 
 #include "board.h"
@@ -115,6 +116,16 @@ void __wrap_pxdut_estimate_flow(const pxdut_record *records, uint32_t pois, cons
   out->flow_y = r.flow_y;
   out->quality = r.quality;
   out->meancount = r.meancount;
+#if M4_DUT_FAULT == 6
+  if (r.meancount > (int32_t)p->min_count) { /* flow_x one unit in the last place off */
+    union {
+      float f;
+      uint32_t u;
+    } bits = {out->flow_x};
+    bits.u ^= 1u;
+    out->flow_x = bits.f;
+  }
+#endif
 }
 
 typedef char record_layouts_agree[sizeof(pxdut_record) == sizeof(m4_flow_record) ? 1 : -1];

@@ -2,7 +2,7 @@
 // UART delivers garbage, the firmware speaks another protocol version, pxflow is interrupted.
 // Each gives one clear line and a defined exit code within a bounded time, and leaves no QEMU
 // process behind (pgrep on the firmware's path, which is unique to this build folder). The fault
-// firmwares are boards/mps2-an386/dut_main.c built with M4_DUT_FAULT = 1..5 (tests/m4).
+// firmwares are boards/mps2-an386/dut_main.c built with M4_DUT_FAULT = 1..6 (tests/m4).
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -177,6 +177,17 @@ TEST_CASE("m4-qemu: firmware for another protocol version: skipped with both ver
   CHECK(t.result.exit_code == 1);
   CHECK(mentions(t.result, "protocol version 2, this pxflow speaks 1"));
   CHECK(t.seconds < 20);
+  require_no_qemu(fw);
+}
+
+TEST_CASE("m4-qemu: a device estimate one ULP off the host's: the case fails naming both, exit 1",
+          "[m4][fault]") {
+  const std::string fw = fault_firmware(6);
+  const Timed t = check_with(fw, "2");
+  INFO(t.result.out << t.result.err);
+  CHECK(t.result.exit_code == 1);
+  CHECK(mentions(t.result, "differs from estimate_flow of its records"));
+  CHECK(t.seconds < 60);
   require_no_qemu(fw);
 }
 
