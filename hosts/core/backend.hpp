@@ -44,6 +44,9 @@ class Backend {
     std::string source;  // e.g. "opencl-event-profiling", "vulkan-timestamps", "gap8-model-cycles"
     double ns = 0;
     std::optional<double> cycles;  // when the clock counts cycles
+    // When the clock counts instructions instead (QEMU -icount: the m4-qemu row); never
+    // reported as cycles.
+    std::optional<double> instructions;
     // A deterministic cycle model (the GAP8 model): one run is the measurement, and the host
     // time is the simulation's speed, never the backend's throughput.
     bool exact = false;

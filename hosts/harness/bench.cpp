@@ -114,6 +114,7 @@ class Bench {
       BenchRow dev = base;
       dev.source = d->source;
       fill(dev, {d->ns / pt.batch}, d->cycles ? *d->cycles / pt.batch : 0);
+      if (d->instructions) dev.instructions_per_frame = *d->instructions / pt.batch;
       char sim[128];
       std::snprintf(sim, sizeof sim, "one checked run; host simulation %.1f pairs/s",
                     pt.batch / first);
@@ -208,6 +209,8 @@ class Bench {
     out_ << line;
     if (r.cycles_per_frame > 0)
       out_ << "  " << static_cast<long>(r.cycles_per_frame) << " cycles/frame";
+    if (r.instructions_per_frame > 0)
+      out_ << "  " << static_cast<long>(r.instructions_per_frame) << " instructions/frame";
     if (!r.note.empty()) out_ << "  (" << r.note << ")";
     out_ << "\n" << std::flush;
     report.rows.push_back(r);
@@ -329,6 +332,7 @@ Json bench_json(const BenchReport& r) {
            {"frames_per_s", b.frames_per_s},
            {"ns_per_poi", b.ns_per_poi}};
     if (b.cycles_per_frame > 0) j["cycles_per_frame"] = b.cycles_per_frame;
+    if (b.instructions_per_frame > 0) j["instructions_per_frame"] = b.instructions_per_frame;
     if (b.speedup_vs_reference > 0) j["speedup_vs_ref_original"] = b.speedup_vs_reference;
     if (b.bound_ratio > 0) j["bound_ratio"] = b.bound_ratio;
     rows.push_back(std::move(j));

@@ -35,7 +35,8 @@ struct BenchRow {
   long pois_per_frame = 0;
   double median_ns_per_frame = 0, min_ns_per_frame = 0, max_ns_per_frame = 0;
   double frames_per_s = 0, ns_per_poi = 0;
-  double cycles_per_frame = 0;  // 0 when the source has no cycle clock
+  double cycles_per_frame = 0;        // 0 when the source has no cycle clock
+  double instructions_per_frame = 0;  // 0 when the source does not count instructions
   double bound_ratio = 0;  // cycles per frame / the bound's (BenchBound, docs/cpu-simd.md); 0: none
   double speedup_vs_reference = 0;  // vs ref-original, same point and source; 0 when not measured
 };

@@ -1,0 +1,145 @@
+/* The Cortex-M4 kernel as a device under test (docs/dut-protocol.md): the dut/ engine with this
+ * board's UART as the link and SysTick as the counter, the kernel of kernels/cortex-m4 as the
+ * kernel hook. `pxflow check --backends m4-qemu` runs it under qemu-system-arm (hosts/m4qemu).
+ *
+ * The counter: SysTick runs on the 25 MHz processor clock of the board model. Under QEMU's
+ * -icount shift=N each instruction advances virtual time by 2^N ns, so one SysTick tick is
+ * 40 / 2^N instructions: with N = 3 (M4_ICOUNT_SHIFT, the value hosts/m4qemu passes) exactly 5.
+ * The counter hook returns ticks * 5, an instruction count at 125 M per virtual second, and HELLO
+ * names the clock "qemu-icount-instructions": it counts instructions, never cycles.
+ *
+ * M4_DUT_FAULT (0 for the real firmware) builds the fault firmwares of tests/m4: 1 never
+ * answers, 2 exits (QEMU ends) in the middle of the first RUN, 3 hangs in the first RUN, 4 sends
+ * garbage instead of replies, 5 answers HELLO with protocol version 2, 6 sends an estimate whose
+ * flow_x is one unit in the last place off. */
+#include <stdint.h>
+
+#include "board.h"
+#include "m4_flow.h"
+#include "pxdut.h"
+
+#ifndef M4_ICOUNT_SHIFT
+#define M4_ICOUNT_SHIFT 3
+#endif
+#if M4_ICOUNT_SHIFT != 3
+#error "the instruction count is exact only for -icount shift=3 (40 ns per tick / 8 ns)"
+#endif
+#define M4_INSTRUCTIONS_PER_TICK 5u /* 40 ns per 25 MHz tick / 8 ns per instruction */
+
+#ifndef M4_DUT_FAULT
+#define M4_DUT_FAULT 0
+#endif
+#ifndef M4_DUT_BUILD
+#define M4_DUT_BUILD "unknown"
+#endif
+
+int pxdut_port_read(uint8_t *buf, int max) {
+  return (int)board_uart_read(buf, (size_t)max); /* waits for at least one byte */
+}
+
+#if M4_DUT_FAULT == 4
+/* Garbage: every reply replaced by as many bytes of a fixed pseudo-random sequence, none 0x00,
+ * so no frame ever ends (the host must give up by its timeout, not hang). */
+int pxdut_port_write(const uint8_t *buf, int len) {
+  static uint32_t x = 12345u;
+  (void)buf;
+  for (int i = 0; i < len; ++i) {
+    x ^= x << 13, x ^= x >> 17, x ^= x << 5;
+    const uint8_t b = (uint8_t)(x | 1u);
+    board_uart_write(&b, 1);
+  }
+  return 0;
+}
+#elif M4_DUT_FAULT == 5
+/* The HELLO reply (type 0x81) re-encoded with version 2 and a fresh CRC. */
+int pxdut_port_write(const uint8_t *buf, int len) {
+  static uint8_t packet[PXDUT_MAX_PACKET + 8], out[PXDUT_MAX_PACKET + 16];
+  int start = 0;
+  while (start < len && buf[start] == 0) board_uart_write(&buf[start++], 1);
+  const int32_t n =
+      len - start > 1 ? pxdut_cobs_decode(buf + start, (uint32_t)(len - start - 1), packet) : -1;
+  if (n >= 8 && packet[0] == 0x81u) {
+    packet[2] = 2u, packet[3] = 0u;
+    const uint32_t crc = pxdut_crc32(packet, (uint32_t)n - 4u);
+    for (int k = 0; k < 4; ++k) packet[n - 4 + k] = (uint8_t)(crc >> (8 * k));
+    const uint32_t m = pxdut_cobs_encode(packet, (uint32_t)n, out);
+    out[m] = 0u;
+    board_uart_write(out, m + 1u);
+    return 0;
+  }
+  board_uart_write(buf + start, (size_t)(len - start));
+  return 0;
+}
+#else
+int pxdut_port_write(const uint8_t *buf, int len) {
+  board_uart_write(buf, (size_t)len);
+  return 0;
+}
+#endif
+
+uint32_t pxdut_port_cycles(void) {
+  return (uint32_t)(board_systick_ticks() * M4_INSTRUCTIONS_PER_TICK); /* mod 2^32 */
+}
+
+uint32_t pxdut_port_cycles_hz(void) { return 1000000000u >> M4_ICOUNT_SHIFT; }
+
+static m4_flow_params m4_params(const pxdut_params *p) {
+  const m4_flow_params q = {
+      p->width,         p->height,      p->search_radius, p->blocks, p->feature_threshold,
+      p->sad_threshold, p->hist_filter, p->min_count};
+  return q;
+}
+
+void pxdut_port_kernel(const pxdut_params *p, const uint8_t *prev, const uint8_t *next,
+                       pxdut_record *out) {
+#if M4_DUT_FAULT == 2
+  board_exit(3);
+#elif M4_DUT_FAULT == 3
+  for (;;) __asm__ volatile("" ::: "memory");
+#endif
+  const m4_flow_params q = m4_params(p);
+  /* Same layout, 32 bytes (m4_flow.h, pxdut_types.h); built with -fno-strict-aliasing. */
+  m4_flow_frame(&q, prev, next, (m4_flow_record *)out);
+}
+
+/* The estimate the engine times and sends in RESULT is this kernel's own (m4_flow_estimate, on
+ * the FPU): the firmware is linked with -Wl,--wrap=pxdut_estimate_flow, so the engine's call
+ * lands here instead of in dut/'s portable one. The host compares its bits with its own. */
+void __wrap_pxdut_estimate_flow(const pxdut_record *records, uint32_t pois, const pxdut_params *p,
+                                pxdut_estimate *out);
+void __wrap_pxdut_estimate_flow(const pxdut_record *records, uint32_t pois, const pxdut_params *p,
+                                pxdut_estimate *out) {
+  const m4_flow_params q = m4_params(p);
+  m4_flow_result r;
+  m4_flow_estimate((const m4_flow_record *)records, pois, &q, &r);
+  out->flow_x = r.flow_x;
+  out->flow_y = r.flow_y;
+  out->quality = r.quality;
+  out->meancount = r.meancount;
+#if M4_DUT_FAULT == 6
+  if (r.meancount > (int32_t)p->min_count) { /* flow_x one unit in the last place off */
+    union {
+      float f;
+      uint32_t u;
+    } bits = {out->flow_x};
+    bits.u ^= 1u;
+    out->flow_x = bits.f;
+  }
+#endif
+}
+
+typedef char record_layouts_agree[sizeof(pxdut_record) == sizeof(m4_flow_record) ? 1 : -1];
+
+int main(void) {
+  /* SysTick first: besides being the counter, it keeps a timer running, without which QEMU's
+   * -icount never wakes a core sleeping in WFI for the UART (docs/cortex-m4.md). */
+  board_systick_init();
+  board_uart_init();
+#if M4_DUT_FAULT == 1
+  for (;;) __asm__ volatile("wfi");
+#endif
+  static const pxdut_device dev = {"cortex-m4-dsp (mps2-an386)", M4_DUT_BUILD,
+                                   "qemu-icount-instructions"};
+  pxdut_serve(&dev);
+  return 0;
+}

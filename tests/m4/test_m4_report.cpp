@@ -1,0 +1,72 @@
+// The m4-qemu row's timing, honestly labelled: the bench reports instructions per frame (never
+// cycles), the count is the same from run to run under -icount to within the counter's tick (5
+// instructions: the tick's phase at the start of a run depends on how long the core slept in
+// real time), and the report's Cortex-M4 section puts it beside the paper's estimate.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "run_program.hpp"
+
+namespace {
+
+using pxflow::test::run_pxflow;
+
+// The m4-qemu line of a bench run.
+std::string m4_line(const std::string& out) {
+  const std::size_t at = out.find("  m4-qemu ");
+  REQUIRE(at != std::string::npos);
+  return out.substr(at, out.find('\n', at) - at);
+}
+
+}  // namespace
+
+TEST_CASE("m4-qemu bench: instructions per frame, never cycles, the same every run",
+          "[m4][timing]") {
+  pxflow::test::TempDir dir;
+  const auto a = run_pxflow({"bench", "--backends", "m4-qemu", "--json", dir.path("a.json")});
+  const auto b = run_pxflow({"bench", "--backends", "m4-qemu", "--json", dir.path("b.json")});
+  INFO(a.out << a.err);
+  REQUIRE(a.exit_code == 0);
+  REQUIRE(b.exit_code == 0);
+  const std::string line = m4_line(a.out);
+  CHECK(line.find("qemu-icount-instructions") != std::string::npos);
+  CHECK(line.find("instructions/frame") != std::string::npos);
+  CHECK(line.find("cycles") == std::string::npos);
+  std::vector<double> counts;
+  for (const char* file : {"a.json", "b.json"}) {
+    const auto j = nlohmann::json::parse(pxflow::test::slurp(dir.path(file)));
+    for (const auto& row : j["rows"])
+      if (row["backend"] == "m4-qemu" && row.contains("instructions_per_frame")) {
+        CHECK_FALSE(row.contains("cycles_per_frame"));
+        counts.push_back(row["instructions_per_frame"].get<double>());
+      }
+  }
+  REQUIRE(counts.size() == 2);
+  // at least the 91,520 SAD instructions of a fully accepted frame, fewer than 2 million
+  CHECK(counts[0] > 91520);
+  CHECK(counts[0] < 2e6);
+  CHECK(std::abs(counts[0] - counts[1]) <= 5);  // one tick of the 25 MHz SysTick
+}
+
+TEST_CASE("m4-qemu report: the Cortex-M4 section beside the paper's estimate", "[m4][timing]") {
+  pxflow::test::TempDir dir;
+  REQUIRE(run_pxflow(
+              {"check", "--backends", "m4-qemu", "--cases", "2", "--json", dir.path("check.json")})
+              .exit_code == 0);
+  REQUIRE(
+      run_pxflow({"bench", "--backends", "m4-qemu", "--json", dir.path("bench.json")}).exit_code ==
+      0);
+  const auto r = run_pxflow({"report", "--out", dir.path("report"), "--check-json",
+                             dir.path("check.json"), "--bench-json", dir.path("bench.json"),
+                             "--backends", "m4-qemu", "--no-accuracy"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::string md = pxflow::test::slurp(dir.path("report/report.md"));
+  CHECK(md.find("## Cortex-M4 (m4-qemu) beside the ISCAS 2022 paper") != std::string::npos);
+  CHECK(md.find("| USAD8/USADA8 per frame | 91520 | 91520 |") != std::string::npos);
+  CHECK(md.find("| cycles attributed to those SADs | - | 22880 |") != std::string::npos);
+  CHECK(md.find("| 648560 |") != std::string::npos);
+}
