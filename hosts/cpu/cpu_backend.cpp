@@ -47,6 +47,11 @@ class CpuBackend final : public Backend {
     for (const OpCounts& c : item_counts) counts += c;
   }
 
+  // The ISA row that runs (what `cpu` dispatched to) and how many host threads run it.
+  Description describe() const override {
+    return {std::string(kernel_.name) + ", " + std::to_string(pool_.size()) + " threads", {}, {}};
+  }
+
  private:
   // Few large frames would leave cores idle (and one late-waking worker costs a whole frame):
   // split each pair into bands of grid rows until there are about four items per worker.
