@@ -35,12 +35,10 @@ struct ReportArgs {
   std::string device;
   bool quick = false, no_accuracy = false;
   std::vector<std::pair<CliExtension, bool>> extensions;  // each with its skip flag's value
-  std::string command;  // as run (command_line.hpp)
+  std::string command;                                    // as run (command_line.hpp)
 
   // The backend of the accuracy table and the flow pictures: --backend, else the default one.
-  std::string picture_backend() const {
-    return backend.empty() ? default_backend().name : backend;
-  }
+  std::string picture_backend() const { return backend.empty() ? default_backend().name : backend; }
   BackendOptions backend_options() const { return {threads, device}; }
   // " --threads N --device D" as given, for the commands the report records.
   std::string shared_flags() const {
@@ -180,9 +178,10 @@ void describe_backends(ReportInputs& in, const ReportArgs& a) {
   if (!in.bench.is_null() && in.bench.contains("backends") && in.bench["backends"].is_array() &&
       !in.bench["backends"].empty()) {
     in.backends = in.bench["backends"];
-    in.backends_source = "As the bench opened each backend (all threads). Device and driver "
-                         "strings come from the backends themselves (OpenCL platform and driver "
-                         "versions, Vulkan driver properties, the GAP8 model's source trees).";
+    in.backends_source =
+        "As the bench opened each backend (all threads). Device and driver "
+        "strings come from the backends themselves (OpenCL platform and driver "
+        "versions, Vulkan driver properties, the GAP8 model's source trees).";
     return;
   }
   std::vector<std::string> names = split_list(a.backends);
@@ -193,8 +192,9 @@ void describe_backends(ReportInputs& in, const ReportArgs& a) {
     OpenedBackend opened = open_backend(row, a.backend_options());
     if (opened.backend) in.backends.push_back(describe_backend(row.name, *opened.backend));
   }
-  in.backends_source = "The bench results do not describe the backends, so this report opened "
-                       "the rows it knows on this machine to describe them.";
+  in.backends_source =
+      "The bench results do not describe the backends, so this report opened "
+      "the rows it knows on this machine to describe them.";
 }
 
 int run_report(const ReportArgs& a) {
@@ -250,14 +250,12 @@ int run_report(const ReportArgs& a) {
       });
       o.min_seconds = 0.05;
     }
-    in.bench_command = "pxflow bench" + backends +
-                       (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
-                       (a.threads ? " (default sweeps at --threads " + std::to_string(a.threads) +
-                                        ")"
-                                  : "") +
-                       (a.quick ? " (quick subset: batch <= 256, no radius/thread sweep, "
-                                  "--min-time 0.05)"
-                                : "");
+    in.bench_command =
+        "pxflow bench" + backends + (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
+        (a.threads ? " (default sweeps at --threads " + std::to_string(a.threads) + ")" : "") +
+        (a.quick ? " (quick subset: batch <= 256, no radius/thread sweep, "
+                   "--min-time 0.05)"
+                 : "");
     std::cout << "== " << in.bench_command << "\n";
     BenchReport r = run_bench(o, std::cout);
     r.command = in.bench_command;

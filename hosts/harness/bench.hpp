@@ -38,7 +38,7 @@ struct BenchRow {
   double cycles_per_frame = 0;  // 0 when the source has no cycle clock
   double bound_ratio = 0;  // cycles per frame / the bound's (BenchBound, docs/cpu-simd.md); 0: none
   double speedup_vs_reference = 0;  // vs ref-original, same point and source; 0 when not measured
-  bool exact_clock = false;  // timed by a deterministic device clock (DeviceTime::exact)
+  bool exact_clock = false;         // timed by a deterministic device clock (DeviceTime::exact)
 };
 
 struct BenchReport {
@@ -46,7 +46,7 @@ struct BenchReport {
   // applies to, and its bytes compared per cycle of that clock.
   std::string bound_name, bound_clock;
   double bound_bytes_per_cycle = 0;
-  std::vector<BenchRow> rows;  // point by point, backends in registry order
+  std::vector<BenchRow> rows;        // point by point, backends in registry order
   std::vector<std::string> skipped;  // "backend: reason" lines
   // What each opened backend ran (provenance.hpp: describe_backend), in registry order.
   Json backends = Json::array();

@@ -177,10 +177,26 @@ std::string bench_csv(const Json& bench) {
       i = j;
     }
   }
-  return csv({"backend", "sweep", "profile", "width", "height", "search_radius", "batch",
-              "threads", "source", "exact_clock", "repeats", "median_ns_per_frame",
-              "min_ns_per_frame", "max_ns_per_frame", "frames_per_s", "ns_per_poi",
-              "cycles_per_frame", "bound_ratio", "speedup_vs_ref_original", "note"},
+  return csv({"backend",
+              "sweep",
+              "profile",
+              "width",
+              "height",
+              "search_radius",
+              "batch",
+              "threads",
+              "source",
+              "exact_clock",
+              "repeats",
+              "median_ns_per_frame",
+              "min_ns_per_frame",
+              "max_ns_per_frame",
+              "frames_per_s",
+              "ns_per_poi",
+              "cycles_per_frame",
+              "bound_ratio",
+              "speedup_vs_ref_original",
+              "note"},
              rows);
 }
 
@@ -189,8 +205,8 @@ Json section_json(const Section& s) {
   for (const auto& c : s.charts) charts.push_back(report::chart_json(c));
   Json pictures = Json::array();
   for (const auto& p : s.pictures) pictures.push_back({{"caption", p.caption}, {"file", p.file}});
-  return {{"key", s.key},       {"title", s.title},   {"text", s.text},        {"header", s.header},
-          {"rows", s.rows},     {"charts", charts},   {"pictures", pictures}};
+  return {{"key", s.key},   {"title", s.title}, {"text", s.text},      {"header", s.header},
+          {"rows", s.rows}, {"charts", charts}, {"pictures", pictures}};
 }
 
 void write_file(const std::filesystem::path& p, const std::string& text) {
@@ -207,7 +223,7 @@ std::size_t registry_rank(const std::string& backend) {
 }
 
 const std::vector<std::string>& report_file_names() {
-  static const std::vector<std::string> names{"report.md",   "report.html",  "results.json",
+  static const std::vector<std::string> names{"report.md",   "report.html",     "results.json",
                                               "results.csv", "conformance.csv", "accuracy.csv"};
   return names;
 }
@@ -253,26 +269,25 @@ void write_report(const std::string& out_dir, const ReportInputs& in) {
                 {"accuracy", in.accuracy_command.empty() ? Json() : Json(in.accuracy_command)}};
   Json pictures = Json::array();
   for (const auto& p : in.pictures) pictures.push_back({{"caption", p.caption}, {"file", p.file}});
-  Json results{
-      {"schema", "pxflow-report"},
-      {"schema_version", 1},
-      {"provenance",
-       {{"build", build},
-        {"machine", machine},
-        {"backends", in.backends},
-        {"backends_source", in.backends_source}}},
-      {"commands", nullptr},
-      {"check", in.check},
-      {"bench", in.bench},
-      {"accuracy", in.accuracy.empty() ? Json()
-                                       : Json{{"command", in.accuracy_command},
-                                              {"rows", in.accuracy_rows}}},
-      {"pictures", pictures}};
+  Json results{{"schema", "pxflow-report"},
+               {"schema_version", 1},
+               {"provenance",
+                {{"build", build},
+                 {"machine", machine},
+                 {"backends", in.backends},
+                 {"backends_source", in.backends_source}}},
+               {"commands", nullptr},
+               {"check", in.check},
+               {"bench", in.bench},
+               {"accuracy", in.accuracy.empty() ? Json()
+                                                : Json{{"command", in.accuracy_command},
+                                                       {"rows", in.accuracy_rows}}},
+               {"pictures", pictures}};
   for (const auto& s : in.sections) {
     for (std::size_t i = 0; i < s.tables.size(); ++i) {
       const auto& t = s.tables[i];
-      secs.push_back({s.key + "-" + std::to_string(i + 1), t.title, t.text, t.header, t.rows,
-                      t.charts, {}});
+      secs.push_back(
+          {s.key + "-" + std::to_string(i + 1), t.title, t.text, t.header, t.rows, t.charts, {}});
     }
     commands[s.key] = s.command;
     results[s.key] = s.data;
@@ -285,11 +300,11 @@ void write_report(const std::string& out_dir, const ReportInputs& in) {
   write_file(dir / "report.html", render_html(secs, dir));
   write_file(dir / "results.json", results.dump(2) + "\n");
   write_file(dir / "results.csv", bench_csv(in.bench));
-  write_file(dir / "conformance.csv",
-             csv({"name", "state", "passed", "failed", "not_applicable", "pairs", "seconds",
-                  "reason"},
-                 in.check.is_null() ? std::vector<const Json*>{}
-                                    : sorted_by_rank(in.check["backends"], "name")));
+  write_file(
+      dir / "conformance.csv",
+      csv({"name", "state", "passed", "failed", "not_applicable", "pairs", "seconds", "reason"},
+          in.check.is_null() ? std::vector<const Json*>{}
+                             : sorted_by_rank(in.check["backends"], "name")));
   std::vector<const Json*> accuracy_rows;
   for (const auto& r : in.accuracy_rows) accuracy_rows.push_back(&r);
   write_file(dir / "accuracy.csv",

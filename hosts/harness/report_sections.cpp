@@ -37,9 +37,10 @@ std::vector<const Json*> in_registry_order(const Json& rows) {
 
 std::string point_name(const Json& r) {
   return str(r, "profile") + ", " + std::to_string(r.value("width", 0)) + "x" +
-         std::to_string(r.value("height", 0)) + ", S=" + std::to_string(r.value("search_radius", 0)) +
-         ", batch " + std::to_string(r.value("batch", 0)) + ", " +
-         std::to_string(r.value("threads", 0)) + " threads";
+         std::to_string(r.value("height", 0)) +
+         ", S=" + std::to_string(r.value("search_radius", 0)) + ", batch " +
+         std::to_string(r.value("batch", 0)) + ", " + std::to_string(r.value("threads", 0)) +
+         " threads";
 }
 
 bool same_problem(const Json& a, const Json& b) {
@@ -77,7 +78,8 @@ constexpr SweepInfo kSweeps[] = {
     {"batch", "Scaling with batch size", "batch size (frame pairs per run)", true, false},
     {"size", "Scaling with frame size", "frame size (pixels)", true, true},
     {"radius", "Scaling with search radius", "search radius S (pixels)", false, false},
-    {"threads", "Scaling with threads", "host threads", false, false},
+    {"threads", "Scaling with threads", "host threads (the model clock does not depend on them)",
+     false, false},
 };
 
 double sweep_x(const SweepInfo& s, const Json& r) {
@@ -91,22 +93,37 @@ double sweep_x(const SweepInfo& s, const Json& r) {
 std::string sweep_column(const SweepInfo& s, const Json& r) {
   const std::string n = s.name;
   if (n == "batch") return "batch " + std::to_string(r["batch"].get<int>());
-  if (n == "size") return std::to_string(r["width"].get<int>()) + "x" + std::to_string(r["height"].get<int>());
+  if (n == "size")
+    return std::to_string(r["width"].get<int>()) + "x" + std::to_string(r["height"].get<int>());
   if (n == "radius") return "S=" + std::to_string(r["search_radius"].get<int>());
   return std::to_string(r["threads"].get<int>()) + " threads";
 }
 
 // A row of the batch sweep that is the sweep's point at its default value (e.g. batch 256 at
 // all cores, 64x64, S=4 for the radius sweep): the same problem but the swept parameter.
-bool anchors(const SweepInfo& s, const Json& first, const Json& r) {
+// For an exact-clock backend (`any_batch`), whose large batches are not simulated, any batch.
+bool anchors(const SweepInfo& s, const Json& first, const Json& r, bool any_batch) {
   const std::string n = s.name;
-  if (n == "batch" || r["sweep"] != "batch" || r["batch"] != first["batch"]) return false;
+  if (n == "batch" || r["sweep"] != "batch" || (!any_batch && r["batch"] != first["batch"]))
+    return false;
   const bool size = r["width"] == first["width"] && r["height"] == first["height"];
   const bool radius = r["search_radius"] == first["search_radius"];
   const bool threads = r["threads"] == first["threads"];
   if (n == "size") return radius && threads;
   if (n == "radius") return size && threads;
   return size && radius;  // threads
+}
+
+// The point a sweep holds fixed, without the swept value.
+std::string fixed_part(const SweepInfo& s, const Json& r) {
+  const std::string n = s.name;
+  std::string out = str(r, "profile");
+  if (n != "size")
+    out += ", " + std::to_string(r.value("width", 0)) + "x" + std::to_string(r.value("height", 0));
+  if (n != "radius") out += ", S=" + std::to_string(r.value("search_radius", 0));
+  if (n != "batch") out += ", batch " + std::to_string(r.value("batch", 0));
+  if (n != "threads") out += ", " + std::to_string(r.value("threads", 0)) + " threads";
+  return out;
 }
 
 }  // namespace
@@ -120,9 +137,9 @@ Section provenance(const ReportInputs& in, const Json& build, const Json& machin
             {},
             {},
             {}};
-  s.rows.push_back({"pxflow", str(build, "version") + ", commit " + str(build, "commit") +
-                                  (build.value("dirty", false) ? " (dirty: uncommitted changes)"
-                                                               : " (clean)")});
+  s.rows.push_back(
+      {"pxflow", str(build, "version") + ", commit " + str(build, "commit") +
+                     (build.value("dirty", false) ? " (dirty: uncommitted changes)" : " (clean)")});
   s.rows.push_back({"compiler", str(build, "compiler") + ", " + str(build, "build_type") + ": " +
                                     str(build, "cxx_flags")});
   s.rows.push_back(
@@ -146,24 +163,24 @@ Section backends_section(const ReportInputs& in) {
             {},
             {}};
   for (const Json* b : in_registry_order(in.backends))
-    s.rows.push_back({str(*b, "name"), str(*b, "implementation"), str(*b, "device"),
-                      str(*b, "driver")});
+    s.rows.push_back(
+        {str(*b, "name"), str(*b, "implementation"), str(*b, "device"), str(*b, "driver")});
   if (s.rows.empty()) s.text += " No backend was opened.";
   return s;
 }
 
 Section conformance(const Json& check, const std::string& cmd) {
-  Section s{"conformance",
-            "Conformance",
-            "Every backend against `ref-original`, records byte for byte and flow by bits, on " +
-                std::to_string(check.value("cases", 0)) + " cases (" +
-                std::to_string(check.value("pairs", 0)) + " frame pairs), seed " +
-                std::to_string(check.value("seed", 0)) + ". Command: `" + cmd + "`.",
-            {"backend", "result", "cases passed", "cases failed", "n/a", "pairs", "run time s",
-             "note"},
-            {},
-            {},
-            {}};
+  Section s{
+      "conformance",
+      "Conformance",
+      "Every backend against `ref-original`, records byte for byte and flow by bits, on " +
+          std::to_string(check.value("cases", 0)) + " cases (" +
+          std::to_string(check.value("pairs", 0)) + " frame pairs), seed " +
+          std::to_string(check.value("seed", 0)) + ". Command: `" + cmd + "`.",
+      {"backend", "result", "cases passed", "cases failed", "n/a", "pairs", "run time s", "note"},
+      {},
+      {},
+      {}};
   std::vector<const Json*> backends;
   for (const auto& b : check["backends"]) backends.push_back(&b);
   std::stable_sort(backends.begin(), backends.end(), [](const Json* a, const Json* b) {
@@ -203,7 +220,11 @@ Section throughput(const Json& bench, const std::string& cmd) {
   const std::string point = point_name(*pick);
   s.title += " (" + point + ")";
   Chart host{"Frames per second by the host clock (" + point + ")",
-             {"frames per second (log scale)", true}, {"", false}, {}, {}, "frames/s"};
+             {"frames per second (log scale)", true},
+             {"", false},
+             {},
+             {},
+             "frames/s"};
   // Exact-clock backends (the GAP8 model) are charted apart, by their own clock: at the point,
   // or at the largest batch of the same problem the bench simulated.
   std::map<std::string, const Json*> model;
@@ -211,8 +232,8 @@ Section throughput(const Json& bench, const std::string& cmd) {
     if (same_point(*r, *pick)) {
       s.rows.push_back(bench_cells(*r));
       if (timed(*r) && host_clock(*r))
-        host.bars.push_back({str(*r, "backend"), (*r)["frames_per_s"].get<double>(),
-                             style_of(str(*r, "backend"))});
+        host.bars.push_back(
+            {str(*r, "backend"), (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
     }
     if (exact_clock(*r) && timed(*r) && same_problem(*r, *pick) &&
         (*r)["sweep"] == (*pick)["sweep"]) {
@@ -223,7 +244,10 @@ Section throughput(const Json& bench, const std::string& cmd) {
   Chart sim{"Frames per second by the exact model clock, not the host (" + str(*pick, "profile") +
                 ", " + std::to_string(pick->value("width", 0)) + "x" +
                 std::to_string(pick->value("height", 0)) + ")",
-            {"frames per second at the model's clock (log scale)", true}, {"", false}, {}, {},
+            {"frames per second at the model's clock (log scale)", true},
+            {"", false},
+            {},
+            {},
             "frames/s"};
   std::vector<const Json*> model_rows;
   for (const auto& [_, r] : model) model_rows.push_back(r);
@@ -232,13 +256,14 @@ Section throughput(const Json& bench, const std::string& cmd) {
   });
   for (const Json* r : model_rows) {
     if (!same_point(*r, *pick)) s.rows.push_back(bench_cells(*r));
-    sim.bars.push_back({str(*r, "backend") + " (batch " + std::to_string((*r)["batch"].get<int>()) +
-                            ")",
-                        (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
+    sim.bars.push_back(
+        {str(*r, "backend") + " (batch " + std::to_string((*r)["batch"].get<int>()) + ")",
+         (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
   }
   s.text =
       "Median of repeated runs after a warm-up run whose records matched ref-original; a backend "
-      "with an exact clock (the GAP8 model's cycles) is timed by that clock from its one checked "
+      "with an exact clock (a deterministic cycle model) is timed by that clock from its one "
+      "checked "
       "run and charted apart, never beside the host's figures. Speed-ups compare rows of the "
       "same clock only. Command: `" +
       cmd + "`.";
@@ -261,8 +286,21 @@ Section scaling(const Json& bench, const std::string& sweep) {
     return s;
   }
   const Json first = *rows.front();
+  std::set<std::string> model_backends;  // their rows that are not timed are theirs too
   for (const auto& r : bench["rows"])
-    if (anchors(*info, first, r)) rows.push_back(&r);
+    if (exact_clock(r)) model_backends.insert(str(r, "backend"));
+  // The sweep's point at its default value, from the batch sweep; for an exact-clock backend
+  // the largest batch it simulated there (its cycles per frame do not depend on the batch).
+  std::map<std::string, const Json*> model_anchor;
+  for (const auto& r : bench["rows"]) {
+    const bool model = model_backends.count(str(r, "backend")) > 0;
+    if (!model && anchors(*info, first, r, false)) rows.push_back(&r);
+    if (model && timed(r) && anchors(*info, first, r, true)) {
+      const Json*& best = model_anchor[str(r, "backend")];
+      if (!best || r["batch"].get<int>() > (*best)["batch"].get<int>()) best = &r;
+    }
+  }
+  for (const auto& [_, r] : model_anchor) rows.push_back(r);
   // One table row per backend and clock kind (device-clock rows time the kernel only: left to
   // the CSV); one column per x.
   std::map<double, std::string> columns;
@@ -273,9 +311,6 @@ Section scaling(const Json& bench, const std::string& sweep) {
     std::set<std::string> notes;
     Series series;
   };
-  std::set<std::string> model_backends;  // their rows that are not timed are theirs too
-  for (const Json* r : rows)
-    if (exact_clock(*r)) model_backends.insert(str(*r, "backend"));
   std::map<std::pair<std::size_t, std::string>, Line> lines;
   for (const Json* r : rows) {
     const bool model = model_backends.count(str(*r, "backend")) > 0;
@@ -294,8 +329,8 @@ Section scaling(const Json& bench, const std::string& sweep) {
       l.notes.insert(note);
       continue;
     }
-    const double y = info->per_poi ? (*r)["ns_per_poi"].get<double>()
-                                   : (*r)["frames_per_s"].get<double>();
+    const double y =
+        info->per_poi ? (*r)["ns_per_poi"].get<double>() : (*r)["frames_per_s"].get<double>();
     l.cells[x] = num(y);
     l.series.points.push_back({x, y});
   }
@@ -306,7 +341,7 @@ Section scaling(const Json& bench, const std::string& sweep) {
   host.title = std::string(info->title) + ", host clock";
   model.title = std::string(info->title) + ", exact model clock (not the host)";
   for (Chart* c : {&host, &model}) {
-    c->x = {info->x_label, info->x_log};
+    c->x = {info->x_label, info->x_log, !info->x_log};  // S and threads are whole numbers
     c->y = {y_label, true};
   }
   for (const auto& [_, l] : lines) {
@@ -319,9 +354,12 @@ Section scaling(const Json& bench, const std::string& sweep) {
     if (!l.series.points.empty()) (l.model ? model : host).series.push_back(l.series);
   }
   s.text = std::string(info->per_poi ? "Nanoseconds per POI" : "Frames per second") + " by " +
-           info->x_label + " (" + point_name(first) +
-           " but the swept value; the same inputs for every backend). Cells that are not numbers "
-           "say why (n/a: outside the backend's limits; not run: the note says how to run it).";
+           info->x_label + ", at " + fixed_part(*info, first) +
+           "; the same inputs for every backend. Exact-clock rows (a deterministic cycle model) "
+           "are charted "
+           "apart, by the model's clock, from the pairs their note names. Cells that are not "
+           "numbers say why (n/a: outside the backend's limits; not run: the note says how to run "
+           "it).";
   if (!host.series.empty()) s.charts.push_back(host);
   if (!model.series.empty()) s.charts.push_back(model);
   return s;
@@ -346,8 +384,8 @@ Json chart_json(const Chart& c) {
   };
   Json j{{"title", c.title},
          {"kind", c.bars.empty() ? "line" : "bar"},
-         {"x_axis", {{"label", c.x.label}, {"log", c.x.log}}},
-         {"y_axis", {{"label", c.y.label}, {"log", c.y.log}}},
+         {"x_axis", {{"label", c.x.label}, {"log", c.x.log}, {"integer", c.x.integer}}},
+         {"y_axis", {{"label", c.y.label}, {"log", c.y.log}, {"integer", c.y.integer}}},
          {"unit", c.unit},
          {"series", Json::array()},
          {"bars", Json::array()}};

@@ -35,7 +35,8 @@ struct Bar {
 
 struct Axis {
   std::string label;
-  bool log = true;  // log10 scale, else linear from 0 (or the data's minimum, if negative)
+  bool log = true;       // log10 scale, else linear
+  bool integer = false;  // linear: whole-number ticks only (cores, threads, S)
 };
 
 // A line chart (series) or a horizontal bar chart (bars; x is the value axis), never both.
@@ -52,8 +53,12 @@ std::string svg_chart(const Chart& chart);
 
 // Tick values for an axis spanning [lo, hi]: decades with 2 and 5 between them on a log axis
 // spanning up to three decades (1, 2, 5, 10, 20, ...), every decade beyond; 1-2-5 steps on a
-// linear one. Exposed for the tests.
-std::vector<double> axis_ticks(double lo, double hi, bool log);
+// linear one (at least 1 when `integer`). Exposed for the tests.
+std::vector<double> axis_ticks(double lo, double hi, bool log, bool integer = false);
+
+// The range an axis shows for data in [lo, hi]: the 1-2-5 ticks around it on a log axis; on a
+// linear one the step multiples around it, from 0 when lo >= 0 and the data start near 0.
+std::pair<double, double> axis_range(double lo, double hi, bool log, bool integer = false);
 
 // Escapes &, <, > and quotes for HTML/SVG text.
 std::string html_escape(const std::string& s);

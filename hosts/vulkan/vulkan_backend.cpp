@@ -86,7 +86,8 @@ std::string VulkanBackend::device_name() const { return ctx_->properties().devic
 Backend::Description VulkanBackend::describe() const {
   auto driver = vk::zeroed<VkPhysicalDeviceDriverProperties>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES);
-  auto props = vk::zeroed<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
+  auto props =
+      vk::zeroed<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
   props.pNext = &driver;
   vkGetPhysicalDeviceProperties2(ctx_->physical_device(), &props);
   const std::uint32_t api = props.properties.apiVersion;

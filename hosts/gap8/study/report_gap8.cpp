@@ -29,8 +29,12 @@ ReportInputs::Table core_counts(const gap8_study::Study& s, const std::string& c
       {},
       {}};
   // Linear axes: 1 to 8 cores, speed-ups up to 8, every value readable off a labelled tick.
-  Chart chart{"GAP8 model: speed-up over 1 core", {"cluster cores", false},
-              {"speed-up over 1 core", false}, {}, {}, ""};
+  Chart chart{"GAP8 model: speed-up over 1 core",
+              {"cluster cores", false, true},
+              {"speed-up over 1 core", false},
+              {},
+              {},
+              ""};
   Series ideal{"linear (ideal)", {}, reference_style()};
   for (Gap8Variant v : s.options.variants) {
     // The colour and marker of the variant's registry row (gap8-<variant>), as in every chart.
