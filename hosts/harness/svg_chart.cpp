@@ -7,14 +7,14 @@
 namespace pxflow {
 namespace {
 
-// Nine well-separated hues (tab10 without its grey, which reference lines use), four muted
-// dark shades, four strong ones (black, gold, teal, magenta), three light ones. In this build's
-// registry order the nine CPU rows take the hues, the GAP8 rows (only ever charted by their own
-// clock, apart) the muted shades, and OpenCL and Vulkan the strong ones: every chart's series
-// differ in colour, not only in marker.
+// Nine well-separated hues (tab10 without its grey, which reference lines use), then two groups
+// of four strong colours that differ from those nine and among themselves (navy, dark orange,
+// lime, violet; black, gold, teal, magenta), then three light ones. In this build's registry
+// order the nine CPU rows take the hues, the four GAP8 rows (charted together, by their own
+// clock) the first group, OpenCL and Vulkan the second: every backend has a colour of its own.
 const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
-                          "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#393b79",
-                          "#637939", "#843c39", "#7b4173", "#000000", "#f3c300",
+                          "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#000080",
+                          "#b35900", "#7fbf00", "#8000ff", "#000000", "#f3c300",
                           "#008080", "#ff00ff", "#9c9ede", "#e7969c", "#8ca252"};
 const char* kMarkers[] = {"circle", "square", "triangle", "diamond", "down", "cross", "plus"};
 
