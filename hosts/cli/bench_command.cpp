@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "bench.hpp"
+#include "command_line.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
@@ -15,7 +16,8 @@ namespace {
 
 struct BenchArgs {
   ProblemOptions problem;
-  std::string backends, batches, threads, sizes, radii, json_path;
+  std::string backend, backends, batches, threads, sizes, radii, json_path;
+  std::string command;  // the command line as run (command_line.hpp)
   double min_time = 0.25;
   BackendOptions backend_options;
 };
@@ -59,17 +61,28 @@ std::vector<BenchPoint> bench_points(const BenchArgs& a) {
 }
 
 int run_bench_command(const BenchArgs& a) {
+  if (!a.backend.empty() && !a.backends.empty())
+    throw InputError("--backend " + a.backend + ": given with --backends " + a.backends +
+                     ": give one of them (see pxflow bench --help)");
   BenchOptions o;
-  o.backends = split_list(a.backends);
+  o.backends = split_list(a.backend.empty() ? a.backends : a.backend);
   o.points = bench_points(a);
   o.min_seconds = a.min_time;
   o.backend_options = a.backend_options;
-  if (!a.json_path.empty()) check_output_path("--json", a.json_path);
-  std::cout << "pxflow bench: " << o.points.size() << " points; each backend's records are checked "
-            << "against ref-original before it is timed; ns/frame is the median over repeats "
-               "(min..max)\n";
-  const BenchReport r = run_bench(o, std::cout);
-  if (!a.json_path.empty()) write_output_file(a.json_path, bench_json(r).dump(2) + "\n");
+  // `--json -`: the JSON is standard output, so the table goes to standard error.
+  const bool json_to_stdout = a.json_path == "-";
+  if (!a.json_path.empty() && !json_to_stdout) check_output_path("--json", a.json_path);
+  std::ostream& out = json_to_stdout ? std::cerr : std::cout;
+  out << "pxflow bench: " << o.points.size() << " points; each backend's records are checked "
+      << "against ref-original before it is timed; ns/frame is the median over repeats "
+         "(min..max)\n";
+  BenchReport r = run_bench(o, out);
+  r.command = a.command;
+  const std::string json = bench_json(r).dump(2) + "\n";
+  if (json_to_stdout)
+    std::cout << json;
+  else if (!a.json_path.empty())
+    write_output_file(a.json_path, json);
   return 0;
 }
 
@@ -82,6 +95,7 @@ Command add_bench_command(CLI::App& app) {
   a->problem.add_to(*sub);
   sub->add_option("--backends", a->backends,
                   "Comma-separated backends (default: all that can run)");
+  sub->add_option("--backend", a->backend, "One backend (see `pxflow backends`)");
   sub->add_option("--batch", a->batches, "Batch sizes, N[,N...] (frame pairs per run)")
       ->check(non_empty_list());
   sub->add_option("--threads", a->threads, "Thread counts, N[,N...] (0 = all cores)")
@@ -93,9 +107,13 @@ Command add_bench_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--device", a->backend_options.device,
                   "Device index or name substring (GPU backends)");
-  sub->add_option("--json", a->json_path, "Write the rows as JSON to FILE");
+  sub->add_option("--json", a->json_path,
+                  "Write the rows as JSON to FILE ('-': standard output, the table to stderr)");
   add_progress_flag(*sub);
-  return {sub, [a] { return run_bench_command(*a); }};
+  return {sub, [a, sub] {
+            a->command = given_command_line(*sub);
+            return run_bench_command(*a);
+          }};
 }
 
 }  // namespace pxflow::cli

@@ -107,8 +107,8 @@ class FlowRunner {
     r.host_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     r.device_time = backend_->last_device_time();
     r.prev_name = prev.name, r.next_name = next.name;
-    r.backend = row_.name, r.implementation = backend_->implementation();
-    r.device = backend_->device();
+    r.backend = row_.name, r.implementation = backend_->describe().implementation;
+    r.device = backend_->describe().device;
     r.profile = o_.problem.profile;
     r.params = &params_;
     r.result = estimate_flow(records_, params_);

@@ -1,4 +1,5 @@
 // pxflow report: runs (or reads) check and bench results and writes the report files.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -7,6 +8,7 @@
 #include "bench.hpp"
 #include "check.hpp"
 #include "cli_extension.hpp"
+#include "command_line.hpp"
 #include "commands.hpp"
 #include "draw_flow.hpp"
 #include "errors.hpp"
@@ -16,18 +18,33 @@
 #include "list_option.hpp"
 #include "output_file.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
 #include "registry.hpp"
 #include "report.hpp"
+#include "sample_data.hpp"
 #include "truth_pairs.hpp"
 
 namespace pxflow::cli {
 namespace {
 
 struct ReportArgs {
-  std::string out_dir, check_json, bench_json, backends;
+  std::string out_dir, check_json, bench_json, backends, backend;
+  std::string data_dir = kSampleDataDir;
   std::uint64_t seed = 1;
+  int threads = 0;  // check and bench (accuracy keeps its one thread, like for like with OpenCV)
+  std::string device;
   bool quick = false, no_accuracy = false;
   std::vector<std::pair<CliExtension, bool>> extensions;  // each with its skip flag's value
+  std::string command;                                    // as run (command_line.hpp)
+
+  // The backend of the accuracy table and the flow pictures: --backend, else the default one.
+  std::string picture_backend() const { return backend.empty() ? default_backend().name : backend; }
+  BackendOptions backend_options() const { return {threads, device}; }
+  // " --threads N --device D" as given, for the commands the report records.
+  std::string shared_flags() const {
+    return (threads ? " --threads " + std::to_string(threads) : std::string()) +
+           (device.empty() ? std::string() : " --device " + shell_word(device));
+  }
 };
 
 // The families' sections: each extension whose family has a row among the report's backends
@@ -44,10 +61,14 @@ void add_family_sections(ReportInputs& in, const ReportArgs& a) {
 
 void add_accuracy(ReportInputs& in, const ReportArgs& a) {
   accuracy::AccuracyOptions o;
-  o.backend = default_backend().name;
+  o.backend = a.picture_backend();
+  o.backend_options.device = a.device;
+  o.data_dir = a.data_dir;
   if (a.quick) o.pairs = 40, o.video_pairs = 2;
   in.accuracy_command =
-      "pxflow accuracy --backend " + o.backend + (a.quick ? " --pairs 40 --video-pairs 2" : "");
+      "pxflow accuracy --backend " + o.backend + (a.quick ? " --pairs 40 --video-pairs 2" : "") +
+      (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
+      (a.data_dir == kSampleDataDir ? "" : " --data-dir " + shell_word(a.data_dir));
   std::cout << "== " << in.accuracy_command << "\n";
   const auto report = accuracy::run_accuracy(o);
   in.accuracy.push_back({"pairs", "pxflow setting", "against", "method", "frames", "with flow",
@@ -58,25 +79,34 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
     return std::string(b);
   };
   for (const auto& set : report.sets)
-    for (const auto& r : set.rows)
+    for (const auto& r : set.rows) {
       in.accuracy.push_back(
           {set.set, set.setting, set.against, r.method, std::to_string(r.frames),
            std::to_string(r.valid), r.has_error ? fixed(r.mean_error, "%.3f") : "(reference)",
            r.has_error ? fixed(r.p95_error, "%.3f") : "(reference)", fixed(r.median_us, "%.0f")});
+      in.accuracy_rows.push_back({{"set", set.set},
+                                  {"setting", set.setting},
+                                  {"against", set.against},
+                                  {"method", r.method},
+                                  {"frames", r.frames},
+                                  {"with_flow", r.valid},
+                                  {"mean_error_px", r.has_error ? Json(r.mean_error) : Json()},
+                                  {"p95_error_px", r.has_error ? Json(r.p95_error) : Json()},
+                                  {"median_us_per_frame", r.median_us}});
+    }
 }
 
 // Flow pictures of the real sequences: first two frames of each video at full size.
 void add_pictures(ReportInputs& in, const ReportArgs& a) {
-  const std::string backend = default_backend().name;
+  const std::string backend = a.picture_backend();
   Params p = profile("px4flow-64");
   for (const char* video : {"vtest.avi", "tree.avi"}) {
-    const auto pairs =
-        accuracy::video_pairs(std::string(CorpusOptions{}.data_dir) + "/" + video, 1);
+    const auto pairs = accuracy::video_pairs(a.data_dir + "/" + video, 1);
     if (pairs.empty()) continue;
     const auto& vp = pairs.front();
     p.width = vp.prev.width, p.height = vp.prev.height, p.search_radius = 7, p.blocks = 32;
     validate(p);
-    auto b = open_backend_for(find_backend(backend), {}, p);
+    auto b = open_backend_for(find_backend(backend), a.backend_options(), p);
     const FramePair pair{vp.prev.view(), vp.next.view()};
     std::vector<PoiRecord> records(poi_count(p));
     OpCounts counts;
@@ -122,58 +152,121 @@ Json read_json(const std::string& option, const std::string& path, const char* k
   } catch (const std::exception& e) {
     throw InputError(option + " " + path + ": a malformed " + kind + " file (" + e.what() + ")");
   }
+  if (is_bench) {  // keys older bench files lack, so that results.json keeps its schema
+    if (!j.contains("backends") || !j["backends"].is_array()) j["backends"] = Json::array();
+    if (!j.contains("command")) j["command"] = nullptr;
+    for (auto& r : j["rows"])
+      if (!r.contains("exact_clock")) r["exact_clock"] = false;
+  }
   return j;
+}
+
+// The command a results file records ("command", written by pxflow bench and check), or what is
+// known: the file it was read from.
+std::string recorded_command(const Json& j, const char* kind, const std::string& path) {
+  if (j.contains("command") && j["command"].is_string() && !j["command"].get<std::string>().empty())
+    return j["command"].get<std::string>() + " (read from " + path + ")";
+  return std::string("read from ") + path + "; the pxflow " + kind +
+         " command that wrote it is not recorded in the file";
+}
+
+// What each backend of the report runs: the bench's own descriptions (what it opened), else the
+// rows of the check opened here for their description.
+void describe_backends(ReportInputs& in, const ReportArgs& a) {
+  if (!in.bench.is_null() && in.bench.contains("backends") && in.bench["backends"].is_array() &&
+      !in.bench["backends"].empty()) {
+    in.backends = in.bench["backends"];
+    in.backends_source =
+        "As the bench opened each backend (all threads). Device and driver "
+        "strings come from the backends themselves (OpenCL platform and driver "
+        "versions, Vulkan driver properties, the GAP8 model's source trees).";
+    return;
+  }
+  std::vector<std::string> names = split_list(a.backends);
+  if (names.empty() && !in.check.is_null())
+    for (const auto& b : in.check["backends"]) names.push_back(b.value("name", ""));
+  for (const BackendRow& row : backend_rows()) {
+    if (std::find(names.begin(), names.end(), row.name) == names.end()) continue;
+    OpenedBackend opened = open_backend(row, a.backend_options());
+    if (opened.backend) in.backends.push_back(describe_backend(row.name, *opened.backend));
+  }
+  in.backends_source =
+      "The bench results do not describe the backends, so this report opened "
+      "the rows it knows on this machine to describe them.";
 }
 
 int run_report(const ReportArgs& a) {
   ReportInputs in;
+  in.report_command = a.command;
   const std::string backends = a.backends.empty() ? "" : " --backends " + a.backends;
-  in.report_command = "pxflow report --out " + a.out_dir + backends + (a.quick ? " --quick" : "");
-  // Inputs first, so that a wrong file is refused before minutes of work.
+  // Inputs first, so that a wrong file or name is refused before minutes of work.
+  for (const std::string& name : split_list(a.backends)) (void)find_backend(name);
+  if (!a.backend.empty()) (void)find_backend(a.backend);
+  // Given both results files and no accuracy run, nothing is run: --threads and --device would
+  // do nothing.
+  if (!a.check_json.empty() && !a.bench_json.empty() && a.no_accuracy &&
+      (a.threads || !a.device.empty()))
+    throw InputError(std::string(a.threads ? "--threads" : "--device") +
+                     ": has no effect with --check-json, --bench-json and --no-accuracy (nothing "
+                     "runs): leave it out (see pxflow report --help)");
   if (!a.check_json.empty()) in.check = read_json("--check-json", a.check_json, "check");
   if (!a.bench_json.empty()) in.bench = read_json("--bench-json", a.bench_json, "bench");
   std::vector<std::string> inputs;
   for (const std::string* f : {&a.check_json, &a.bench_json})
     if (!f->empty()) inputs.push_back(*f);
-  for (const char* name : {"report.md", "report.html", "results.json", "results.csv"})
+  for (const std::string& name : report_file_names())
     check_not_an_input("--out", a.out_dir + "/" + name, inputs);
   prepare_report_dir(a.out_dir);  // before any work: a folder that cannot be made fails first
   if (!a.check_json.empty()) {
-    in.check_command = "pxflow check --json " + a.check_json + " (as recorded in that file)";
+    in.check_command = recorded_command(in.check, "check", a.check_json);
   } else {
     CheckOptions o;
     o.backends = split_list(a.backends);
     o.corpus.seed = a.seed;
-    in.check_command = "pxflow check --seed " + std::to_string(a.seed) + backends;
+    o.corpus.data_dir = a.data_dir;
+    o.backend_options = a.backend_options();
+    in.check_command = "pxflow check --seed " + std::to_string(a.seed) + backends +
+                       a.shared_flags() +
+                       (a.data_dir == kSampleDataDir ? "" : " --data " + shell_word(a.data_dir));
     std::cout << "== " << in.check_command << "\n";
     const CheckReport r = run_check(o, std::cout);
     std::cout << r.passed << " passed, " << r.failed << " failed, " << r.skipped << " skipped\n";
     in.check = check_json(r);
   }
   if (!a.bench_json.empty()) {
-    in.bench_command = "pxflow bench --json " + a.bench_json + " (as recorded in that file)";
+    in.bench_command = recorded_command(in.bench, "bench", a.bench_json);
   } else {
     BenchOptions o;
     o.backends = split_list(a.backends);
+    o.backend_options = a.backend_options();
     o.points = default_bench_points(profile("px4flow-64"), "px4flow-64");
+    for (BenchPoint& p : o.points)
+      if (p.sweep != "threads") p.threads = a.threads;
     if (a.quick) {
       std::erase_if(o.points, [](const BenchPoint& p) {
         return p.batch > 256 || p.sweep == "radius" || p.sweep == "threads";
       });
       o.min_seconds = 0.05;
     }
-    in.bench_command = "pxflow bench" + backends +
-                       (a.quick ? " (quick subset: batch <= 256, no radius/thread sweep)" : "");
+    in.bench_command =
+        "pxflow bench" + backends + (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
+        (a.threads ? " (default sweeps at --threads " + std::to_string(a.threads) + ")" : "") +
+        (a.quick ? " (quick subset: batch <= 256, no radius/thread sweep, "
+                   "--min-time 0.05)"
+                 : "");
     std::cout << "== " << in.bench_command << "\n";
-    in.bench = bench_json(run_bench(o, std::cout));
+    BenchReport r = run_bench(o, std::cout);
+    r.command = in.bench_command;
+    in.bench = bench_json(r);
   }
+  describe_backends(in, a);
   if (!a.no_accuracy) add_accuracy(in, a);
   add_family_sections(in, a);
   stop_if_interrupted("the report's measurements, before any file was written");
   remove_previous_report(a.out_dir);
   if (!a.no_accuracy) add_pictures(in, a);
   write_report(a.out_dir, in);
-  std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json, results.csv\n";
+  std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json and CSV files\n";
   // As `pxflow check`: a failure, or a check that compared nothing, is not green.
   const bool green = in.check.value("failed", 0) == 0 && in.check.value("compared", 0) > 0;
   if (in.check.value("compared", 0) == 0)
@@ -192,7 +285,21 @@ Command add_report_command(CLI::App& app) {
                   "Use this `pxflow check --json` file instead of running the check");
   sub->add_option("--bench-json", a->bench_json,
                   "Use this `pxflow bench --json` file instead of running the bench");
-  sub->add_option("--backends", a->backends, "Comma-separated backends (default: all)");
+  sub->add_option("--backends", a->backends,
+                  "Comma-separated backends of the check, the bench and the family sections "
+                  "(default: all)");
+  sub->add_option("--backend", a->backend,
+                  "Backend of the accuracy table and the flow pictures (default: the preferred "
+                  "one that runs here)");
+  sub->add_option("--threads", a->threads,
+                  "Host worker threads of the check and of the bench's default sweeps (0 = all "
+                  "cores; the thread sweep still runs 1)")
+      ->check(CLI::Range(0, 1024));
+  sub->add_option("--device", a->device, "Device index or name substring (GPU backends)");
+  sub->add_option("--data", a->data_dir,
+                  "Folder of the real frames and videos (opencv-doc) for the check, the accuracy "
+                  "table and the pictures")
+      ->capture_default_str();
   sub->add_option("--seed", a->seed, "Seed of the check's random pairs")
       ->check(seed_value())
       ->capture_default_str();
@@ -204,7 +311,10 @@ Command add_report_command(CLI::App& app) {
   for (auto& [e, skipped] : a->extensions)
     if (e.add_report_section && !e.report_skip_flag.empty())
       sub->add_flag(e.report_skip_flag, skipped, e.report_skip_help);
-  return {sub, [a] { return run_report(*a); }};
+  return {sub, [a, sub] {
+            a->command = given_command_line(*sub);
+            return run_report(*a);
+          }};
 }
 
 }  // namespace pxflow::cli

@@ -53,11 +53,14 @@ class Backend {
   };
   virtual std::optional<DeviceTime> last_device_time() const { return std::nullopt; }
 
-  // What actually runs, for flow's summary and JSON: the implementation a row chose (the `cpu`
-  // row's ISA, e.g. "avx512bw"; empty: the row's own name) and the device it runs on (the
-  // OpenCL or Vulkan device's name; empty: the host).
-  virtual std::string implementation() const { return {}; }
-  virtual std::string device() const { return {}; }
+  // What runs behind the row, for the human output and the report's provenance, read after
+  // create(). Empty fields say nothing beyond the row's name and the host CPU.
+  struct Description {
+    std::string implementation;  // the code that runs: `cpu` -> "avx512bw"
+    std::string device;          // e.g. "cpu-haswell-AMD EPYC 7B13 (OpenCL 3.0 PoCL 3.1 ...)"
+    std::string driver;          // e.g. "Mesa 22.3.6 (LLVM 15.0.6)", "gap8_model 1a2b3c4d5e6f"
+  };
+  virtual Description describe() const { return {}; }
 };
 
 // One row of the registry.

@@ -18,6 +18,8 @@ class ReferenceBackend final : public Backend {
       reference_flow(variant_, pairs[n], p, out.subspan(n * per_pair, per_pair), counts);
   }
 
+  Description describe() const override { return {"reference/ scalar C++, 1 thread", {}, {}}; }
+
  private:
   RefVariant variant_;
 };

@@ -46,7 +46,11 @@ class CpuBackend final : public Backend {
     }
     for (const OpCounts& c : item_counts) counts += c;
   }
-  std::string implementation() const override { return kernel_.name; }
+
+  // The ISA row that runs (what `cpu` dispatched to) and how many host threads run it.
+  Description describe() const override {
+    return {std::string(kernel_.name), {}, {}};
+  }
 
  private:
   // Few large frames would leave cores idle (and one late-waking worker costs a whole frame):

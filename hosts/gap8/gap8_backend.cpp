@@ -45,6 +45,16 @@ void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p, std::sp
   last_stats_ = std::move(stats);
 }
 
+Backend::Description Gap8Backend::describe() const {
+  return {std::string("kernels/gap8 ") + gap8_variant(variant_).name + " on " +
+              std::to_string(options_.cores) + " cores, TCDM contention " +
+              (options_.contention ? "on" : "off") + ", POIs " +
+              (options_.chunked ? "in chunks" : "round robin"),
+          "GAP8 cluster cycle model at " + std::to_string(static_cast<int>(kGap8ClockHz / 1e6)) +
+              " MHz",
+          std::string("gap8_model ") + PXFLOW_GAP8_MODEL_VERSION};
+}
+
 OpCounts gap8_counts(Gap8Variant variant, std::span<const PoiRecord> records, const Params& p,
                      std::size_t pairs) {
   OpCounts c;

@@ -21,6 +21,8 @@ class Gap8Backend : public Backend {
            OpCounts& counts) override;
   std::string unsupported(const Params& p) const override { return runner_.unsupported(p); }
   std::optional<DeviceTime> last_device_time() const override { return last_time_; }
+  // The variant's kernel, the cluster it runs on and the model's version (git tree ids).
+  Description describe() const override;
 
   // The model's statistics of the last run() (per pair and per core).
   const gap8_host::BatchStats& last_stats() const { return last_stats_; }

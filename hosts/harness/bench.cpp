@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <thread>
 #if defined(__x86_64__) || defined(__i386__)
@@ -14,6 +15,7 @@
 #include "grid.hpp"
 #include "interrupt.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
 #include "registry.hpp"
 #include "synthetic.hpp"
 
@@ -21,6 +23,8 @@ namespace pxflow {
 namespace {
 
 constexpr int kDistinctPairs = 16;  // a batch cycles through these, so memory stays small
+// Pairs an exact-clock backend simulates for a sweep point whose whole batch would take too long.
+constexpr int kReducedBatch = 4;
 
 std::uint64_t tsc_now() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -73,9 +77,50 @@ std::string point_label(const BenchPoint& pt) {
          " threads=" + (pt.threads ? std::to_string(pt.threads) : "all");
 }
 
+// The table's columns: name, width, and whether the values are right-aligned (numbers).
+struct Column {
+  const char* name;
+  int width;
+};
+constexpr Column kColumns[] = {{"clock", 22},    {"ns/frame", 12}, {"min..max ns", 23},
+                               {"frames/s", 11}, {"ns/POI", 9},    {"cycles/frame", 13},
+                               {"x bound", 8},   {"vs ref", 8}};
+
+std::string fixed(const char* format, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
 class Bench {
  public:
-  Bench(const BenchOptions& o, std::ostream& out) : o_(o), out_(out) {}
+  Bench(const BenchOptions& o, std::ostream& out, std::size_t name_width,
+        std::optional<BenchBound> bound)
+      : o_(o), out_(out), name_width_(static_cast<int>(name_width)), bound_(std::move(bound)) {}
+
+  // Opens every row once (all cores) before the first point, so that the table is preceded by
+  // what each backend runs and on which device.
+  void open_all(std::span<const BackendRow* const> rows, BenchReport& report) {
+    for (const BackendRow* row : rows) {
+      Backend* b = backend_for(*row, 0, report);
+      if (!b) continue;
+      Json d = describe_backend(row->name, *b);
+      const std::string line = description_line(d);
+      out_ << "  " << pad(row->name) << "  " << (line.empty() ? "as named, on the host CPU" : line)
+           << "\n";
+      report.backends.push_back(std::move(d));
+    }
+  }
+
+  void print_header() {
+    std::string line = pad("backend");
+    for (const Column& c : kColumns) {
+      const std::string name = c.name;
+      line += "  " + (c.width == 22 ? name + std::string(c.width - name.size(), ' ')
+                                    : std::string(c.width - name.size(), ' ') + name);
+    }
+    out_ << "\n" << line << "  note\n";
+  }
 
   void measure(const BackendRow& row, const BenchPoint& pt, const Inputs& in,
                const std::vector<PoiRecord>& expected, BenchReport& report) {
@@ -85,41 +130,58 @@ class Bench {
     if (std::string why = b->unsupported(pt.params); !why.empty())
       return note(base, "n/a: " + why, report);
     // A simulated backend's run of a large batch is minutes of host time: from the speed of its
-    // last point, a run that would take longer than max_run_seconds is left out, and said so.
+    // last point, a run that would take longer than max_run_seconds is left out of the batch
+    // sweep, and said so; the other sweeps (frame size, radius, threads) take the model's cycles
+    // from the first kReducedBatch pairs instead, so that every sweep has its figure.
+    int batch = pt.batch;
+    std::string reduced;
     if (const auto it = sim_pairs_per_s_.find(row.name); it != sim_pairs_per_s_.end()) {
       const double estimate = pt.batch / it->second;
       if (estimate > o_.max_run_seconds) {
-        char why[200];
+        char why[240];
+        if (pt.sweep == "batch" || pt.sweep == "custom") {  // the batch is what is asked for
+          std::snprintf(why, sizeof why,
+                        "not run: simulating %d pairs would take about %.0f s (%.1f pairs/s); "
+                        "measure it with --backends %s --batch %d",
+                        pt.batch, estimate, it->second, row.name.c_str(), pt.batch);
+          return note(base, why, report);
+        }
+        batch = std::min(pt.batch, kReducedBatch);
         std::snprintf(why, sizeof why,
-                      "not run: simulating %d pairs would take about %.0f s (%.1f pairs/s); "
-                      "measure it with --backends %s --batch %d",
-                      pt.batch, estimate, it->second, row.name.c_str(), pt.batch);
-        return note(base, why, report);
+                      "cycles of the first %d pairs (the point's %d would take about %.0f s to "
+                      "simulate)",
+                      batch, pt.batch, estimate);
+        reduced = why;
+        base.batch = batch;
       }
     }
-    std::vector<PoiRecord> got = sentinel_records(expected.size());
+    const std::span<const FramePair> pairs = in.batch_for(0).first(static_cast<std::size_t>(batch));
+    const std::span<const PoiRecord> want =
+        std::span(expected).first(poi_count(pt.params) * static_cast<std::size_t>(batch));
+    std::vector<PoiRecord> got = sentinel_records(want.size());
     OpCounts counts;
     // Warm-up and check in one: the first run's records must equal ref-original's.
     const auto w0 = std::chrono::steady_clock::now();
     try {
-      b->run(in.batch_for(0), pt.params, got, counts);
+      b->run(pairs, pt.params, got, counts);
     } catch (const std::exception& e) {
       return note(base, std::string("failed: ") + e.what(), report);
     }
     const double first = seconds_since(w0);
-    if (std::memcmp(got.data(), expected.data(), got.size() * sizeof(PoiRecord)) != 0)
+    if (std::memcmp(got.data(), want.data(), want.size_bytes()) != 0)
       return note(base, "not timed: records differ from ref-original (run pxflow check)", report);
     if (const auto d = b->last_device_time(); d && d->exact) {
       // Timed by its exact clock from the checked run; the host's time is simulation speed.
       BenchRow dev = base;
       dev.source = d->source;
-      fill(dev, {d->ns / pt.batch}, d->cycles ? *d->cycles / pt.batch : 0);
-      if (d->instructions) dev.instructions_per_frame = *d->instructions / pt.batch;
+      dev.exact_clock = true;
+      fill(dev, {d->ns / batch}, d->cycles ? *d->cycles / batch : 0);
+      if (d->instructions) dev.instructions_per_frame = *d->instructions / batch;
       char sim[128];
       std::snprintf(sim, sizeof sim, "one checked run; host simulation %.1f pairs/s",
-                    pt.batch / first);
-      dev.note = sim;
-      sim_pairs_per_s_[row.name] = pt.batch / first;
+                    batch / first);
+      dev.note = sim + (reduced.empty() ? "" : "; " + reduced);
+      sim_pairs_per_s_[row.name] = batch / first;
       emit(dev, report);
       return;
     }
@@ -194,25 +256,56 @@ class Bench {
     r.cycles_per_frame = cycles;
   }
 
+  std::string pad(const std::string& name) const {
+    return name + std::string(name.size() < static_cast<std::size_t>(name_width_)
+                                  ? name_width_ - name.size()
+                                  : 0,
+                              ' ');
+  }
+
   void note(BenchRow r, const std::string& why, BenchReport& report) {
     r.note = why;
-    out_ << "  " << r.backend << ": " << why << "\n";
+    out_ << pad(r.backend) << "  " << why << "\n";
     report.rows.push_back(r);
   }
 
-  void emit(const BenchRow& r, BenchReport& report) {
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "  %-14s %-22s %12.0f ns/frame (%0.f..%0.f)  %10.1f frames/s  %8.1f ns/POI",
-                  r.backend.c_str(), r.source.c_str(), r.median_ns_per_frame, r.min_ns_per_frame,
-                  r.max_ns_per_frame, r.frames_per_s, r.ns_per_poi);
-    out_ << line;
-    if (r.cycles_per_frame > 0)
-      out_ << "  " << static_cast<long>(r.cycles_per_frame) << " cycles/frame";
-    if (r.instructions_per_frame > 0)
-      out_ << "  " << static_cast<long>(r.instructions_per_frame) << " instructions/frame";
-    if (!r.note.empty()) out_ << "  (" << r.note << ")";
-    out_ << "\n" << std::flush;
+  // The ratio to the bound (rows timed by its clock) and the speed-up over ref-original's row of
+  // the same point and clock, which registry order has emitted already.
+  void derive(BenchRow& r, const BenchReport& report) const {
+    if (bound_ && r.cycles_per_frame > 0 && r.source.find(bound_->clock) != std::string::npos)
+      r.bound_ratio =
+          r.cycles_per_frame / bound_->cycles_per_frame(r.pois_per_frame, r.search_radius);
+    for (const auto& ref : report.rows)
+      if (ref.backend == kReferenceBackend && ref.source == r.source && ref.sweep == r.sweep &&
+          ref.setting == r.setting && ref.width == r.width && ref.height == r.height &&
+          ref.search_radius == r.search_radius && ref.batch == r.batch &&
+          ref.threads == r.threads && ref.median_ns_per_frame > 0)
+        r.speedup_vs_reference = ref.median_ns_per_frame / r.median_ns_per_frame;
+    if (r.backend == kReferenceBackend) r.speedup_vs_reference = 1.0;
+  }
+
+  void emit(BenchRow r, BenchReport& report) {
+    derive(r, report);
+    const std::string cells[] = {
+        r.source,
+        fixed("%.0f", r.median_ns_per_frame),
+        fixed("%.0f", r.min_ns_per_frame) + ".." + fixed("%.0f", r.max_ns_per_frame),
+        fixed("%.1f", r.frames_per_s),
+        fixed("%.1f", r.ns_per_poi),
+        // A clock that counts instructions (QEMU's -icount) says so in its cell, never "cycles".
+        r.cycles_per_frame > 0         ? fixed("%.0f", r.cycles_per_frame)
+        : r.instructions_per_frame > 0 ? fixed("%.0f instr", r.instructions_per_frame)
+                                       : "-",
+        r.bound_ratio > 0 ? fixed("%.2fx", r.bound_ratio) : "-",
+        r.speedup_vs_reference > 0 ? fixed("%.2fx", r.speedup_vs_reference) : "-"};
+    std::string line = pad(r.backend);
+    for (std::size_t i = 0; i < std::size(kColumns); ++i) {
+      const auto w = static_cast<std::size_t>(kColumns[i].width);
+      const std::string gap(cells[i].size() < w ? w - cells[i].size() : 0, ' ');
+      line += "  " + (i == 0 ? cells[i] + gap : gap + cells[i]);
+    }
+    if (!r.note.empty()) line += "  " + r.note;
+    out_ << line << "\n" << std::flush;
     report.rows.push_back(r);
   }
 
@@ -220,46 +313,34 @@ class Bench {
   std::ostream& out_;
   std::map<std::pair<std::string, int>, std::unique_ptr<Backend>> cache_;
   std::map<std::string, double> sim_pairs_per_s_;  // exact-clock backends: host simulation speed
+  int name_width_;
+  std::optional<BenchBound> bound_;
 };
 
 // How far each row is from the bound a family offers (the cpu family: the SAD work at the
-// widest psadbw's rate, in TSC cycles): cycles per frame over the bound's, for the rows timed
-// by the bound's clock. The first family with a bound this machine can measure gives it.
-void add_bound_ratios(BenchReport& r, std::ostream& out) {
+// widest psadbw's rate, in TSC cycles): the first family with a bound this machine can measure
+// gives it. Measured before the points, so that every row is printed with its ratio.
+std::optional<BenchBound> measure_bound(BenchReport& r) {
   for (const BackendFamily& f : backend_families()) {
     if (!f.measure_bench_bound) continue;
-    const std::optional<BenchBound> bound = f.measure_bench_bound();
+    std::optional<BenchBound> bound = f.measure_bench_bound();
     if (!bound) continue;
     r.bound_name = bound->name;
     r.bound_clock = bound->clock;
     r.bound_bytes_per_cycle = bound->bytes_per_cycle;
-    out << "bound: " << bound->name << ", " << bound->bytes_per_cycle << " bytes per "
-        << bound->clock << " cycle\n";
-    for (auto& row : r.rows) {
-      if (row.cycles_per_frame <= 0 || row.source.find(bound->clock) == std::string::npos) continue;
-      row.bound_ratio =
-          row.cycles_per_frame / bound->cycles_per_frame(row.pois_per_frame, row.search_radius);
-      char line[160];
-      std::snprintf(line, sizeof line, "  %-14s %dx%d S=%d batch=%d threads=%d: %.2fx the bound\n",
-                    row.backend.c_str(), row.width, row.height, row.search_radius, row.batch,
-                    row.threads, row.bound_ratio);
-      out << line;
-    }
-    return;
+    return bound;
   }
+  return std::nullopt;
 }
 
-// Speed-up of every timed row over ref-original at the same point, measured by the same clock.
-void add_speedups(BenchReport& r) {
-  for (auto& row : r.rows) {
-    if (row.median_ns_per_frame <= 0) continue;
-    for (const auto& ref : r.rows)
-      if (ref.backend == kReferenceBackend && ref.source == row.source && ref.sweep == row.sweep &&
-          ref.setting == row.setting && ref.width == row.width && ref.height == row.height &&
-          ref.search_radius == row.search_radius && ref.batch == row.batch &&
-          ref.threads == row.threads && ref.median_ns_per_frame > 0)
-        row.speedup_vs_reference = ref.median_ns_per_frame / row.median_ns_per_frame;
-  }
+// The rows to run: all, or the named ones, in registry order either way (one order everywhere).
+std::vector<const BackendRow*> rows_to_run(const std::vector<std::string>& names) {
+  for (const auto& n : names) (void)find_backend(n);  // an unknown name is an InputError
+  std::vector<const BackendRow*> rows;
+  for (const auto& r : backend_rows())
+    if (names.empty() || std::find(names.begin(), names.end(), r.name) != names.end())
+      rows.push_back(&r);
+  return rows;
 }
 
 }  // namespace
@@ -283,13 +364,18 @@ std::vector<BenchPoint> default_bench_points(const Params& base, const std::stri
 
 BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   BenchReport report;
-  std::vector<const BackendRow*> rows;
-  if (o.backends.empty())
-    for (const auto& r : backend_rows()) rows.push_back(&r);
-  else
-    for (const auto& n : o.backends) rows.push_back(&find_backend(n));
+  const std::vector<const BackendRow*> rows = rows_to_run(o.backends);
   check_device_option(rows, o.backend_options.device);
-  Bench bench(o, out);
+  std::size_t name_width = 7;
+  for (const BackendRow* row : rows) name_width = std::max(name_width, row->name.size());
+  std::optional<BenchBound> bound = measure_bound(report);
+  Bench bench(o, out, name_width, bound);
+  out << "backends (what runs, on which device):\n";
+  bench.open_all(rows, report);
+  if (bound)
+    out << "bound: " << bound->name << ", " << bound->bytes_per_cycle << " bytes per "
+        << bound->clock << " cycle; x bound = a row's cycles per frame over the bound's\n";
+  bench.print_header();
   std::size_t done = 0;
   for (const auto& pt : o.points) {
     stop_if_interrupted(std::to_string(done) + " of " + std::to_string(o.points.size()) +
@@ -297,7 +383,7 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
     progress("bench: point " + std::to_string(++done) + " of " + std::to_string(o.points.size()) +
              ": " + point_label(pt));
     validate(pt.params);
-    out << point_label(pt) << "\n";
+    out << "-- " << point_label(pt) << "\n";
     const Inputs in = make_inputs(pt.params, pt.batch);
     std::vector<PoiRecord> expected(poi_count(pt.params) * static_cast<std::size_t>(pt.batch));
     OpCounts counts;
@@ -305,8 +391,6 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
     for (const BackendRow* row : rows) bench.measure(*row, pt, in, expected, report);
   }
   progress("");
-  add_speedups(report);
-  add_bound_ratios(report, out);
   for (const auto& s : report.skipped) out << "skipped " << s << "\n";
   return report;
 }
@@ -330,14 +414,15 @@ Json bench_json(const BenchReport& r) {
            {"min_ns_per_frame", b.min_ns_per_frame},
            {"max_ns_per_frame", b.max_ns_per_frame},
            {"frames_per_s", b.frames_per_s},
-           {"ns_per_poi", b.ns_per_poi}};
+           {"ns_per_poi", b.ns_per_poi},
+           {"exact_clock", b.exact_clock}};
     if (b.cycles_per_frame > 0) j["cycles_per_frame"] = b.cycles_per_frame;
     if (b.instructions_per_frame > 0) j["instructions_per_frame"] = b.instructions_per_frame;
     if (b.speedup_vs_reference > 0) j["speedup_vs_ref_original"] = b.speedup_vs_reference;
     if (b.bound_ratio > 0) j["bound_ratio"] = b.bound_ratio;
     rows.push_back(std::move(j));
   }
-  Json j{{"rows", rows}, {"skipped", r.skipped}};
+  Json j{{"command", r.command}, {"backends", r.backends}, {"rows", rows}, {"skipped", r.skipped}};
   if (r.bound_bytes_per_cycle > 0)
     j["bound"] = {{"name", r.bound_name},
                   {"clock", r.bound_clock},

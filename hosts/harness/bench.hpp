@@ -39,6 +39,7 @@ struct BenchRow {
   double instructions_per_frame = 0;  // 0 when the source does not count instructions
   double bound_ratio = 0;  // cycles per frame / the bound's (BenchBound, docs/cpu-simd.md); 0: none
   double speedup_vs_reference = 0;  // vs ref-original, same point and source; 0 when not measured
+  bool exact_clock = false;         // timed by a deterministic device clock (DeviceTime::exact)
 };
 
 struct BenchReport {
@@ -46,13 +47,18 @@ struct BenchReport {
   // applies to, and its bytes compared per cycle of that clock.
   std::string bound_name, bound_clock;
   double bound_bytes_per_cycle = 0;
-  std::vector<BenchRow> rows;
+  std::vector<BenchRow> rows;        // point by point, backends in registry order
   std::vector<std::string> skipped;  // "backend: reason" lines
+  // What each opened backend ran (provenance.hpp: describe_backend), in registry order.
+  Json backends = Json::array();
+  std::string command;  // the command line that made this report, for its JSON
 };
 
 // The default sweeps around `base` (the profile with any --set applied).
 std::vector<BenchPoint> default_bench_points(const Params& base, const std::string& profile_name);
 
+// Runs every point: prints the backends with what each runs, then one aligned table (a group of
+// rows per point, the bound's ratio and the speed-up over ref-original as columns).
 BenchReport run_bench(const BenchOptions& o, std::ostream& out);
 
 Json bench_json(const BenchReport& r);

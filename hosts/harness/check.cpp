@@ -53,10 +53,10 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
     }
     OpenedBackend opened = open_backend(*c.row, o.backend_options);
     c.backend = std::move(opened.backend);
-    if (c.backend) {  // what runs behind the row (Backend::implementation(), device())
-      const std::string implementation = c.backend->implementation();
+    if (c.backend) {  // what runs behind the row (Backend::describe())
+      const std::string implementation = c.backend->describe().implementation;
       c.outcome.implementation = implementation.empty() ? c.row->name : implementation;
-      c.outcome.device = c.backend->device();
+      c.outcome.device = c.backend->describe().device;
     }
     const std::string why = opened.why_not;
     if (!why.empty()) {

@@ -1,83 +1,23 @@
 #include "report.hpp"
 
-#include <unistd.h>
-
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <map>
-#include <set>
 #include <sstream>
-#include <thread>
 
 #include "errors.hpp"
 #include "output_file.hpp"
+#include "provenance.hpp"
+#include "registry.hpp"
+#include "report_sections.hpp"
 #include "svg_chart.hpp"
 
 namespace pxflow {
 namespace {
 
-// A report is a list of sections, rendered once as Markdown and once as HTML.
-struct Section {
-  std::string title, text;
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  std::string svg;  // HTML only
-  std::vector<ReportInputs::Picture> pictures;
-};
+using report::Section;
 
-std::string first_line_of(const std::string& path, const std::string& key) {
-  std::ifstream in(path);
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind(key, 0) == 0) {
-      auto v = line.substr(line.find_first_of(":=") + 1);
-      v.erase(0, v.find_first_not_of(" \t\""));
-      if (!v.empty() && v.back() == '"') v.pop_back();
-      return v;
-    }
-  return "unknown";
-}
-
-Json machine() {
-  const auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  char date[32];
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  char host[256] = "unknown";
-  gethostname(host, sizeof host - 1);
-  return Json{{"cpu", first_line_of("/proc/cpuinfo", "model name")},
-              {"cores", std::thread::hardware_concurrency()},
-              {"os", first_line_of("/etc/os-release", "PRETTY_NAME")},
-              {"host", host},
-              {"date", date}};
-}
-
-std::string num(double v, const char* f = "%.1f") {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
-Section conformance(const Json& check, const std::string& cmd) {
-  Section s{"Conformance",
-            "Every backend against `ref-original`, records byte for byte and flow by bits, on " +
-                std::to_string(check.value("cases", 0)) + " cases (" +
-                std::to_string(check.value("pairs", 0)) + " frame pairs), seed " +
-                std::to_string(check.value("seed", 0)) + ". Command: `" + cmd + "`.",
-            {"backend", "result", "cases passed", "cases failed", "n/a", "pairs", "note"},
-            {},
-            "",
-            {}};
-  for (const auto& b : check["backends"])
-    s.rows.push_back({b["name"], b["state"], std::to_string(b["passed"].get<long>()),
-                      std::to_string(b["failed"].get<long>()),
-                      std::to_string(b["not_applicable"].get<long>()),
-                      std::to_string(b["pairs"].get<long>()), b["reason"]});
-  s.text += " Totals: " + std::to_string(check.value("passed", 0)) + " passed, " +
-            std::to_string(check.value("failed", 0)) + " failed, " +
-            std::to_string(check.value("skipped", 0)) + " skipped.";
-  return s;
-}
+constexpr const char* kManifest = ".pxflow-report";
 
 std::string base64(const std::string& bytes) {
   static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -101,200 +41,172 @@ std::string slurp(const std::filesystem::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-Section accuracy_section(const ReportInputs& in) {
-  Section s{
-      "Accuracy",
-      "Frame flow against known motion (synthetic pairs) and agreement with OpenCV's DIS on real "
-      "video, beside OpenCV's pyramidal Lucas-Kanade and DIS, timed in the same run. Command: `" +
-          in.accuracy_command + "`; method details in docs/accuracy.md.",
-      in.accuracy.front(),
-      {in.accuracy.begin() + 1, in.accuracy.end()},
-      "",
-      in.pictures};
-  return s;
+// A table cell: a '|' would end it, so it is escaped.
+std::string md_cell(const std::string& c) {
+  std::string out;
+  for (char ch : c) {
+    if (ch == '|') out.push_back('\\');
+    out.push_back(ch);
+  }
+  return out;
 }
 
-bool timed(const Json& r) { return r.value("median_ns_per_frame", 0.0) > 0; }
-
-Section throughput(const Json& bench, const std::string& cmd) {
-  // The headline point: the batch sweep at 256 pairs, or the first point measured.
-  const Json* pick = nullptr;
-  for (const auto& r : bench["rows"])
-    if (timed(r) && r["sweep"] == "batch" && r["batch"] == 256) pick = &r;
-  if (!pick)
-    for (const auto& r : bench["rows"])
-      if (timed(r)) {
-        pick = &r;
-        break;
-      }
-  Section s{"Throughput",
-            "",
-            {"backend", "clock", "ns/frame (median)", "min..max", "frames/s", "ns/POI",
-             "cycles/frame", "x bound", "vs ref-original"},
-            {},
-            "",
-            {}};
-  if (!pick) return s.text = "No timed rows.", s;
-  auto same_point = [&](const Json& r) {
-    return timed(r) && r["sweep"] == (*pick)["sweep"] && r["batch"] == (*pick)["batch"] &&
-           r["width"] == (*pick)["width"] && r["search_radius"] == (*pick)["search_radius"] &&
-           r["threads"] == (*pick)["threads"];
-  };
-  std::vector<std::pair<std::string, double>> bars;
-  for (const auto& r : bench["rows"]) {
-    if (!same_point(r)) continue;
-    s.rows.push_back(
-        {r["backend"], r["source"], num(r["median_ns_per_frame"], "%.0f"),
-         num(r["min_ns_per_frame"], "%.0f") + ".." + num(r["max_ns_per_frame"], "%.0f"),
-         num(r["frames_per_s"]), num(r["ns_per_poi"]),
-         r.contains("cycles_per_frame") ? num(r["cycles_per_frame"], "%.0f") : "-",
-         r.contains("bound_ratio") ? num(r["bound_ratio"], "%.2f") : "-",
-         r.contains("speedup_vs_ref_original") ? num(r["speedup_vs_ref_original"], "%.2fx") : "-"});
-    if (r["source"].get<std::string>().rfind("host", 0) == 0)
-      bars.push_back({r["backend"], r["frames_per_s"]});
-  }
-  const std::string point = (*pick)["profile"].get<std::string>() + ", " +
-                            std::to_string((*pick)["width"].get<int>()) + "x" +
-                            std::to_string((*pick)["height"].get<int>()) + ", batch " +
-                            std::to_string((*pick)["batch"].get<int>()) + ", " +
-                            std::to_string((*pick)["threads"].get<int>()) + " threads";
-  s.title += " (" + point + ")";
-  s.text =
-      "Median of repeated runs after a warm-up run whose records matched ref-original. Speed-ups "
-      "compare rows of "
-      "the same clock only. Command: `" +
-      cmd + "`.";
-  s.svg = svg_bar_chart("Frames per second, host clock (" + point + ")", bars, "frames/s");
-  return s;
-}
-
-Section scaling(const Json& bench, const std::string& sweep, const std::string& title) {
-  // One row per backend, one column per measured x (batch size or frame size).
-  const bool by_batch = sweep == "batch";
-  std::map<std::string, Series> by_backend;
-  std::map<std::string, std::map<double, std::string>> cells;
-  std::map<double, std::string> columns;
-  for (const auto& r : bench["rows"]) {
-    if (!timed(r) || r["sweep"] != sweep || r["source"].get<std::string>().rfind("host", 0) != 0)
-      continue;
-    const double x =
-        by_batch ? r["batch"].get<double>() : r["width"].get<double>() * r["height"].get<double>();
-    columns[x] = by_batch ? std::to_string(r["batch"].get<int>())
-                          : std::to_string(r["width"].get<int>()) + "x" +
-                                std::to_string(r["height"].get<int>());
-    const double y = by_batch ? r["frames_per_s"].get<double>() : r["ns_per_poi"].get<double>();
-    auto& se = by_backend[r["backend"]];
-    se.name = r["backend"];
-    se.points.push_back({x, y});
-    cells[r["backend"]][x] = num(y);
-  }
-  Section s{title, "", {"backend"}, {}, "", {}};
-  if (cells.empty()) return s.text = "Not measured in this run.", s;
-  for (const auto& [_, name] : columns) s.header.push_back((by_batch ? "batch " : "") + name);
-  for (const auto& [backend, row] : cells) {
-    std::vector<std::string> r{backend};
-    for (const auto& [x, _] : columns) r.push_back(row.count(x) ? row.at(x) : "-");
-    s.rows.push_back(r);
-  }
-  std::vector<Series> series;
-  for (auto& [_, se] : by_backend) series.push_back(se);
-  s.text = by_batch
-               ? "Frames per second by batch size (host clock, same inputs for every backend)."
-               : "Nanoseconds per POI by frame size (host clock, same inputs for every backend).";
-  s.svg = by_batch ? svg_line_chart(title, series, "batch size (frame pairs per run)", "frames/s")
-                   : svg_line_chart(title, series, "frame size (pixels)", "ns per POI");
-  return s;
-}
-
-std::string render_md(const std::vector<Section>& secs, const std::string& intro) {
+std::string render_md(const std::vector<Section>& secs) {
   std::ostringstream o;
-  o << "# pxflow report\n\n" << intro << "\n";
+  o << "# pxflow report\n";
   for (const auto& s : secs) {
     o << "\n## " << s.title << "\n\n" << s.text << "\n";
     for (const auto& p : s.pictures) o << "\n![" << p.caption << "](" << p.file << ")\n";
+    for (const auto& c : s.charts)
+      o << "\nChart (in report.html; its data in results.json): " << c.title << "\n";
     if (s.rows.empty()) continue;
     o << "\n|";
-    for (const auto& h : s.header) o << " " << h << " |";
+    for (const auto& h : s.header) o << " " << md_cell(h) << " |";
     o << "\n|";
     for (std::size_t i = 0; i < s.header.size(); ++i) o << "---|";
     for (const auto& r : s.rows) {
       o << "\n|";
-      for (const auto& c : r) o << " " << c << " |";
+      for (const auto& c : r) o << " " << md_cell(c) << " |";
     }
     o << "\n";
   }
   return o.str();
 }
 
-std::string render_html(const std::vector<Section>& secs, const std::string& intro,
-                        const std::filesystem::path& dir) {
+std::string html_table(const Section& s) {
+  std::ostringstream o;
+  o << "<table><tr>";
+  for (const auto& h : s.header) o << "<th>" << html_escape(h) << "</th>";
+  o << "</tr>";
+  for (const auto& r : s.rows) {
+    o << "<tr>";
+    for (const auto& c : r)
+      o << "<td class='" << (c == "failed" || c == "passed" ? c : "") << "'>" << html_escape(c)
+        << "</td>";
+    o << "</tr>";
+  }
+  o << "</table>";
+  return o.str();
+}
+
+std::string render_html(const std::vector<Section>& secs, const std::filesystem::path& dir) {
   std::ostringstream o;
   o << "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>pxflow "
        "report</title><style>"
-       "body{font-family:sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;color:#222}"
-       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px "
-       "8px;font-size:13px}"
-       "th{background:#f0f0f0}code{background:#f4f4f4;padding:1px "
-       "4px}td.failed{color:#b00;font-weight:bold}"
-       "td.passed{color:#070}</style></head><body><h1>pxflow report</h1><p>"
-    << html_escape(intro) << "</p>";
+       "body{font-family:sans-serif;max-width:1060px;margin:1em auto;padding:0 1em;color:#222}"
+       "h1{margin:0.2em 0}table{border-collapse:collapse;margin:0.6em 0}"
+       "td,th{border:1px solid #ccc;padding:3px 8px;font-size:13px;vertical-align:top}"
+       "th{background:#f0f0f0}code{background:#f4f4f4;padding:1px 4px}"
+       "td.failed{color:#b00;font-weight:bold}td.passed{color:#070}"
+       "td:first-child{white-space:nowrap}"
+       ".first td,.first th{font-size:12px;padding:2px 6px}.first p{font-size:13px;margin:0.3em 0}"
+       ".first h2{font-size:16px;margin:0.5em 0 0.2em}"
+       "</style></head><body><h1>pxflow report</h1>";
+  bool first_screen = true;
   for (const auto& s : secs) {
-    o << "<h2>" << html_escape(s.title) << "</h2><p>" << html_escape(s.text) << "</p>" << s.svg;
+    const bool first = s.key == "provenance" || s.key == "backends";
+    if (first_screen && !first) {
+      o << "</div>";
+      first_screen = false;
+    }
+    if (first && s.key == "provenance") o << "<div class='first'>";
+    o << "<h2 id='" << html_escape(s.key) << "'>" << html_escape(s.title) << "</h2><p>"
+      << html_escape(s.text) << "</p>";
+    for (const auto& c : s.charts) o << "<div>" << svg_chart(c) << "</div>";
     for (const auto& p : s.pictures)  // inlined, so the page stays one self-contained file
       o << "<figure><img alt='" << html_escape(p.caption)
         << "' style='max-width:100%' src='data:image/png;base64," << base64(slurp(dir / p.file))
         << "'><figcaption>" << html_escape(p.caption) << "</figcaption></figure>";
-    if (s.rows.empty()) continue;
-    o << "<table><tr>";
-    for (const auto& h : s.header) o << "<th>" << html_escape(h) << "</th>";
-    o << "</tr>";
-    for (const auto& r : s.rows) {
-      o << "<tr>";
-      for (const auto& c : r)
-        o << "<td class='" << (c == "failed" || c == "passed" ? c : "") << "'>" << html_escape(c)
-          << "</td>";
-      o << "</tr>";
-    }
-    o << "</table>";
+    if (!s.rows.empty()) o << html_table(s);
   }
+  if (first_screen) o << "</div>";
   o << "</body></html>\n";
   return o.str();
 }
 
-std::string csv(const Json& bench) {
-  const char* cols[] = {"backend",
-                        "sweep",
-                        "profile",
-                        "width",
-                        "height",
-                        "search_radius",
-                        "batch",
-                        "threads",
-                        "source",
-                        "repeats",
-                        "median_ns_per_frame",
-                        "min_ns_per_frame",
-                        "max_ns_per_frame",
-                        "frames_per_s",
-                        "ns_per_poi",
-                        "cycles_per_frame",
-                        "bound_ratio",
-                        "speedup_vs_ref_original",
-                        "note"};
+std::string csv_cell(const Json& v) {
+  if (v.is_null()) return "";
+  if (!v.is_string()) return v.dump();
+  std::string s = "\"";
+  for (char c : v.get<std::string>()) s += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return s + "\"";
+}
+
+// One line per object of `rows`, the columns `cols` (missing keys empty).
+std::string csv(const std::vector<std::string>& cols, const std::vector<const Json*>& rows) {
   std::ostringstream o;
-  for (std::size_t i = 0; i < std::size(cols); ++i) o << (i ? "," : "") << cols[i];
+  for (std::size_t i = 0; i < cols.size(); ++i) o << (i ? "," : "") << cols[i];
   o << "\n";
-  if (bench.is_null()) return o.str();
-  for (const auto& r : bench["rows"]) {
-    for (std::size_t i = 0; i < std::size(cols); ++i) {
-      o << (i ? "," : "");
-      if (!r.contains(cols[i])) continue;
-      const auto& v = r[cols[i]];
-      o << (v.is_string() ? "\"" + v.get<std::string>() + "\"" : v.dump());
-    }
+  for (const Json* r : rows) {
+    for (std::size_t i = 0; i < cols.size(); ++i)
+      o << (i ? "," : "") << (r->contains(cols[i]) ? csv_cell((*r)[cols[i]]) : "");
     o << "\n";
   }
   return o.str();
+}
+
+std::vector<const Json*> sorted_by_rank(const Json& rows, const char* name_key) {
+  std::vector<const Json*> out;
+  if (rows.is_array())
+    for (const auto& r : rows) out.push_back(&r);
+  std::stable_sort(out.begin(), out.end(), [&](const Json* a, const Json* b) {
+    return registry_rank(a->value(name_key, "")) < registry_rank(b->value(name_key, ""));
+  });
+  return out;
+}
+
+std::string bench_csv(const Json& bench) {
+  // Point by point as the bench ran them, backends in registry order within a point.
+  std::vector<const Json*> rows;
+  if (!bench.is_null()) {
+    const Json& all = bench["rows"];
+    for (std::size_t i = 0; i < all.size();) {
+      std::size_t j = i;
+      while (j < all.size() && all[j]["sweep"] == all[i]["sweep"] &&
+             all[j]["batch"] == all[i]["batch"] && all[j]["width"] == all[i]["width"] &&
+             all[j]["height"] == all[i]["height"] &&
+             all[j]["search_radius"] == all[i]["search_radius"] &&
+             all[j]["threads"] == all[i]["threads"])
+        ++j;
+      std::vector<const Json*> group;
+      for (std::size_t k = i; k < j; ++k) group.push_back(&all[k]);
+      std::stable_sort(group.begin(), group.end(), [](const Json* a, const Json* b) {
+        return registry_rank(a->value("backend", "")) < registry_rank(b->value("backend", ""));
+      });
+      rows.insert(rows.end(), group.begin(), group.end());
+      i = j;
+    }
+  }
+  return csv({"backend",
+              "sweep",
+              "profile",
+              "width",
+              "height",
+              "search_radius",
+              "batch",
+              "threads",
+              "source",
+              "exact_clock",
+              "repeats",
+              "median_ns_per_frame",
+              "min_ns_per_frame",
+              "max_ns_per_frame",
+              "frames_per_s",
+              "ns_per_poi",
+              "cycles_per_frame",
+              "bound_ratio",
+              "speedup_vs_ref_original",
+              "note"},
+             rows);
+}
+
+Json section_json(const Section& s) {
+  Json charts = Json::array();
+  for (const auto& c : s.charts) charts.push_back(report::chart_json(c));
+  Json pictures = Json::array();
+  for (const auto& p : s.pictures) pictures.push_back({{"caption", p.caption}, {"file", p.file}});
+  return {{"key", s.key},   {"title", s.title}, {"text", s.text},      {"header", s.header},
+          {"rows", s.rows}, {"charts", charts}, {"pictures", pictures}};
 }
 
 void write_file(const std::filesystem::path& p, const std::string& text) {
@@ -303,7 +215,18 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
 
 }  // namespace
 
-constexpr const char* kManifest = ".pxflow-report";
+std::size_t registry_rank(const std::string& backend) {
+  const auto& rows = backend_rows();
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (rows[i].name == backend) return i;
+  return rows.size();
+}
+
+const std::vector<std::string>& report_file_names() {
+  static const std::vector<std::string> names{"report.md",   "report.html",     "results.json",
+                                              "results.csv", "conformance.csv", "accuracy.csv"};
+  return names;
+}
 
 void prepare_report_dir(const std::string& out_dir) {
   namespace fs = std::filesystem;
@@ -330,35 +253,66 @@ void write_report(const std::string& out_dir, const ReportInputs& in) {
   std::error_code ec;
   if (!std::filesystem::is_directory(out_dir, ec))
     throw InputError("--out " + out_dir + ": no such folder (prepare_report_dir first)");
-  const Json m = machine();
-  const std::string intro = "Made by `" + in.report_command + "` on " +
-                            m["host"].get<std::string>() + " (" + m["cpu"].get<std::string>() +
-                            ", " + std::to_string(m["cores"].get<unsigned>()) + " cores, " +
-                            m["os"].get<std::string>() + ") at " + m["date"].get<std::string>() +
-                            ". Raw data: results.json and results.csv beside this file.";
-  std::vector<Section> secs;
-  if (!in.check.is_null()) secs.push_back(conformance(in.check, in.check_command));
+  const Json build = build_provenance();
+  const Json machine = machine_provenance();
+  std::vector<Section> secs{report::provenance(in, build, machine), report::backends_section(in)};
+  if (!in.check.is_null()) secs.push_back(report::conformance(in.check, in.check_command));
   if (!in.bench.is_null()) {
-    secs.push_back(throughput(in.bench, in.bench_command));
-    secs.push_back(scaling(in.bench, "batch", "Scaling with batch size"));
-    secs.push_back(scaling(in.bench, "size", "Scaling with frame size"));
+    secs.push_back(report::throughput(in.bench, in.bench_command));
+    for (const char* sweep : {"batch", "size", "radius", "threads"})
+      secs.push_back(report::scaling(in.bench, sweep));
   }
-  if (!in.accuracy.empty()) secs.push_back(accuracy_section(in));
-  Json commands{
-      {"check", in.check_command}, {"bench", in.bench_command}, {"report", in.report_command}};
-  Json results{{"machine", m}, {"commands", nullptr}, {"check", in.check}, {"bench", in.bench}};
+  if (!in.accuracy.empty()) secs.push_back(report::accuracy(in));
+  Json commands{{"report", in.report_command},
+                {"check", in.check_command.empty() ? Json() : Json(in.check_command)},
+                {"bench", in.bench_command.empty() ? Json() : Json(in.bench_command)},
+                {"accuracy", in.accuracy_command.empty() ? Json() : Json(in.accuracy_command)}};
+  Json pictures = Json::array();
+  for (const auto& p : in.pictures) pictures.push_back({{"caption", p.caption}, {"file", p.file}});
+  Json results{{"schema", "pxflow-report"},
+               {"schema_version", 1},
+               {"provenance",
+                {{"build", build},
+                 {"machine", machine},
+                 {"backends", in.backends},
+                 {"backends_source", in.backends_source}}},
+               {"commands", nullptr},
+               {"check", in.check},
+               {"bench", in.bench},
+               {"accuracy", in.accuracy.empty() ? Json()
+                                                : Json{{"command", in.accuracy_command},
+                                                       {"rows", in.accuracy_rows}}},
+               {"pictures", pictures}};
   for (const auto& s : in.sections) {
-    for (const auto& t : s.tables) secs.push_back({t.title, t.text, t.header, t.rows, t.svg, {}});
+    for (std::size_t i = 0; i < s.tables.size(); ++i) {
+      const auto& t = s.tables[i];
+      secs.push_back(
+          {s.key + "-" + std::to_string(i + 1), t.title, t.text, t.header, t.rows, t.charts, {}});
+    }
     commands[s.key] = s.command;
     results[s.key] = s.data;
   }
   results["commands"] = commands;
+  results["sections"] = Json::array();
+  for (const auto& s : secs) results["sections"].push_back(section_json(s));
   const std::filesystem::path dir(out_dir);
-  write_file(dir / "report.md", render_md(secs, intro));
-  write_file(dir / "report.html", render_html(secs, intro, dir));
+  write_file(dir / "report.md", render_md(secs));
+  write_file(dir / "report.html", render_html(secs, dir));
   write_file(dir / "results.json", results.dump(2) + "\n");
-  write_file(dir / "results.csv", csv(in.bench));
-  std::string manifest = "report.md\nreport.html\nresults.json\nresults.csv\n";
+  write_file(dir / "results.csv", bench_csv(in.bench));
+  write_file(
+      dir / "conformance.csv",
+      csv({"name", "state", "passed", "failed", "not_applicable", "pairs", "seconds", "reason"},
+          in.check.is_null() ? std::vector<const Json*>{}
+                             : sorted_by_rank(in.check["backends"], "name")));
+  std::vector<const Json*> accuracy_rows;
+  for (const auto& r : in.accuracy_rows) accuracy_rows.push_back(&r);
+  write_file(dir / "accuracy.csv",
+             csv({"set", "setting", "against", "method", "frames", "with_flow", "mean_error_px",
+                  "p95_error_px", "median_us_per_frame"},
+                 accuracy_rows));
+  std::string manifest;
+  for (const auto& name : report_file_names()) manifest += name + "\n";
   for (const auto& p : in.pictures) manifest += p.file + "\n";
   write_file(dir / kManifest, manifest);
 }

@@ -7,8 +7,16 @@
 namespace pxflow {
 namespace {
 
-const char* kColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
-                          "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#393b79", "#637939"};
+// Nine well-separated hues (tab10 without its grey, which reference lines use), then two groups
+// of four strong colours that differ from those nine and among themselves (navy, dark orange,
+// lime, violet; black, gold, teal, magenta), then three light ones. In this build's registry
+// order the nine CPU rows take the hues, the four GAP8 rows (charted together, by their own
+// clock) the first group, OpenCL and Vulkan the second: every backend has a colour of its own.
+const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                          "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#000080",
+                          "#b35900", "#7fbf00", "#8000ff", "#000000", "#f3c300",
+                          "#008080", "#ff00ff", "#9c9ede", "#e7969c", "#8ca252"};
+const char* kMarkers[] = {"circle", "square", "triangle", "diamond", "down", "cross", "plus"};
 
 std::string fmt(const char* f, double v) {
   char b[64];
@@ -16,20 +24,198 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
+// A tick label: 3 significant digits at most, with k/M/G (0.5, 2, 50, 200, 5k, 1.2M).
 std::string si(double v) {
-  const char* units[] = {"", "k", "M", "G"};
+  const char* units[] = {"", "k", "M", "G", "T"};
   int u = 0;
-  while (std::fabs(v) >= 1000 && u < 3) v /= 1000, ++u;
-  return fmt(v < 10 ? "%.2g" : "%.0f", v) + units[u];
+  while (std::fabs(v) >= 1000 && u < 4) v /= 1000, ++u;
+  std::string s = fmt("%.3g", v);
+  return s + units[u];
 }
 
-// Log-scale range covering [lo, hi], widened to whole decades.
-std::pair<double, double> decades(double lo, double hi) {
-  return {std::floor(std::log10(lo)),
-          std::max(std::ceil(std::log10(hi)), std::floor(std::log10(lo)) + 1)};
+// The 1-2-5 value at or below (down) / at or above v > 0.
+double nice(double v, bool down) {
+  const double decade = std::pow(10, std::floor(std::log10(v)));
+  const double steps[] = {1, 2, 5, 10};
+  if (down) {
+    for (int i = 3; i >= 0; --i)
+      if (steps[i] * decade <= v * (1 + 1e-9)) return steps[i] * decade;
+    return decade;
+  }
+  for (double s : steps)
+    if (s * decade >= v * (1 - 1e-9)) return s * decade;
+  return 10 * decade;
+}
+
+// A linear axis's step: 1, 2 or 5 times a power of ten, giving 4 to 10 ticks.
+double linear_step(double span, bool integer) {
+  const double step = span > 0 ? nice(span / 6, false) : 1;
+  return integer ? std::max(1.0, step) : step;
+}
+
+std::string marker_svg(const std::string& marker, double x, double y, const std::string& c) {
+  auto pts = [&](std::initializer_list<std::pair<double, double>> offsets) {
+    std::string p;
+    for (auto [dx, dy] : offsets) p += fmt("%.1f,", x + dx) + fmt("%.1f ", y + dy);
+    return "<polygon points='" + p + "' fill='" + c + "'/>";
+  };
+  auto stroke = [&](double x1, double y1, double x2, double y2) {
+    return "<line x1='" + fmt("%.1f", x + x1) + "' y1='" + fmt("%.1f", y + y1) + "' x2='" +
+           fmt("%.1f", x + x2) + "' y2='" + fmt("%.1f", y + y2) + "' stroke='" + c +
+           "' stroke-width='2'/>";
+  };
+  if (marker == "square")
+    return "<rect x='" + fmt("%.1f", x - 3.5) + "' y='" + fmt("%.1f", y - 3.5) +
+           "' width='7' height='7' fill='" + c + "'/>";
+  if (marker == "triangle") return pts({{0, -4.5}, {4, 3}, {-4, 3}});
+  if (marker == "down") return pts({{0, 4.5}, {4, -3}, {-4, -3}});
+  if (marker == "diamond") return pts({{0, -5}, {4, 0}, {0, 5}, {-4, 0}});
+  if (marker == "cross") return stroke(-4, -4, 4, 4) + stroke(-4, 4, 4, -4);
+  if (marker == "plus") return stroke(-5, 0, 5, 0) + stroke(0, -5, 0, 5);
+  if (marker.empty()) return "";
+  return "<circle cx='" + fmt("%.1f", x) + "' cy='" + fmt("%.1f", y) + "' r='3.5' fill='" + c +
+         "'/>";
+}
+
+std::string text(double x, double y, const std::string& s, const char* extra = "") {
+  return "<text x='" + fmt("%.1f", x) + "' y='" + fmt("%.1f", y) + "' font-size='11' " + extra +
+         ">" + html_escape(s) + "</text>";
+}
+
+std::string open_svg(const Chart& c, int width, int height) {
+  return "<svg xmlns='http://www.w3.org/2000/svg' width='" + std::to_string(width) + "' height='" +
+         std::to_string(height) + "' role='img'><title>" + html_escape(c.title) +
+         "</title><text x='10' y='20' font-weight='bold' font-size='14'>" + html_escape(c.title) +
+         "</text>";
+}
+
+// Maps a value onto [p0, p1] pixels of an axis showing [lo, hi].
+struct Scale {
+  double lo, hi, p0, p1;
+  bool log;
+  double operator()(double v) const {
+    const double t = log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo))
+                         : (v - lo) / (hi - lo);
+    return p0 + t * (p1 - p0);
+  }
+};
+
+std::string bar_chart(const Chart& c) {
+  const int left = 150, width = 620, bar_h = 22, top = 40;
+  const int height = top + static_cast<int>(c.bars.size()) * bar_h + 45;
+  std::string s = open_svg(c, left + width + 120, height);
+  double lo = 1e300, hi = 0;
+  for (const Bar& b : c.bars) lo = std::min(lo, b.value), hi = std::max(hi, b.value);
+  const auto [a, b] = axis_range(c.x.log ? lo : 0, hi, c.x.log, c.x.integer);
+  const Scale X{a, b, double(left), double(left + width), c.x.log};
+  const int axis_y = height - 40;
+  for (double t : axis_ticks(a, b, c.x.log, c.x.integer))
+    s += "<line x1='" + fmt("%.1f", X(t)) + "' y1='" + std::to_string(top - 5) + "' x2='" +
+         fmt("%.1f", X(t)) + "' y2='" + std::to_string(axis_y) + "' stroke='#ddd'/>" +
+         text(X(t), axis_y + 14, si(t), "text-anchor='middle'");
+  s += text(left + width / 2.0, axis_y + 30, c.x.label, "text-anchor='middle' font-size='12'");
+  for (std::size_t i = 0; i < c.bars.size(); ++i) {
+    const Bar& bar = c.bars[i];
+    const int y = top + static_cast<int>(i) * bar_h;
+    const double w = std::max(1.0, X(bar.value) - left);
+    s += text(left - 6, y + 15, bar.label, "text-anchor='end' font-size='12'") + "<rect x='" +
+         std::to_string(left) + "' y='" + std::to_string(y + 3) + "' width='" + fmt("%.1f", w) +
+         "' height='" + std::to_string(bar_h - 6) + "' fill='" + bar.style.colour + "'/>" +
+         marker_svg(bar.style.marker, left + w + 7, y + 11, bar.style.colour) +
+         text(left + w + 15, y + 15, si(bar.value) + " " + c.unit);
+  }
+  return s + "</svg>";
+}
+
+std::string line_chart(const Chart& c) {
+  const int left = 70, top = 40, w = 540, h = 300, legend = 190;
+  std::string s = open_svg(c, left + w + legend, top + h + 50);
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const auto& se : c.series)
+    for (auto [x, y] : se.points)
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  const auto [xa, xb] = axis_range(x0, x1, c.x.log, c.x.integer);
+  const auto [ya, yb] = axis_range(y0, y1, c.y.log, c.y.integer);
+  const Scale X{xa, xb, double(left), double(left + w), c.x.log};
+  const Scale Y{ya, yb, double(top + h), double(top), c.y.log};
+  for (double t : axis_ticks(xa, xb, c.x.log, c.x.integer))
+    s += "<line x1='" + fmt("%.1f", X(t)) + "' y1='" + std::to_string(top) + "' x2='" +
+         fmt("%.1f", X(t)) + "' y2='" + std::to_string(top + h) + "' stroke='#ddd'/>" +
+         text(X(t), top + h + 15, si(t), "text-anchor='middle'");
+  for (double t : axis_ticks(ya, yb, c.y.log, c.y.integer))
+    s += "<line x1='" + std::to_string(left) + "' y1='" + fmt("%.1f", Y(t)) + "' x2='" +
+         std::to_string(left + w) + "' y2='" + fmt("%.1f", Y(t)) + "' stroke='#ddd'/>" +
+         text(left - 5, Y(t) + 4, si(t), "text-anchor='end'");
+  s += "<rect x='" + std::to_string(left) + "' y='" + std::to_string(top) + "' width='" +
+       std::to_string(w) + "' height='" + std::to_string(h) + "' fill='none' stroke='#999'/>";
+  s += text(left + w / 2.0, top + h + 35, c.x.label, "text-anchor='middle' font-size='12'");
+  s += "<text x='14' y='" + std::to_string(top + h / 2) +
+       "' font-size='12' transform='rotate(-90 14 " + std::to_string(top + h / 2) +
+       ")' text-anchor='middle'>" + html_escape(c.y.label) + "</text>";
+  for (std::size_t i = 0; i < c.series.size(); ++i) {
+    const Series& se = c.series[i];
+    auto sorted = se.points;
+    std::sort(sorted.begin(), sorted.end());
+    std::string pts;
+    for (auto [x, y] : sorted) pts += fmt("%.1f,", X(x)) + fmt("%.1f ", Y(y));
+    const std::string& col = se.style.colour;
+    const std::string dash = se.style.dashed ? "' stroke-dasharray='6 4" : "";
+    s += "<polyline fill='none' stroke='" + col + "' stroke-width='2" + dash + "' points='" + pts +
+         "'/>";
+    for (auto [x, y] : sorted) s += marker_svg(se.style.marker, X(x), Y(y), col);
+    const double ly = top + 10 + static_cast<double>(i) * 18;
+    const int lx = left + w + 12;
+    s += "<line x1='" + std::to_string(lx) + "' y1='" + fmt("%.1f", ly) + "' x2='" +
+         std::to_string(lx + 22) + "' y2='" + fmt("%.1f", ly) + "' stroke='" + col +
+         "' stroke-width='2" + dash + "'/>" + marker_svg(se.style.marker, lx + 11, ly, col) +
+         text(lx + 28, ly + 4, se.name, "font-size='12'");
+  }
+  return s + "</svg>";
 }
 
 }  // namespace
+
+ChartStyle backend_style(std::size_t index) {
+  const std::size_t colours = std::size(kColours);
+  // Past the palette the colours repeat with the marker shifted, so the pair stays unique.
+  return {kColours[index % colours], kMarkers[(index + index / colours) % std::size(kMarkers)],
+          false};
+}
+
+ChartStyle reference_style() { return {"#888888", "", true}; }
+
+std::pair<double, double> axis_range(double lo, double hi, bool log, bool integer) {
+  if (log) {
+    double a = nice(lo, true), b = nice(hi, false);
+    if (a == b) a = nice(a * 0.99, true), b = nice(b * 1.01, false);
+    return {a, b};
+  }
+  if (hi <= lo) lo -= 1, hi += 1;
+  const double step = linear_step(hi - lo, integer);
+  // From 0 when the data start within a third of their span of it (speed-ups, frames/s), else
+  // from the step below the data (search radius 2..8, threads 1..2).
+  const double a = lo >= 0 && lo <= (hi - lo) / 3 ? 0.0 : std::floor(lo / step) * step;
+  return {a, std::ceil(hi / step) * step};
+}
+
+std::vector<double> axis_ticks(double lo, double hi, bool log, bool integer) {
+  std::vector<double> ticks;
+  if (!(hi > lo)) return {lo};
+  if (log) {
+    const bool fine = std::log10(hi / lo) <= 3.01;
+    for (double decade = std::pow(10, std::floor(std::log10(lo))); decade <= hi * (1 + 1e-9);
+         decade *= 10)
+      for (double m : {1.0, 2.0, 5.0}) {
+        const double t = m * decade;
+        if ((fine || m == 1.0) && t >= lo * (1 - 1e-9) && t <= hi * (1 + 1e-9)) ticks.push_back(t);
+      }
+    return ticks;
+  }
+  const double step = linear_step(hi - lo, integer);
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + step * 1e-9; t += step)
+    ticks.push_back(std::fabs(t) < step * 1e-9 ? 0.0 : t);
+  return ticks;
+}
 
 std::string html_escape(const std::string& s) {
   std::string o;
@@ -47,6 +233,9 @@ std::string html_escape(const std::string& s) {
       case '"':
         o += "&quot;";
         break;
+      case '\'':
+        o += "&#39;";
+        break;
       default:
         o += c;
     }
@@ -54,89 +243,10 @@ std::string html_escape(const std::string& s) {
   return o;
 }
 
-std::string svg_bar_chart(const std::string& title,
-                          const std::vector<std::pair<std::string, double>>& bars,
-                          const std::string& unit) {
-  const int left = 150, width = 700, bar_h = 22, top = 40;
-  const int height = top + static_cast<int>(bars.size()) * bar_h + 40;
-  std::string s = "<svg xmlns='http://www.w3.org/2000/svg' width='" +
-                  std::to_string(left + width + 90) + "' height='" + std::to_string(height) +
-                  "' role='img'><title>" + html_escape(title) + "</title>";
-  s += "<text x='10' y='20' font-weight='bold'>" + html_escape(title) + "</text>";
-  if (bars.empty()) return s + "<text x='10' y='50'>no data</text></svg>";
-  double lo = 1e300, hi = 0;
-  for (const auto& [_, v] : bars) lo = std::min(lo, v), hi = std::max(hi, v);
-  const auto [d0, d1] = decades(lo, hi);
-  auto xpos = [&](double v) { return left + (std::log10(v) - d0) / (d1 - d0) * width; };
-  for (double d = d0; d <= d1; ++d) {
-    const double x = xpos(std::pow(10, d));
-    s += "<line x1='" + fmt("%.1f", x) + "' y1='" + std::to_string(top - 5) + "' x2='" +
-         fmt("%.1f", x) + "' y2='" + std::to_string(height - 30) + "' stroke='#ddd'/><text x='" +
-         fmt("%.1f", x) + "' y='" + std::to_string(height - 15) +
-         "' font-size='11' text-anchor='middle'>" + si(std::pow(10, d)) + "</text>";
-  }
-  for (std::size_t i = 0; i < bars.size(); ++i) {
-    const int y = top + static_cast<int>(i) * bar_h;
-    const double w = std::max(1.0, xpos(bars[i].second) - left);
-    s += "<text x='" + std::to_string(left - 6) + "' y='" + std::to_string(y + 15) +
-         "' font-size='12' text-anchor='end'>" + html_escape(bars[i].first) + "</text><rect x='" +
-         std::to_string(left) + "' y='" + std::to_string(y + 3) + "' width='" + fmt("%.1f", w) +
-         "' height='" + std::to_string(bar_h - 6) + "' fill='" + kColours[i % 12] + "'/><text x='" +
-         fmt("%.1f", left + w + 4) + "' y='" + std::to_string(y + 15) + "' font-size='11'>" +
-         si(bars[i].second) + " " + html_escape(unit) + "</text>";
-  }
-  return s + "</svg>";
-}
-
-std::string svg_line_chart(const std::string& title, const std::vector<Series>& series,
-                           const std::string& x_label, const std::string& y_label) {
-  const int left = 70, top = 40, w = 560, h = 300, legend = 170;
-  std::string s = "<svg xmlns='http://www.w3.org/2000/svg' width='" +
-                  std::to_string(left + w + legend) + "' height='" + std::to_string(top + h + 50) +
-                  "' role='img'><title>" + html_escape(title) + "</title>";
-  s += "<text x='10' y='20' font-weight='bold'>" + html_escape(title) + "</text>";
-  double x0 = 1e300, x1 = 0, y0 = 1e300, y1 = 0;
-  for (const auto& se : series)
-    for (auto [x, y] : se.points)
-      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-  if (x1 <= 0 || y1 <= 0) return s + "<text x='10' y='50'>no data</text></svg>";
-  const auto [dx0, dx1] = decades(x0, x1);
-  const auto [dy0, dy1] = decades(y0, y1);
-  auto X = [&](double x) { return left + (std::log10(x) - dx0) / (dx1 - dx0) * w; };
-  auto Y = [&](double y) { return top + h - (std::log10(y) - dy0) / (dy1 - dy0) * h; };
-  for (double d = dx0; d <= dx1; ++d)
-    s += "<line x1='" + fmt("%.1f", X(std::pow(10, d))) + "' y1='" + std::to_string(top) +
-         "' x2='" + fmt("%.1f", X(std::pow(10, d))) + "' y2='" + std::to_string(top + h) +
-         "' stroke='#ddd'/><text x='" + fmt("%.1f", X(std::pow(10, d))) + "' y='" +
-         std::to_string(top + h + 15) + "' font-size='11' text-anchor='middle'>" +
-         si(std::pow(10, d)) + "</text>";
-  for (double d = dy0; d <= dy1; ++d)
-    s += "<line x1='" + std::to_string(left) + "' y1='" + fmt("%.1f", Y(std::pow(10, d))) +
-         "' x2='" + std::to_string(left + w) + "' y2='" + fmt("%.1f", Y(std::pow(10, d))) +
-         "' stroke='#ddd'/><text x='" + std::to_string(left - 5) + "' y='" +
-         fmt("%.1f", Y(std::pow(10, d)) + 4) + "' font-size='11' text-anchor='end'>" +
-         si(std::pow(10, d)) + "</text>";
-  s += "<text x='" + std::to_string(left + w / 2) + "' y='" + std::to_string(top + h + 35) +
-       "' font-size='12' text-anchor='middle'>" + html_escape(x_label) + "</text><text x='12' y='" +
-       std::to_string(top + h / 2) + "' font-size='12' transform='rotate(-90 12 " +
-       std::to_string(top + h / 2) + ")' text-anchor='middle'>" + html_escape(y_label) + "</text>";
-  for (std::size_t i = 0; i < series.size(); ++i) {
-    std::string pts;
-    auto sorted = series[i].points;
-    std::sort(sorted.begin(), sorted.end());
-    for (auto [x, y] : sorted) pts += fmt("%.1f,", X(x)) + fmt("%.1f ", Y(y));
-    const std::string c = kColours[i % 12];
-    s += "<polyline fill='none' stroke='" + c + "' stroke-width='2' points='" + pts + "'/>";
-    for (auto [x, y] : sorted)
-      s += "<circle cx='" + fmt("%.1f", X(x)) + "' cy='" + fmt("%.1f", Y(y)) + "' r='3' fill='" +
-           c + "'/>";
-    const int ly = top + 10 + static_cast<int>(i) * 18;
-    s += "<rect x='" + std::to_string(left + w + 15) + "' y='" + std::to_string(ly - 9) +
-         "' width='12' height='12' fill='" + c + "'/><text x='" + std::to_string(left + w + 32) +
-         "' y='" + std::to_string(ly + 1) + "' font-size='12'>" + html_escape(series[i].name) +
-         "</text>";
-  }
-  return s + "</svg>";
+std::string svg_chart(const Chart& c) {
+  if (c.empty())
+    return open_svg(c, 400, 60) + "<text x='10' y='45' font-size='12'>no data</text></svg>";
+  return c.bars.empty() ? line_chart(c) : bar_chart(c);
 }
 
 }  // namespace pxflow

@@ -73,6 +73,15 @@ void OpenclBackend::read_device_limits() {
       limits_.chunk_bytes, tuning_.max_chunk_bytes ? tuning_.max_chunk_bytes : kDefaultChunkBytes);
 }
 
+Backend::Description OpenclBackend::describe() const {
+  const cl::DeviceEntry& d = program_->device;
+  return {std::string("kernels/opencl/opencl.cl ") + kernel_name(tuning_.layout) + ", group size " +
+              std::to_string(group_size_),
+          d.name + " (#" + std::to_string(d.index) + ")",
+          d.platform_name + ", " + cl::platform_string(d.platform, CL_PLATFORM_VERSION) +
+              ", driver " + cl::device_string(d.device, CL_DRIVER_VERSION)};
+}
+
 OpenclBackend::~OpenclBackend() {
   if (queue_) clFinish(queue_.get());  // no buffer is released while a command still uses it
 }

@@ -53,7 +53,8 @@ class OpenclBackend final : public Backend {
     return DeviceTime{"opencl-event-profiling", timing_.kernel_seconds * 1e9, std::nullopt};
   }
   const std::string& device_name() const { return program_->device.name; }
-  std::string device() const override { return device_name(); }
+  // The kernel layout, the device and the platform's version string (PoCL's names its release).
+  Description describe() const override;
   std::size_t group_size() const { return group_size_; }
   OpenclLayout layout() const { return tuning_.layout; }  // never kAuto
 

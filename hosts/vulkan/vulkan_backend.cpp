@@ -83,6 +83,21 @@ std::optional<Backend::DeviceTime> VulkanBackend::last_device_time() const {
 
 std::string VulkanBackend::device_name() const { return ctx_->properties().deviceName; }
 
+Backend::Description VulkanBackend::describe() const {
+  auto driver = vk::zeroed<VkPhysicalDeviceDriverProperties>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES);
+  auto props =
+      vk::zeroed<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
+  props.pNext = &driver;
+  vkGetPhysicalDeviceProperties2(ctx_->physical_device(), &props);
+  const std::uint32_t api = props.properties.apiVersion;
+  return {"kernels/vulkan/flow.comp (SPIR-V compute shader)",
+          device_name() + " (Vulkan " + std::to_string(VK_API_VERSION_MAJOR(api)) + "." +
+              std::to_string(VK_API_VERSION_MINOR(api)) + "." +
+              std::to_string(VK_API_VERSION_PATCH(api)) + ")",
+          std::string(driver.driverName) + ", " + driver.driverInfo};
+}
+
 std::vector<std::string> VulkanBackend::validation_messages() const { return ctx_->messages(); }
 
 std::uint64_t VulkanBackend::buffer_limit() const {

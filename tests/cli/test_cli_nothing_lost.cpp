@@ -136,7 +136,8 @@ TEST_CASE("report: a reused folder loses only the files the report wrote there",
   CHECK(slurp(dir.path("r/flow-old.png")).empty());  // listed by the old manifest: removed
   CHECK(slurp(dir.path("r/mine.txt")) == "the user's");
   CHECK(slurp(dir.path("escape.txt")) == "outside");
-  CHECK(slurp(out + "/.pxflow-report") == "report.md\nreport.html\nresults.json\nresults.csv\n");
+  CHECK(slurp(out + "/.pxflow-report") ==
+        "report.md\nreport.html\nresults.json\nresults.csv\nconformance.csv\naccuracy.csv\n");
 }
 
 TEST_CASE("SIGINT and SIGTERM stop a run soon, leave the previous file, exit 130 and 143",

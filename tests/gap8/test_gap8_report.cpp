@@ -62,9 +62,58 @@ TEST_CASE("pxflow report leaves the GAP8 section out for other backends or with 
     const RunResult r = report(dir, "without", extra);
     INFO(r.out << r.err);
     REQUIRE(r.exit_code == 0);
-    CHECK(slurp(dir.path("without/report.md")).find("GAP8 model") == std::string::npos);
+    CHECK(slurp(dir.path("without/report.md")).find("## GAP8 model") == std::string::npos);
     CHECK(nlohmann::json::parse(slurp(dir.path("without/results.json")))["gap8"].is_null());
   }
+}
+
+TEST_CASE("pxflow report charts the GAP8 rows by the model's clock, apart from the host's",
+          "[gap8][report]") {
+  TempDir dir;
+  make_small_results(dir);
+  REQUIRE(run_pxflow({"bench", "--backends", "gap8-fast,ref-original", "--batch", "1", "--min-time",
+                      "0", "--json", dir.path("b.json")})
+              .exit_code == 0);
+  nlohmann::json bench = nlohmann::json::parse(slurp(dir.path("b.json")));
+  for (auto& r : bench["rows"]) r["sweep"] = "batch";  // as the default sweeps name them
+  dir.write("b.json", bench.dump());
+  const RunResult r = report(dir, "r", {"--backends", "ref-original,gap8-fast"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(slurp(dir.path("r/results.json")));
+  bool host_chart = false, model_chart = false, speedup_chart = false;
+  for (const auto& s : j["sections"])
+    for (const auto& c : s["charts"]) {
+      const std::string title = c["title"];
+      std::string labels;
+      for (const auto& b : c["bars"]) labels += b["label"].get<std::string>() + ";";
+      for (const auto& se : c["series"]) labels += se["name"].get<std::string>() + ";";
+      if (title.find("by the host clock") != std::string::npos) {
+        host_chart = true;
+        CHECK(labels == "ref-original;");  // never the model's frames/s beside the host's
+      }
+      if (title.find("exact model clock") != std::string::npos && c["kind"] == "bar") {
+        model_chart = true;
+        CHECK(labels == "gap8-fast (batch 1);");
+      }
+      if (title == "GAP8 model: speed-up over 1 core") {
+        speedup_chart = true;
+        CHECK(c["x_axis"]["log"] == false);  // 1..8 cores, every one labelled
+        CHECK(c["x_axis"]["integer"] == true);
+        CHECK(c["y_axis"]["log"] == false);
+      }
+    }
+  CHECK(host_chart);
+  CHECK(model_chart);
+  CHECK(speedup_chart);
+  const std::string md = slurp(dir.path("r/report.md"));
+  CHECK(md.find("| gap8-fast (model clock) |") != std::string::npos);  // the batch sweep's row
+  // The model's version is in the provenance, from the backend itself.
+  bool described = false;
+  for (const auto& b : j["provenance"]["backends"])
+    if (b["name"] == "gap8-fast")
+      described = b["driver"].get<std::string>().rfind("gap8_model ", 0) == 0;
+  CHECK(described);
 }
 
 }  // namespace pxflow::test

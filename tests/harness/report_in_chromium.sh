@@ -24,4 +24,10 @@ dom=$(timeout 120 "$browser" "${flags[@]}" --dump-dom "file://$out/report.html" 
 charts=$(grep -o "<svg" <<<"$dom" | wc -l)
 [ "$charts" -ge 3 ] || { echo "FAIL: expected >= 3 charts in the rendered page, found $charts"; exit 1; }
 grep -q "Conformance" <<<"$dom" || { echo "FAIL: conformance section missing"; exit 1; }
+# Provenance comes first: the build's commit and the backends' descriptions before any result.
+commit=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["provenance"]["build"]["commit"])' "$out/results.json")
+head=${dom%%id=\"conformance\"*}
+for want in "id=\"provenance\"" "commit $commit" "What each backend runs" "ref-local"; do
+  grep -qF "$want" <<<"$head" || { echo "FAIL: '$want' not before the conformance section"; exit 1; }
+done
 echo "report renders: $charts charts, screenshot $out/report.png"

@@ -4,6 +4,7 @@
 #include "errors.hpp"
 #include "gap8_cli.hpp"
 #include "gap8_study.hpp"
+#include "report.hpp"
 #include "svg_chart.hpp"
 
 namespace pxflow::cli {
@@ -23,13 +24,22 @@ ReportInputs::Table core_counts(const gap8_study::Study& s, const std::string& c
           " MHz; speed-up over 1 core against Amdahl's limit from the 1-core phases. "
           "Command: `" +
           command + "`.",
-      {"variant", "cores", "cycles", "frames/s", "latency ms", "speed-up", "Amdahl's limit"},
+      {"variant", "cores", "cycles", "frames/s (model clock)", "latency ms", "speed-up",
+       "Amdahl's limit"},
       {},
-      ""};
-  std::vector<Series> lines;
-  Series ideal{"linear (ideal)", {}};
+      {}};
+  // Linear axes: 1 to 8 cores, speed-ups up to 8, every value readable off a labelled tick.
+  Chart chart{"GAP8 model: speed-up over 1 core",
+              {"cluster cores", false, true},
+              {"speed-up over 1 core", false},
+              {},
+              {},
+              ""};
+  Series ideal{"linear (ideal)", {}, reference_style()};
   for (Gap8Variant v : s.options.variants) {
-    Series se{gap8_variant(v).name, {}};
+    // The colour and marker of the variant's registry row (gap8-<variant>), as in every chart.
+    const std::string row = std::string("gap8-") + gap8_variant(v).name;
+    Series se{row, {}, backend_style(registry_rank(row))};
     for (const auto& [cores, m] : s.results.at(v)) {
       const double speedup = gap8_study::speedup(s, v, cores);
       t.rows.push_back({gap8_variant(v).name, std::to_string(cores), fixed(m.cycles, "%.0f"),
@@ -39,10 +49,10 @@ ReportInputs::Table core_counts(const gap8_study::Study& s, const std::string& c
       se.points.push_back({double(cores), speedup});
       if (v == s.options.variants.front()) ideal.points.push_back({double(cores), double(cores)});
     }
-    lines.push_back(se);
+    chart.series.push_back(se);
   }
-  lines.push_back(ideal);
-  t.svg = svg_line_chart("GAP8 model: speed-up over 1 core", lines, "cluster cores", "speed-up");
+  chart.series.push_back(ideal);
+  t.charts.push_back(chart);
   return t;
 }
 
@@ -66,7 +76,7 @@ void add_gap8_tables(ReportInputs& in) {
                               std::string("Not measured: ") + e.what(),
                               {},
                               {},
-                              ""});
+                              {}});
     return;
   }
   const FramePair pair{frames.prev.view(), frames.next.view()};
@@ -86,7 +96,7 @@ void add_gap8_tables(ReportInputs& in) {
                           first ? intro : "Same run as above.",
                           {"figure", "variant", "model", "paper", "diff"},
                           {},
-                          ""};
+                          {}};
     first = false;
     for (const auto& l : pt.lines) t.rows.push_back({l.label, l.variant, l.model, l.paper, l.diff});
     section.tables.push_back(std::move(t));

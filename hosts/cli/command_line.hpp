@@ -1,0 +1,39 @@
+// The command line a subcommand actually ran, rebuilt from what CLI11 parsed (global options,
+// then the subcommand and its options, in declaration order), for results files and reports:
+// "pxflow --disable-isa avx512bw bench --backends cpu --batch 1,16 --json b.json".
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace pxflow::cli {
+
+inline std::string shell_word(const std::string& s) {
+  if (!s.empty() && s.find_first_of(" \t\n'\"\\$`*?;&|<>()[]{}!#~") == std::string::npos) return s;
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+inline std::string given_options(const CLI::App& app) {
+  std::string line;
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->count() == 0 || opt->get_name() == "--help" || opt->get_name() == "--version")
+      continue;
+    const std::string name = opt->get_name();
+    if (opt->get_items_expected_min() == 0) {  // a flag
+      line.append(" ").append(name);
+      continue;
+    }
+    for (const std::string& value : opt->results())
+      line.append(" ").append(name).append(" ").append(shell_word(value));
+  }
+  return line;
+}
+
+inline std::string given_command_line(const CLI::App& sub) {
+  const CLI::App* parent = sub.get_parent();
+  return "pxflow" + (parent ? given_options(*parent) : std::string()) + " " + sub.get_name() +
+         given_options(sub);
+}
+
+}  // namespace pxflow::cli

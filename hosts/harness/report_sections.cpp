@@ -1,0 +1,402 @@
+#include "report_sections.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <set>
+
+namespace pxflow::report {
+namespace {
+
+std::string num(double v, const char* f = "%.1f") {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+std::string str(const Json& j, const char* key) {
+  return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string();
+}
+
+bool timed(const Json& r) { return r.value("median_ns_per_frame", 0.0) > 0; }
+bool host_clock(const Json& r) { return str(r, "source").rfind("host", 0) == 0; }
+// A deterministic device clock (the GAP8 model's cycles): one checked run is the measurement.
+bool exact_clock(const Json& r) { return r.value("exact_clock", false); }
+
+ChartStyle style_of(const std::string& backend) { return backend_style(registry_rank(backend)); }
+
+// The rows of `rows` sorted by registry order, stable within a backend (the bench's order).
+std::vector<const Json*> in_registry_order(const Json& rows) {
+  std::vector<const Json*> out;
+  for (const auto& r : rows) out.push_back(&r);
+  std::stable_sort(out.begin(), out.end(), [](const Json* a, const Json* b) {
+    return registry_rank(str(*a, "backend")) < registry_rank(str(*b, "backend"));
+  });
+  return out;
+}
+
+std::string point_name(const Json& r) {
+  return str(r, "profile") + ", " + std::to_string(r.value("width", 0)) + "x" +
+         std::to_string(r.value("height", 0)) +
+         ", S=" + std::to_string(r.value("search_radius", 0)) + ", batch " +
+         std::to_string(r.value("batch", 0)) + ", " + std::to_string(r.value("threads", 0)) +
+         " threads";
+}
+
+bool same_problem(const Json& a, const Json& b) {
+  return a["width"] == b["width"] && a["height"] == b["height"] &&
+         a["search_radius"] == b["search_radius"] && a["threads"] == b["threads"];
+}
+
+bool same_point(const Json& a, const Json& b) {
+  return same_problem(a, b) && a["sweep"] == b["sweep"] && a["batch"] == b["batch"];
+}
+
+std::vector<std::string> bench_cells(const Json& r) {
+  if (!timed(r)) return {str(r, "backend"), "-", "-", "-", "-", "-", "-", "-", "-", str(r, "note")};
+  return {str(r, "backend"),
+          str(r, "source"),
+          num(r["median_ns_per_frame"], "%.0f"),
+          num(r["min_ns_per_frame"], "%.0f") + ".." + num(r["max_ns_per_frame"], "%.0f"),
+          num(r["frames_per_s"]),
+          num(r["ns_per_poi"]),
+          r.contains("cycles_per_frame") ? num(r["cycles_per_frame"], "%.0f") : "-",
+          r.contains("bound_ratio") ? num(r["bound_ratio"], "%.2fx") : "-",
+          r.contains("speedup_vs_ref_original") ? num(r["speedup_vs_ref_original"], "%.2fx") : "-",
+          str(r, "note")};
+}
+
+// What a sweep varies, how its x is named, and the figure it plots.
+struct SweepInfo {
+  const char* name;
+  const char* title;
+  const char* x_label;
+  bool x_log;
+  bool per_poi;  // ns per POI (frame size) instead of frames per second
+};
+constexpr SweepInfo kSweeps[] = {
+    {"batch", "Scaling with batch size", "batch size (frame pairs per run)", true, false},
+    {"size", "Scaling with frame size", "frame size (pixels)", true, true},
+    {"radius", "Scaling with search radius", "search radius S (pixels)", false, false},
+    {"threads", "Scaling with threads", "host threads (the model clock does not depend on them)",
+     false, false},
+};
+
+double sweep_x(const SweepInfo& s, const Json& r) {
+  const std::string n = s.name;
+  if (n == "batch") return r["batch"].get<double>();
+  if (n == "size") return r["width"].get<double>() * r["height"].get<double>();
+  if (n == "radius") return r["search_radius"].get<double>();
+  return r["threads"].get<double>();
+}
+
+std::string sweep_column(const SweepInfo& s, const Json& r) {
+  const std::string n = s.name;
+  if (n == "batch") return "batch " + std::to_string(r["batch"].get<int>());
+  if (n == "size")
+    return std::to_string(r["width"].get<int>()) + "x" + std::to_string(r["height"].get<int>());
+  if (n == "radius") return "S=" + std::to_string(r["search_radius"].get<int>());
+  return std::to_string(r["threads"].get<int>()) + " threads";
+}
+
+// A row of the batch sweep that is the sweep's point at its default value (e.g. batch 256 at
+// all cores, 64x64, S=4 for the radius sweep): the same problem but the swept parameter.
+// For an exact-clock backend (`any_batch`), whose large batches are not simulated, any batch.
+bool anchors(const SweepInfo& s, const Json& first, const Json& r, bool any_batch) {
+  const std::string n = s.name;
+  if (n == "batch" || r["sweep"] != "batch" || (!any_batch && r["batch"] != first["batch"]))
+    return false;
+  const bool size = r["width"] == first["width"] && r["height"] == first["height"];
+  const bool radius = r["search_radius"] == first["search_radius"];
+  const bool threads = r["threads"] == first["threads"];
+  if (n == "size") return radius && threads;
+  if (n == "radius") return size && threads;
+  return size && radius;  // threads
+}
+
+// The point a sweep holds fixed, without the swept value.
+std::string fixed_part(const SweepInfo& s, const Json& r) {
+  const std::string n = s.name;
+  std::string out = str(r, "profile");
+  if (n != "size")
+    out += ", " + std::to_string(r.value("width", 0)) + "x" + std::to_string(r.value("height", 0));
+  if (n != "radius") out += ", S=" + std::to_string(r.value("search_radius", 0));
+  if (n != "batch") out += ", batch " + std::to_string(r.value("batch", 0));
+  if (n != "threads") out += ", " + std::to_string(r.value("threads", 0)) + " threads";
+  return out;
+}
+
+}  // namespace
+
+Section provenance(const ReportInputs& in, const Json& build, const Json& machine) {
+  Section s{"provenance",
+            "Provenance",
+            "Where these results come from. Raw data: results.json (schema: docs/report-schema.md) "
+            "and the CSV files beside this page.",
+            {"what", "value"},
+            {},
+            {},
+            {}};
+  s.rows.push_back(
+      {"pxflow", str(build, "version") + ", commit " + str(build, "commit") +
+                     (build.value("dirty", false) ? " (dirty: uncommitted changes)" : " (clean)")});
+  s.rows.push_back({"compiler", str(build, "compiler") + ", " + str(build, "build_type") + ": " +
+                                    str(build, "cxx_flags")});
+  s.rows.push_back(
+      {"CPU", str(machine, "cpu") + ", " + std::to_string(machine.value("cores", 0)) + " cores"});
+  s.rows.push_back({"system", str(machine, "os") + ", " + str(machine, "kernel") + ", host " +
+                                  str(machine, "host") + ", " + str(machine, "date")});
+  s.rows.push_back({"report", in.report_command});
+  if (!in.check_command.empty()) s.rows.push_back({"check", in.check_command});
+  if (!in.bench_command.empty()) s.rows.push_back({"bench", in.bench_command});
+  if (!in.accuracy_command.empty()) s.rows.push_back({"accuracy", in.accuracy_command});
+  for (const auto& sec : in.sections) s.rows.push_back({sec.key, sec.command});
+  return s;
+}
+
+Section backends_section(const ReportInputs& in) {
+  Section s{"backends",
+            "What each backend runs",
+            in.backends_source,
+            {"backend", "implementation", "device", "driver / version"},
+            {},
+            {},
+            {}};
+  for (const Json* b : in_registry_order(in.backends))
+    s.rows.push_back(
+        {str(*b, "name"), str(*b, "implementation"), str(*b, "device"), str(*b, "driver")});
+  if (s.rows.empty()) s.text += " No backend was opened.";
+  return s;
+}
+
+Section conformance(const Json& check, const std::string& cmd) {
+  Section s{
+      "conformance",
+      "Conformance",
+      "Every backend against `ref-original`, records byte for byte and flow by bits, on " +
+          std::to_string(check.value("cases", 0)) + " cases (" +
+          std::to_string(check.value("pairs", 0)) + " frame pairs), seed " +
+          std::to_string(check.value("seed", 0)) + ". Command: `" + cmd + "`.",
+      {"backend", "result", "cases passed", "cases failed", "n/a", "pairs", "run time s", "note"},
+      {},
+      {},
+      {}};
+  std::vector<const Json*> backends;
+  for (const auto& b : check["backends"]) backends.push_back(&b);
+  std::stable_sort(backends.begin(), backends.end(), [](const Json* a, const Json* b) {
+    return registry_rank(str(*a, "name")) < registry_rank(str(*b, "name"));
+  });
+  for (const Json* b : backends)
+    s.rows.push_back({str(*b, "name"), str(*b, "state"), std::to_string(b->value("passed", 0L)),
+                      std::to_string(b->value("failed", 0L)),
+                      std::to_string(b->value("not_applicable", 0L)),
+                      std::to_string(b->value("pairs", 0L)), num(b->value("seconds", 0.0), "%.2f"),
+                      str(*b, "reason")});
+  s.text += " Totals: " + std::to_string(check.value("passed", 0)) + " passed, " +
+            std::to_string(check.value("failed", 0)) + " failed, " +
+            std::to_string(check.value("skipped", 0)) + " skipped.";
+  return s;
+}
+
+Section throughput(const Json& bench, const std::string& cmd) {
+  Section s{"throughput",
+            "Throughput",
+            "",
+            {"backend", "clock", "ns/frame (median)", "min..max", "frames/s", "ns/POI",
+             "cycles/frame", "x bound", "vs ref-original", "note"},
+            {},
+            {},
+            {}};
+  // The headline point: the batch sweep at 256 pairs, or the first point a host clock timed.
+  const Json* pick = nullptr;
+  for (const auto& r : bench["rows"])
+    if (timed(r) && host_clock(r) && r["sweep"] == "batch" && r["batch"] == 256) pick = &r;
+  for (const auto& r : bench["rows"])
+    if (!pick && timed(r) && host_clock(r)) pick = &r;
+  if (!pick) {
+    s.text = "No row was timed by the host clock. Command: `" + cmd + "`.";
+    return s;
+  }
+  const std::string point = point_name(*pick);
+  s.title += " (" + point + ")";
+  Chart host{"Frames per second by the host clock (" + point + ")",
+             {"frames per second (log scale)", true},
+             {"", false},
+             {},
+             {},
+             "frames/s"};
+  // Exact-clock backends (the GAP8 model) are charted apart, by their own clock: at the point,
+  // or at the largest batch of the same problem the bench simulated.
+  std::map<std::string, const Json*> model;
+  for (const Json* r : in_registry_order(bench["rows"])) {
+    if (same_point(*r, *pick)) {
+      s.rows.push_back(bench_cells(*r));
+      if (timed(*r) && host_clock(*r))
+        host.bars.push_back(
+            {str(*r, "backend"), (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
+    }
+    if (exact_clock(*r) && timed(*r) && same_problem(*r, *pick) &&
+        (*r)["sweep"] == (*pick)["sweep"]) {
+      const Json*& best = model[str(*r, "backend")];
+      if (!best || (*r)["batch"].get<int>() > (*best)["batch"].get<int>()) best = r;
+    }
+  }
+  Chart sim{"Frames per second by the exact model clock, not the host (" + str(*pick, "profile") +
+                ", " + std::to_string(pick->value("width", 0)) + "x" +
+                std::to_string(pick->value("height", 0)) + ")",
+            {"frames per second at the model's clock (log scale)", true},
+            {"", false},
+            {},
+            {},
+            "frames/s"};
+  std::vector<const Json*> model_rows;
+  for (const auto& [_, r] : model) model_rows.push_back(r);
+  std::stable_sort(model_rows.begin(), model_rows.end(), [](const Json* a, const Json* b) {
+    return registry_rank(str(*a, "backend")) < registry_rank(str(*b, "backend"));
+  });
+  for (const Json* r : model_rows) {
+    if (!same_point(*r, *pick)) s.rows.push_back(bench_cells(*r));
+    sim.bars.push_back(
+        {str(*r, "backend") + " (batch " + std::to_string((*r)["batch"].get<int>()) + ")",
+         (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
+  }
+  s.text =
+      "Median of repeated runs after a warm-up run whose records matched ref-original; a backend "
+      "with an exact clock (a deterministic cycle model) is timed by that clock from its one "
+      "checked "
+      "run and charted apart, never beside the host's figures. Speed-ups compare rows of the "
+      "same clock only. Command: `" +
+      cmd + "`.";
+  if (!host.bars.empty()) s.charts.push_back(host);
+  if (!sim.bars.empty()) s.charts.push_back(sim);
+  return s;
+}
+
+Section scaling(const Json& bench, const std::string& sweep) {
+  const SweepInfo* info = nullptr;
+  for (const SweepInfo& si : kSweeps)
+    if (sweep == si.name) info = &si;
+  Section s{"scaling-" + sweep, info ? info->title : sweep, "", {"backend"}, {}, {}, {}};
+  if (!info) return s;
+  std::vector<const Json*> rows;
+  for (const auto& r : bench["rows"])
+    if (r["sweep"] == sweep) rows.push_back(&r);
+  if (rows.empty()) {
+    s.text = "Not part of this bench run: its command (see Provenance) left this sweep out.";
+    return s;
+  }
+  const Json first = *rows.front();
+  std::set<std::string> model_backends;  // their rows that are not timed are theirs too
+  for (const auto& r : bench["rows"])
+    if (exact_clock(r)) model_backends.insert(str(r, "backend"));
+  // The sweep's point at its default value, from the batch sweep; for an exact-clock backend
+  // the largest batch it simulated there (its cycles per frame do not depend on the batch).
+  std::map<std::string, const Json*> model_anchor;
+  for (const auto& r : bench["rows"]) {
+    const bool model = model_backends.count(str(r, "backend")) > 0;
+    if (!model && anchors(*info, first, r, false)) rows.push_back(&r);
+    if (model && timed(r) && anchors(*info, first, r, true)) {
+      const Json*& best = model_anchor[str(r, "backend")];
+      if (!best || r["batch"].get<int>() > (*best)["batch"].get<int>()) best = &r;
+    }
+  }
+  for (const auto& [_, r] : model_anchor) rows.push_back(r);
+  // One table row per backend and clock kind (device-clock rows time the kernel only: left to
+  // the CSV); one column per x.
+  std::map<double, std::string> columns;
+  struct Line {
+    std::string label;
+    bool model = false;
+    std::map<double, std::string> cells;
+    std::set<std::string> notes;
+    Series series;
+  };
+  std::map<std::pair<std::size_t, std::string>, Line> lines;
+  for (const Json* r : rows) {
+    const bool model = model_backends.count(str(*r, "backend")) > 0;
+    if (timed(*r) && !model && !host_clock(*r)) continue;
+    const std::string backend = str(*r, "backend");
+    const double x = sweep_x(*info, *r);
+    columns[x] = sweep_column(*info, *r);
+    Line& l = lines[{registry_rank(backend), backend + (model ? " (model clock)" : "")}];
+    l.label = backend + (model ? " (model clock)" : "");
+    l.model = model;
+    l.series.name = backend;
+    l.series.style = style_of(backend);
+    if (!timed(*r)) {
+      const std::string note = str(*r, "note");
+      l.cells[x] = note.substr(0, note.find(':'));
+      l.notes.insert(note);
+      continue;
+    }
+    const double y =
+        info->per_poi ? (*r)["ns_per_poi"].get<double>() : (*r)["frames_per_s"].get<double>();
+    l.cells[x] = num(y);
+    l.series.points.push_back({x, y});
+  }
+  for (const auto& [_, name] : columns) s.header.push_back(name);
+  s.header.push_back("note");
+  const std::string y_label = info->per_poi ? "ns per POI (log scale)" : "frames/s (log scale)";
+  Chart host, model;
+  host.title = std::string(info->title) + ", host clock";
+  model.title = std::string(info->title) + ", exact model clock (not the host)";
+  for (Chart* c : {&host, &model}) {
+    c->x = {info->x_label, info->x_log, !info->x_log};  // S and threads are whole numbers
+    c->y = {y_label, true};
+  }
+  for (const auto& [_, l] : lines) {
+    std::vector<std::string> row{l.label};
+    for (const auto& [x, __] : columns) row.push_back(l.cells.count(x) ? l.cells.at(x) : "-");
+    std::string notes;
+    for (const auto& n : l.notes) notes += (notes.empty() ? "" : "; ") + n;
+    row.push_back(notes);
+    s.rows.push_back(row);
+    if (!l.series.points.empty()) (l.model ? model : host).series.push_back(l.series);
+  }
+  s.text = std::string(info->per_poi ? "Nanoseconds per POI" : "Frames per second") + " by " +
+           info->x_label + ", at " + fixed_part(*info, first) +
+           "; the same inputs for every backend. Exact-clock rows (a deterministic cycle model) "
+           "are charted "
+           "apart, by the model's clock, from the pairs their note names. Cells that are not "
+           "numbers say why (n/a: outside the backend's limits; not run: the note says how to run "
+           "it).";
+  if (!host.series.empty()) s.charts.push_back(host);
+  if (!model.series.empty()) s.charts.push_back(model);
+  return s;
+}
+
+Section accuracy(const ReportInputs& in) {
+  return {"accuracy",
+          "Accuracy",
+          "Frame flow against known motion (synthetic pairs) and agreement with OpenCV's DIS on "
+          "real video, beside OpenCV's pyramidal Lucas-Kanade and DIS, timed in the same run. "
+          "Command: `" +
+              in.accuracy_command + "`; method details in docs/accuracy.md.",
+          in.accuracy.front(),
+          {in.accuracy.begin() + 1, in.accuracy.end()},
+          {},
+          in.pictures};
+}
+
+Json chart_json(const Chart& c) {
+  auto style = [](const ChartStyle& st) {
+    return Json{{"colour", st.colour}, {"marker", st.marker}, {"dashed", st.dashed}};
+  };
+  Json j{{"title", c.title},
+         {"kind", c.bars.empty() ? "line" : "bar"},
+         {"x_axis", {{"label", c.x.label}, {"log", c.x.log}, {"integer", c.x.integer}}},
+         {"y_axis", {{"label", c.y.label}, {"log", c.y.log}, {"integer", c.y.integer}}},
+         {"unit", c.unit},
+         {"series", Json::array()},
+         {"bars", Json::array()}};
+  for (const Series& se : c.series) {
+    Json points = Json::array();
+    for (auto [x, y] : se.points) points.push_back({x, y});
+    j["series"].push_back({{"name", se.name}, {"style", style(se.style)}, {"points", points}});
+  }
+  for (const Bar& b : c.bars)
+    j["bars"].push_back({{"label", b.label}, {"value", b.value}, {"style", style(b.style)}});
+  return j;
+}
+
+}  // namespace pxflow::report
