@@ -41,7 +41,7 @@ OwnedPair all_accepted_pair(const Params& p) {
 }
 
 ReportInputs::Table not_measured(const std::string& why) {
-  return {"Cortex-M4 (m4-qemu) beside the ISCAS 2022 paper", "Not measured: " + why, {}, {}, ""};
+  return {"Cortex-M4 (m4-qemu) beside the ISCAS 2022 paper", "Not measured: " + why, {}, {}, {}};
 }
 
 void add_m4_section(ReportInputs& in) {
@@ -88,7 +88,7 @@ void add_m4_section(ReportInputs& in) {
           section.command + "`; docs/cortex-m4.md.",
       {"figure", "m4-qemu (instructions)", "paper (Cortex-M4F cycles, estimated)"},
       {},
-      ""};
+      {}};
   table.rows.push_back({"per frame, original algorithm", num(insns), num(kPaperCycles)});
   table.rows.push_back(
       {"USAD8/USADA8 per frame", num(static_cast<double>(counts.sad_ops)), num(kPaperSads)});
