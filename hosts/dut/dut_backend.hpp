@@ -44,6 +44,13 @@ class DutBackend : public Backend {
            OpCounts& counts) override;
   std::string unsupported(const Params& p) const override;
   std::optional<DeviceTime> last_device_time() const override { return last_time_; }
+  // The device's own name and build (its HELLO) and the link it is reached through.
+  Description describe() const override {
+    const Hello& h = dev_->hello();
+    return {h.name + (h.build.empty() ? "" : " (build " + h.build + ")"),
+            "device under test at " + dev_->spec().text,
+            "pxflow device protocol v" + std::to_string(h.version)};
+  }
 
  private:
   void run_pair(const FramePair& pair, const Params& p, std::span<PoiRecord> out, std::size_t index,

@@ -287,11 +287,9 @@ class Bench {
   void emit(BenchRow r, BenchReport& report) {
     derive(r, report);
     const std::string cells[] = {
-        r.source,
-        fixed("%.0f", r.median_ns_per_frame),
+        r.source, fixed("%.0f", r.median_ns_per_frame),
         fixed("%.0f", r.min_ns_per_frame) + ".." + fixed("%.0f", r.max_ns_per_frame),
-        fixed("%.1f", r.frames_per_s),
-        fixed("%.1f", r.ns_per_poi),
+        fixed("%.1f", r.frames_per_s), fixed("%.1f", r.ns_per_poi),
         // A clock that counts instructions (QEMU's -icount) says so in its cell, never "cycles".
         r.cycles_per_frame > 0         ? fixed("%.0f", r.cycles_per_frame)
         : r.instructions_per_frame > 0 ? fixed("%.0f instr", r.instructions_per_frame)
