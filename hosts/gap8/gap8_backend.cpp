@@ -41,7 +41,10 @@ void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p, std::sp
     check_estimate(out.subspan(i * pois, pois), p, stats.pairs[i], i);
   counts += gap8_counts(variant_, out, p, pairs.size());
   const double cycles = static_cast<double>(stats.cycles);
-  last_time_ = DeviceTime{"gap8-model-cycles", cycles / kGap8ClockHz * 1e9, cycles, true};
+  last_time_ = DeviceTime{.source = "gap8-model-cycles",
+                          .ns = cycles / kGap8ClockHz * 1e9,
+                          .cycles = cycles,
+                          .exact = true};
   last_stats_ = std::move(stats);
 }
 
