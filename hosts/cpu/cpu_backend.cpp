@@ -48,7 +48,9 @@ class CpuBackend final : public Backend {
   }
 
   // The ISA row that runs (what `cpu` dispatched to) and how many host threads run it.
-  Description describe() const override { return {std::string(kernel_.name), {}, {}}; }
+  Description describe() const override {
+    return {std::string(kernel_.name) + ", " + std::to_string(pool_.size()) + " threads", {}, {}};
+  }
 
  private:
   // Few large frames would leave cores idle (and one late-waking worker costs a whole frame):

@@ -46,7 +46,7 @@ ReportInputs::Table not_measured(const std::string& why) {
 
 void add_m4_section(ReportInputs& in) {
   ReportInputs::Section& section = in.sections.emplace_back();
-  section.key = "cortex_m4";
+  section.key = "cortex-m4";
   section.command = "pxflow bench --backends m4-qemu";
   std::cout << "== Cortex-M4 under QEMU (m4-qemu)\n";
   const Params p = profile("px4flow-64");
