@@ -148,7 +148,7 @@ class Bench {
         }
         batch = std::min(pt.batch, kReducedBatch);
         std::snprintf(why, sizeof why,
-                      "cycles of the first %d pairs (the point's %d would take about %.0f s to "
+                      "device count of the first %d pairs (the point's %d would take about %.0f s to "
                       "simulate)",
                       batch, pt.batch, estimate);
         reduced = why;

@@ -19,6 +19,12 @@ class M4QemuBackend : public Backend {
            OpCounts& counts) override;
   std::string unsupported(const Params& p) const override { return inner_.unsupported(p); }
   std::optional<DeviceTime> last_device_time() const override { return last_time_; }
+  // The firmware's HELLO name and build, on QEMU's emulated board.
+  Description describe() const override {
+    Description d = inner_.describe();
+    d.device = "Cortex-M4 on qemu-system-arm -M mps2-an386 (" + d.device + ")";
+    return d;
+  }
 
  private:
   std::shared_ptr<dut::Device> device_;

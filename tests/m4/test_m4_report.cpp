@@ -43,10 +43,12 @@ TEST_CASE("m4-qemu bench: instructions per frame, never cycles, the same every r
   std::vector<double> counts;
   for (const char* file : {"a.json", "b.json"}) {
     const auto j = nlohmann::json::parse(pxflow::test::slurp(dir.path(file)));
+    bool first = true;  // each file's first point (64x64, batch 1) is the one compared
     for (const auto& row : j["rows"])
       if (row["backend"] == "m4-qemu" && row.contains("instructions_per_frame")) {
         CHECK_FALSE(row.contains("cycles_per_frame"));
-        counts.push_back(row["instructions_per_frame"].get<double>());
+        if (first) counts.push_back(row["instructions_per_frame"].get<double>());
+        first = false;
       }
   }
   REQUIRE(counts.size() == 2);
