@@ -147,10 +147,11 @@ class Bench {
           return note(base, why, report);
         }
         batch = std::min(pt.batch, kReducedBatch);
-        std::snprintf(why, sizeof why,
-                      "device count of the first %d pairs (the point's %d would take about %.0f s to "
-                      "simulate)",
-                      batch, pt.batch, estimate);
+        std::snprintf(
+            why, sizeof why,
+            "device count of the first %d pairs (the point's %d would take about %.0f s to "
+            "simulate)",
+            batch, pt.batch, estimate);
         reduced = why;
         base.batch = batch;
       }
