@@ -14,7 +14,10 @@
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "exactness.hpp"
+#include "frame_io.hpp"
+#include "frame_sequence.hpp"
 #include "grid.hpp"
+#include "list_option.hpp"
 #include "output_file.hpp"
 #include "synthetic.hpp"
 
@@ -28,6 +31,8 @@ struct VectorsArgs {
   ProblemOptions problem;
   int cases = 16;
   std::uint64_t seed = 1;
+  std::string from, size;  // --from PAIRS (instead of random pairs), --size WxH for raw frames
+  bool random_options_given = false;  // --cases or --seed
   std::string verify_dir, verify_records;
 };
 
@@ -43,15 +48,51 @@ struct Vectors {
   ReferenceAnswer answer;
 };
 
+// The pairs of a --from list (frames a user chose: real frames, a regression), all one size.
+std::vector<OwnedPair> pairs_from_list(const VectorsArgs& a) {
+  const auto list = read_pair_list(a.from);
+  if (list.empty()) throw InputError("--from " + a.from + ": no pairs in the list");
+  std::optional<FrameSize> raw;
+  if (!a.size.empty()) raw = parse_frame_size(a.size);
+  std::vector<OwnedPair> pairs;
+  for (const auto& [prev_path, next_path] : list) {
+    const Frame prev = load_frame(prev_path, raw), next = load_frame(next_path, raw);
+    if (prev.width != next.width || prev.height != next.height ||
+        (!pairs.empty() && (prev.width != pairs[0].width || prev.height != pairs[0].height)))
+      throw InputError("--from " + a.from + ": " + prev_path + " " + next_path +
+                       ": every frame of the list must have one size");
+    pairs.push_back(
+        {prev_path + " -> " + next_path, prev.width, prev.height, prev.pixels, next.pixels});
+  }
+  return pairs;
+}
+
 Vectors make_vectors(const VectorsArgs& a) {
   Vectors v;
-  v.p = a.problem.resolve(std::nullopt);
-  for (int i = 0; i < a.cases; ++i)
-    v.pairs.push_back(random_pair(v.p.width, v.p.height, v.p.search_radius, a.seed + i));
+  if (!a.from.empty()) {
+    if (a.random_options_given)
+      throw InputError(
+          "--cases and --seed choose random pairs; --from gives the pairs (see pxflow vectors "
+          "--help)");
+    v.pairs = pairs_from_list(a);
+    v.p = a.problem.resolve(std::pair{v.pairs[0].width, v.pairs[0].height});
+  } else {
+    if (!a.size.empty())
+      throw InputError(
+          "--size applies to the raw frames of --from only (see pxflow vectors --help)");
+    v.p = a.problem.resolve(std::nullopt);
+    for (int i = 0; i < a.cases; ++i)
+      v.pairs.push_back(random_pair(v.p.width, v.p.height, v.p.search_radius, a.seed + i));
+  }
   std::vector<FramePair> views;
   for (const auto& op : v.pairs) views.push_back(op.view());
   v.answer = reference_answer(views, v.p);
   return v;
+}
+
+// Where the pairs came from, for the header and the summary line.
+std::string source_text(const VectorsArgs& a) {
+  return a.from.empty() ? "seed " + std::to_string(a.seed) : "from " + a.from;
 }
 
 std::string records_bytes(std::span<const PoiRecord> records) {
@@ -69,7 +110,10 @@ Json manifest(const Vectors& v, const VectorsArgs& a) {
   Json j;
   j["format"] = "pxflow-vectors";
   j["version"] = 1;
-  j["seed"] = a.seed;
+  if (a.from.empty())
+    j["seed"] = a.seed;
+  else
+    j["from"] = a.from;
   Json params;
   params["width"] = v.p.width, params["height"] = v.p.height;
   params["search_radius"] = v.p.search_radius, params["tile"] = v.p.tile;
@@ -153,7 +197,7 @@ int write_vectors(const VectorsArgs& a) {
     std::ostringstream h;
     h << "/* pxflow test vectors (pxflow vectors --format c): " << v.pairs.size() << " pairs of "
       << v.p.width << "x" << v.p.height << ", S=" << v.p.search_radius << " B=" << v.p.blocks
-      << ", seed " << a.seed << ". Layout: manifest.json. */\n#ifndef PXFLOW_VECTORS_H\n"
+      << ", " << source_text(a) << ". Layout: manifest.json. */\n#ifndef PXFLOW_VECTORS_H\n"
       << "#define PXFLOW_VECTORS_H\n#include <stdint.h>\n#define PXV_PAIRS " << v.pairs.size()
       << "u\n#define PXV_WIDTH " << v.p.width << "u\n#define PXV_HEIGHT " << v.p.height
       << "u\n#define PXV_POIS " << poi_count(v.p) << "u\n#define PXV_S " << v.p.search_radius
@@ -170,8 +214,8 @@ int write_vectors(const VectorsArgs& a) {
                           c_array("pxv_records", records) + c_array("pxv_flow", flow));
     write_output_file(dir + "pxflow_vectors_check.c", kCChecker);
   }
-  std::printf("wrote %zu pairs (%dx%d, seed %llu) to %s\n", v.pairs.size(), v.p.width, v.p.height,
-              static_cast<unsigned long long>(a.seed), a.out.c_str());
+  std::printf("wrote %zu pairs (%dx%d, %s) to %s\n", v.pairs.size(), v.p.width, v.p.height,
+              source_text(a).c_str(), a.out.c_str());
   return 0;
 }
 
@@ -243,8 +287,15 @@ Command add_vectors_command(CLI::App& app) {
       "on-target tests; `vectors verify DIR RECORDS` checks records made elsewhere");
   sub->add_option("--out", a->out, "Folder to write the vectors into (must exist)");
   a->problem.add_to(*sub);
-  sub->add_option("--cases", a->cases, "Random pairs (seeded)")->check(CLI::Range(1, 100000));
-  sub->add_option("--seed", a->seed, "Seed of the first pair; pair i has seed + i");
+  CLI::Option* cases =
+      sub->add_option("--cases", a->cases, "Random pairs (seeded)")->check(CLI::Range(1, 100000));
+  CLI::Option* seed =
+      sub->add_option("--seed", a->seed, "Seed of the first pair; pair i has seed + i")
+          ->check(seed_value());
+  sub->add_option("--from", a->from,
+                  "Vectors of these pairs instead of random ones: a list file, one 'PREV NEXT' per "
+                  "line (paths relative to the list), every frame one size");
+  sub->add_option("--size", a->size, "Frame size of raw frames in the --from list, WxH");
   sub->add_option("--format", a->format, "bin (files + manifest.json) or c (C arrays + checker)")
       ->check(CLI::IsMember({"bin", "c"}));
   CLI::App* verify = sub->add_subcommand("verify",
@@ -252,7 +303,8 @@ Command add_vectors_command(CLI::App& app) {
                                          "all pairs in order) with the vectors in DIR");
   verify->add_option("DIR", a->verify_dir, "The vectors' folder")->required();
   verify->add_option("RECORDS", a->verify_records, "The records to check")->required();
-  return {sub, [a, verify] {
+  return {sub, [a, verify, cases, seed] {
+            a->random_options_given = cases->count() + seed->count() > 0;
             if (verify->parsed()) return verify_vectors(*a);
             if (a->out.empty())
               throw InputError(

@@ -1,5 +1,6 @@
 // pxflow vectors: the same bytes for a seed on every run, and `vectors verify` catching a
-// one-bit flip with check's mismatch line (exit 1), a file of the wrong size (exit 2).
+// one-bit flip with check's mismatch line (exit 1), a file of the wrong size (exit 2); --from a
+// list of real pairs.
 #include <catch2/catch.hpp>
 
 #include "run_program.hpp"
@@ -40,4 +41,34 @@ TEST_CASE("pxflow vectors verify catches a one-bit flip and a wrong size", "[dut
   const auto size = run_pxflow({"vectors", "verify", d.path(""), d.path("short.bin")});
   CHECK(size.exit_code == 2);
   CHECK(size.err_lines() == 1);
+}
+
+TEST_CASE("pxflow vectors --from a list of real pairs: flow bits equal pxflow flow's",
+          "[dut][vectors]") {
+  TempDir d;
+  const std::string data = "/usr/share/doc/opencv-doc/examples/data/";
+  d.write("list.txt", data + "rubberwhale1.png " + data + "rubberwhale2.png\n");
+  const auto r = run_pxflow({"vectors", "--out", d.path(""), "--from", d.path("list.txt")});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto flow =
+      run_pxflow({"flow", "--json", "-", data + "rubberwhale1.png", data + "rubberwhale2.png"});
+  REQUIRE(flow.exit_code == 0);
+  const auto bits = [](const std::string& text, const std::string& key) {
+    const auto at = text.find("\"" + key + "\"");
+    REQUIRE(at != std::string::npos);
+    const auto open = text.find('"', text.find(':', at)) + 1;
+    std::string v = text.substr(open, text.find('"', open) - open);
+    return v.rfind("0x", 0) == 0 ? v.substr(2) : v;
+  };
+  const std::string manifest = slurp(d.path("manifest.json"));
+  CHECK(bits(manifest, "flow_x_bits") == bits(flow.out, "flow_x_bits"));
+  CHECK(bits(manifest, "flow_y_bits") == bits(flow.out, "flow_y_bits"));
+  CHECK(slurp(d.path("frames.bin")).size() == 2u * 584u * 388u);
+  CHECK(run_pxflow({"vectors", "verify", d.path(""), d.path("records.bin")}).exit_code == 0);
+  // --from gives the pairs: --seed (or --cases) beside it would do nothing, so it is refused.
+  const auto both =
+      run_pxflow({"vectors", "--out", d.path(""), "--from", d.path("list.txt"), "--seed", "3"});
+  CHECK(both.exit_code == 2);
+  CHECK(both.err_lines() == 1);
 }
