@@ -165,6 +165,8 @@ class Bench {
     const auto w0 = std::chrono::steady_clock::now();
     try {
       b->run(pairs, pt.params, got, counts);
+    } catch (const Interrupted&) {
+      throw;  // Ctrl-C inside a backend: the run stops, the point did not fail
     } catch (const std::exception& e) {
       return note(base, std::string("failed: ") + e.what(), report);
     }

@@ -104,6 +104,8 @@ class Checker {
     const auto t0 = std::chrono::steady_clock::now();
     try {
       k.backend->run(views, c.params, got, counts);
+    } catch (const Interrupted&) {
+      throw;  // Ctrl-C inside a backend (a device link waiting): the run stops, nothing failed
     } catch (const std::exception& ex) {
       return fail(k, c, std::string("error: ") + ex.what());
     }
