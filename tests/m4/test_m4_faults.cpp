@@ -111,6 +111,20 @@ class Background {
   bool reaped_ = false;
 };
 
+// A copy of the firmware under a path of this test's own, so that the QEMU it finds by path is
+// the one its pxflow started, not another test's running the same firmware beside it (ctest -j).
+class PrivateFirmware {
+ public:
+  PrivateFirmware() : path_(dir_.path("pxflow_m4_dut.elf")) {
+    dir_.write("pxflow_m4_dut.elf", pxflow::test::slurp(PXFLOW_M4_FIRMWARE));
+  }
+  operator const std::string&() const { return path_; }
+
+ private:
+  pxflow::test::TempDir dir_;
+  std::string path_;
+};
+
 // Waits until QEMU runs `firmware` (and a little longer, so that a run is under way).
 std::vector<int> wait_for_qemu(const std::string& firmware, double limit) {
   const auto end = std::chrono::steady_clock::now() + Seconds(limit);
@@ -193,9 +207,9 @@ TEST_CASE("m4-qemu: a device estimate one ULP off the host's: the case fails nam
 
 TEST_CASE("m4-qemu: QEMU killed during a check: the case fails, exit 1, no QEMU left",
           "[m4][fault]") {
-  const std::string fw = PXFLOW_M4_FIRMWARE;
+  const PrivateFirmware fw;
   Background run({"check", "--backends", "m4-qemu", "--require", "m4-qemu", "--generated-only",
-                  "--dut-timeout", "2"});
+                  "--dut-timeout", "2", "--m4-firmware", fw});
   const std::vector<int> pids = wait_for_qemu(fw, 30);
   REQUIRE(pids.size() == 1);
   kill(pids[0], SIGKILL);  // the one QEMU this test's pxflow started
@@ -204,8 +218,9 @@ TEST_CASE("m4-qemu: QEMU killed during a check: the case fails, exit 1, no QEMU 
 }
 
 TEST_CASE("m4-qemu: Ctrl-C during a check: pxflow exits 130 and stops QEMU", "[m4][fault]") {
-  const std::string fw = PXFLOW_M4_FIRMWARE;
-  Background run({"check", "--backends", "m4-qemu", "--require", "m4-qemu", "--generated-only"});
+  const PrivateFirmware fw;
+  Background run({"check", "--backends", "m4-qemu", "--require", "m4-qemu", "--generated-only",
+                  "--m4-firmware", fw});
   REQUIRE(wait_for_qemu(fw, 30).size() == 1);
   kill(run.pid(), SIGINT);
   CHECK(run.wait_for(30) == 130);
