@@ -51,7 +51,7 @@ TEST_CASE("a 20 KiB device takes 64x64 pairs in chunks and says n/a to larger fr
   CHECK_THAT(t.r.out, Catch::Matches("(.|\n)*d +passed +8 +238 +8 (.|\n)*"));
 }
 
-TEST_CASE("pxflow backends lists a --dut row and says why it cannot run", "[dut]") {
+TEST_CASE("pxflow backends lists a --dut row and says why it cannot run", "[dut][all-probes]") {
   const auto ok = run_pxflow({"backends", "--dut", std::string("d=exec:") + DUT_REF});
   CHECK(ok.exit_code == 0);
   CHECK_THAT(ok.out, Catch::Matches("(.|\n)*\nd +available (.|\n)*"));

@@ -263,7 +263,8 @@ TEST_CASE("merge: the merged file is a check file pxflow report accepts", "[shar
         std::string::npos);
 }
 
-TEST_CASE("check --shard, --backend and --json -: the options and their errors", "[shard]") {
+TEST_CASE("check --shard, --backend and --json -: the options and their errors",
+          "[shard][all-probes]") {
   for (const char* bad : {"0/2", "3/2", "2", "1/0", "a/b", "1/2/3", "+1/2", ""}) {
     const RunResult r = pxflow_run({"check", "--generated-only", "--shard", bad});
     INFO(bad << ": " << r.err);
