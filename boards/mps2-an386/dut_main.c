@@ -1,6 +1,8 @@
 /* The Cortex-M4 kernel as a device under test (docs/dut-protocol.md): the dut/ engine with this
- * board's UART as the link and SysTick as the counter, the kernel of kernels/cortex-m4 as the
- * kernel hook. `pxflow check --backends m4-qemu` runs it under qemu-system-arm (hosts/m4qemu).
+ * board's link (link.c: semihosting under hosts/m4qemu, else the UART) and SysTick as the counter,
+ * the kernel of kernels/cortex-m4 as the kernel hook. `pxflow check --backends m4-qemu` runs it
+ * under qemu-system-arm (hosts/m4qemu). The frame estimate the engine times and sends in RESULT
+ * is dut/'s pxdut_estimate_flow, compiled here for the FPU with -ffp-contract=off.
  *
  * The counter: SysTick runs on the 25 MHz processor clock of the board model. Under QEMU's
  * -icount shift=N each instruction advances virtual time by 2^N ns, so one SysTick tick is
@@ -10,8 +12,8 @@
  *
  * M4_DUT_FAULT (0 for the real firmware) builds the fault firmwares of tests/m4: 1 never
  * answers, 2 exits (QEMU ends) in the middle of the first RUN, 3 hangs in the first RUN, 4 sends
- * garbage instead of replies, 5 answers HELLO with protocol version 2, 6 sends an estimate whose
- * flow_x is one unit in the last place off. */
+ * garbage instead of replies, 5 answers HELLO with protocol version 2, 6 sends RESULTs whose
+ * flow_x is one unit in the last place off the estimate the engine computed. */
 #include <stdint.h>
 
 #include "board.h"
@@ -34,7 +36,7 @@
 #endif
 
 int pxdut_port_read(uint8_t *buf, int max) {
-  return (int)board_uart_read(buf, (size_t)max); /* waits for at least one byte */
+  return board_link_read(buf, (size_t)max); /* waits for at least one byte; -1: closed */
 }
 
 #if M4_DUT_FAULT == 4
@@ -46,35 +48,41 @@ int pxdut_port_write(const uint8_t *buf, int len) {
   for (int i = 0; i < len; ++i) {
     x ^= x << 13, x ^= x >> 17, x ^= x << 5;
     const uint8_t b = (uint8_t)(x | 1u);
-    board_uart_write(&b, 1);
+    if (board_link_write(&b, 1) != 0) return -1;
   }
   return 0;
 }
-#elif M4_DUT_FAULT == 5
-/* The HELLO reply (type 0x81) re-encoded with version 2 and a fresh CRC. */
+#elif M4_DUT_FAULT == 5 || M4_DUT_FAULT == 6
+/* A reply changed on its way out and sealed again with a fresh CRC, so that the host sees a
+ * well-formed packet that says something wrong: 5, the HELLO reply (type 0x81) with protocol
+ * version 2; 6, a RESULT (type 0x84) that carries an estimate (flags bit 0) with bit 0 of
+ * flow_x's IEEE-754 bits flipped: one unit in the last place off what pxdut_estimate_flow
+ * computed (docs/dut-protocol.md, section 3: the RESULT body's flags at byte 20, flow_x at 24). */
+static void falsify(uint8_t *packet, int32_t n) {
+#if M4_DUT_FAULT == 5
+  if (n >= 8 && packet[0] == 0x81u) packet[2] = 2u, packet[3] = 0u;
+#else
+  if (n >= 2 + 40 + 4 && packet[0] == 0x84u && (packet[2 + 20] & 1u)) packet[2 + 24] ^= 1u;
+#endif
+}
+
 int pxdut_port_write(const uint8_t *buf, int len) {
   static uint8_t packet[PXDUT_MAX_PACKET + 8], out[PXDUT_MAX_PACKET + 16];
   int start = 0;
-  while (start < len && buf[start] == 0) board_uart_write(&buf[start++], 1);
+  while (start < len && buf[start] == 0) /* the delimiters before the frame */
+    if (board_link_write(&buf[start++], 1) != 0) return -1;
   const int32_t n =
       len - start > 1 ? pxdut_cobs_decode(buf + start, (uint32_t)(len - start - 1), packet) : -1;
-  if (n >= 8 && packet[0] == 0x81u) {
-    packet[2] = 2u, packet[3] = 0u;
-    const uint32_t crc = pxdut_crc32(packet, (uint32_t)n - 4u);
-    for (int k = 0; k < 4; ++k) packet[n - 4 + k] = (uint8_t)(crc >> (8 * k));
-    const uint32_t m = pxdut_cobs_encode(packet, (uint32_t)n, out);
-    out[m] = 0u;
-    board_uart_write(out, m + 1u);
-    return 0;
-  }
-  board_uart_write(buf + start, (size_t)(len - start));
-  return 0;
+  if (n < 6) return board_link_write(buf + start, (size_t)(len - start));
+  falsify(packet, n);
+  const uint32_t crc = pxdut_crc32(packet, (uint32_t)n - 4u);
+  for (int k = 0; k < 4; ++k) packet[n - 4 + k] = (uint8_t)(crc >> (8 * k));
+  const uint32_t m = pxdut_cobs_encode(packet, (uint32_t)n, out);
+  out[m] = 0u;
+  return board_link_write(out, m + 1u);
 }
 #else
-int pxdut_port_write(const uint8_t *buf, int len) {
-  board_uart_write(buf, (size_t)len);
-  return 0;
-}
+int pxdut_port_write(const uint8_t *buf, int len) { return board_link_write(buf, (size_t)len); }
 #endif
 
 uint32_t pxdut_port_cycles(void) {
@@ -102,44 +110,29 @@ void pxdut_port_kernel(const pxdut_params *p, const uint8_t *prev, const uint8_t
   m4_flow_frame(&q, prev, next, (m4_flow_record *)out);
 }
 
-/* The estimate the engine times and sends in RESULT is this kernel's own (m4_flow_estimate, on
- * the FPU): the firmware is linked with -Wl,--wrap=pxdut_estimate_flow, so the engine's call
- * lands here instead of in dut/'s portable one. The host compares its bits with its own. */
-void __wrap_pxdut_estimate_flow(const pxdut_record *records, uint32_t pois, const pxdut_params *p,
-                                pxdut_estimate *out);
-void __wrap_pxdut_estimate_flow(const pxdut_record *records, uint32_t pois, const pxdut_params *p,
-                                pxdut_estimate *out) {
-  const m4_flow_params q = m4_params(p);
-  m4_flow_result r;
-  m4_flow_estimate((const m4_flow_record *)records, pois, &q, &r);
-  out->flow_x = r.flow_x;
-  out->flow_y = r.flow_y;
-  out->quality = r.quality;
-  out->meancount = r.meancount;
-#if M4_DUT_FAULT == 6
-  if (r.meancount > (int32_t)p->min_count) { /* flow_x one unit in the last place off */
-    union {
-      float f;
-      uint32_t u;
-    } bits = {out->flow_x};
-    bits.u ^= 1u;
-    out->flow_x = bits.f;
-  }
-#endif
-}
-
 typedef char record_layouts_agree[sizeof(pxdut_record) == sizeof(m4_flow_record) ? 1 : -1];
+
+/* HELLO's build string: the build id and the link this run uses. */
+static const char *build_string(void) {
+  static char build[96];
+  const char *parts[] = {M4_DUT_BUILD, " link=", board_link_name()};
+  size_t n = 0;
+  for (size_t k = 0; k < sizeof parts / sizeof parts[0]; ++k)
+    for (const char *c = parts[k]; *c && n + 1 < sizeof build; ++c) build[n++] = *c;
+  build[n] = 0;
+  return build;
+}
 
 int main(void) {
   /* SysTick first: besides being the counter, it keeps a timer running, without which QEMU's
    * -icount never wakes a core sleeping in WFI for the UART (docs/cortex-m4.md). */
   board_systick_init();
-  board_uart_init();
+  board_link_open();
 #if M4_DUT_FAULT == 1
   for (;;) __asm__ volatile("wfi");
 #endif
-  static const pxdut_device dev = {"cortex-m4-dsp (mps2-an386)", M4_DUT_BUILD,
-                                   "qemu-icount-instructions"};
+  const pxdut_device dev = {"cortex-m4-dsp (mps2-an386)", build_string(),
+                            "qemu-icount-instructions"};
   pxdut_serve(&dev);
-  return 0;
+  return 0; /* the host closed the link */
 }

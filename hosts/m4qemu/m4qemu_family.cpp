@@ -21,24 +21,35 @@ std::string& firmware_path() {
   return path;
 }
 
-std::vector<std::string> qemu_command(const std::string& firmware) {
-  // -nographic with -monitor none and -serial stdio: UART0 alone on stdin/stdout (no monitor
-  // multiplexed in, so no byte of the binary protocol is taken for a Ctrl-A escape);
-  // semihosting for the firmware's exit on a fault (it never prints).
-  return {"qemu-system-arm",
-          "-M",
-          "mps2-an386",
-          "-nographic",
-          "-monitor",
-          "none",
-          "-serial",
-          "stdio",
-          "-icount",
-          "shift=" + std::to_string(kIcountShift),
-          "-semihosting-config",
-          "enable=on,target=native",
-          "-kernel",
-          firmware};
+const char* link_name(M4Link link) {
+  for (const M4LinkName& l : kM4Links)
+    if (l.link == link) return l.name;
+  return "?";
+}
+
+M4Link& link_choice() {
+  static M4Link link = M4Link::kSemihosting;
+  return link;
+}
+
+std::vector<std::string> qemu_command(const std::string& firmware, M4Link link) {
+  // -nographic with -monitor none: no monitor multiplexed onto stdin/stdout, so no byte of the
+  // binary protocol is taken for a Ctrl-A escape. Semihosting is always on (the firmware exits
+  // through it on a fault).
+  std::vector<std::string> argv = {
+      "qemu-system-arm", "-M",   "mps2-an386", "-nographic",
+      "-monitor",        "none", "-icount",    "shift=" + std::to_string(kIcountShift)};
+  if (link == M4Link::kSemihosting) {
+    // UART0 on nothing, so that stdin is read by the firmware's SYS_READ alone; the word
+    // link=semihosting on the semihosting command line (SYS_GET_CMDLINE) makes the firmware open
+    // ":tt", which QEMU maps to its own stdin and stdout (boards/mps2-an386/semihost.c).
+    argv.insert(argv.end(), {"-serial", "null", "-semihosting-config",
+                             "enable=on,target=native,arg=pxflow_m4_dut,arg=link=semihosting"});
+  } else {
+    argv.insert(argv.end(), {"-serial", "stdio", "-semihosting-config", "enable=on,target=native"});
+  }
+  argv.insert(argv.end(), {"-kernel", firmware});
+  return argv;
 }
 
 namespace {
@@ -89,8 +100,9 @@ struct LazyDevice {
         dut::DutSpec spec;
         spec.name = "m4-qemu";
         spec.kind = dut::DutSpec::Kind::kExec;
-        spec.argv = qemu_command(fw);
-        spec.text = "exec:qemu-system-arm -M mps2-an386 ... -kernel " + fw;
+        spec.argv = qemu_command(fw, link_choice());
+        spec.text = "exec:qemu-system-arm -M mps2-an386 ... (" +
+                    std::string(link_name(link_choice())) + " link) -kernel " + fw;
         device = std::make_shared<dut::Device>(spec);
       }
     }
@@ -128,7 +140,20 @@ BackendFamily m4qemu_family() {
       throw InputError("--m4-firmware: empty path: give the firmware ELF (see pxflow --help)");
     m4qemu::firmware_path() = file;
   };
-  f.options = {firmware};
+  FamilyOption link;
+  link.flag = "--m4-link";
+  link.help =
+      "The link to the m4-qemu firmware: semihosting (default; QEMU's stdin/stdout, fast) or uart "
+      "(the board's UART as QEMU models it, about 20 KB/s); docs/cortex-m4.md";
+  link.apply = [](const std::string& name) {
+    for (const m4qemu::M4LinkName& l : m4qemu::kM4Links)
+      if (name == l.name) {
+        m4qemu::link_choice() = l.link;
+        return;
+      }
+    throw InputError("--m4-link: unknown link '" + name + "': allowed semihosting, uart");
+  };
+  f.options = {firmware, link};
   return f;
 }
 

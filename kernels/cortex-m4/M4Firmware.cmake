@@ -1,9 +1,9 @@
 # pxflow_m4_firmware(<name> SOURCES <files...> [INCLUDE_DIRS ...] [DEFINITIONS ...]
 #                    [LINK_OPTIONS ...] [STDIO])
 # Builds <name>.elf for QEMU's mps2-an386 (Cortex-M4F) with Debian's arm-none-eabi-gcc: the
-# board's start-up code, UART, SysTick and semihosted exit (boards/mps2-an386), newlib-nano for
-# memcpy/memset, and with STDIO newlib's rdimon (semihosted printf) for the self-tests. The
-# target is m4_fw_<name>; the ELF's path is in M4_FIRMWARE_<name>.
+# board's start-up code, link (UART or semihosting), SysTick and semihosted exit
+# (boards/mps2-an386), newlib-nano for memcpy/memset, and with STDIO newlib's rdimon (semihosted
+# printf) for the self-tests. The target is m4_fw_<name>; the ELF's path is in M4_FIRMWARE_<name>.
 # Does nothing when the toolchain is missing (PXFLOW_M4_HAVE_TOOLCHAIN OFF, the reason in
 # PXFLOW_M4_TOOLCHAIN_WHY). Included by every folder that builds firmware (its variables are
 # per folder).
@@ -34,10 +34,11 @@ endif()
 
 # The kernel and the board, as every firmware links them.
 set(PXFLOW_M4_KERNEL_SOURCES ${PXFLOW_M4_KERNEL_DIR}/m4_flow_poi.c
-    ${PXFLOW_M4_KERNEL_DIR}/m4_flow_frame.c ${PXFLOW_M4_KERNEL_DIR}/m4_flow_estimate.c)
+    ${PXFLOW_M4_KERNEL_DIR}/m4_flow_frame.c)
 set(PXFLOW_M4_KERNEL_HEADERS ${PXFLOW_M4_KERNEL_DIR}/m4_flow.h ${PXFLOW_M4_KERNEL_DIR}/m4_simd.h)
 set(PXFLOW_M4_BOARD_SOURCES ${PXFLOW_M4_BOARD_DIR}/startup.c ${PXFLOW_M4_BOARD_DIR}/semihost.c
-    ${PXFLOW_M4_BOARD_DIR}/uart_cmsdk.c ${PXFLOW_M4_BOARD_DIR}/systick.c)
+    ${PXFLOW_M4_BOARD_DIR}/uart_cmsdk.c ${PXFLOW_M4_BOARD_DIR}/link.c
+    ${PXFLOW_M4_BOARD_DIR}/systick.c)
 
 function(pxflow_m4_firmware name)
   cmake_parse_arguments(ARG "STDIO" "" "SOURCES;INCLUDE_DIRS;DEFINITIONS;DEPENDS;LINK_OPTIONS" ${ARGN})

@@ -1,8 +1,10 @@
-/* The PX4FLOW kernel for the Cortex-M4 (SPEC §2-§5), in the firmware's shape: compute_diff,
+/* The PX4FLOW kernel for the Cortex-M4 (SPEC §2-§4), in the firmware's shape: compute_diff,
  * compute_sad_8x8 and compute_subpixel of PX4/PX4-Flow src/modules/flow/flow.c, with the DSP
- * instructions USAD8, USADA8 and UHADD8 (m4_simd.h). Freestanding C99: no heap, no stdio; the
- * frame estimate uses the FPU (-mfloat-abi=hard -mfpu=fpv4-sp-d16, built -ffp-contract=off so
- * that every float operation rounds once, as the host's reference/estimate.cpp does). */
+ * instructions USAD8, USADA8 and UHADD8 (m4_simd.h). Freestanding C99: no heap, no stdio. The
+ * frame estimate (SPEC §5) is dut/'s pxdut_estimate_flow, which every firmware links and
+ * compiles with the same flags, so on the FPU (-mfloat-abi=hard -mfpu=fpv4-sp-d16,
+ * -ffp-contract=off: every float operation rounds once, as the host's reference/estimate.cpp
+ * does). */
 #ifndef PXFLOW_M4_FLOW_H
 #define PXFLOW_M4_FLOW_H
 
@@ -10,7 +12,6 @@
 
 #define M4_FLOW_TILE 8u        /* T: the kernel's 8x8 block */
 #define M4_FLOW_MAX_RADIUS 31u /* S: a half-pixel displacement fits an i8 */
-#define M4_FLOW_MAX_BINS (2u * (2u * M4_FLOW_MAX_RADIUS + 1u) + 1u)
 
 /* SPEC §1's parameters (T is always 8 and not a field). */
 typedef struct {
@@ -41,12 +42,6 @@ typedef char m4_flow_record_is_32_bytes[sizeof(m4_flow_record) == 32 ? 1 : -1];
 #define M4_FLOW_ACCEPTED 2u
 #define M4_FLOW_DIR_NONE 8u /* the integer match won the half-pixel vote */
 
-/* SPEC §5's result, computed on the device. */
-typedef struct {
-  float flow_x, flow_y;
-  int32_t quality, meancount;
-} m4_flow_result;
-
 /* Why a parameter block cannot run (m4_flow_check). */
 typedef enum {
   M4_FLOW_OK = 0,
@@ -74,9 +69,5 @@ void m4_flow_poi(const m4_flow_params *p, const uint8_t *prev, const uint8_t *ne
  * parameters must have passed m4_flow_check. */
 void m4_flow_frame(const m4_flow_params *p, const uint8_t *prev, const uint8_t *next,
                    m4_flow_record *records);
-
-/* SPEC §5 (HF on or off, no gyro compensation) over a pair's records, on the FPU. */
-void m4_flow_estimate(const m4_flow_record *records, uint32_t count, const m4_flow_params *p,
-                      m4_flow_result *out);
 
 #endif

@@ -1,7 +1,8 @@
 /* The self-test firmware: the DSP semantics (m4_selftest_simd.c), then every generated case
  * (m4_vectors.h): the kernel's records against the host reference's, byte for byte, and the
- * estimate computed here on the FPU against the host's float bits. One line per failure, a
- * summary, and the number of failures as QEMU's exit status (semihosting). */
+ * estimate the DUT firmware sends (dut/'s pxdut_estimate_flow, compiled here for the FPU with the
+ * firmware's flags) against the host's float bits. One line per failure, a summary, and the
+ * number of failures as QEMU's exit status (semihosting). */
 #include <stdio.h>
 #include <string.h>
 
@@ -9,11 +10,14 @@
 #include "m4_flow.h"
 #include "m4_selftest.h"
 #include "m4_vectors.h"
+#include "pxdut.h"
 
 extern void initialise_monitor_handles(void); /* newlib's rdimon: semihosted stdio */
 
 #define MAX_POIS 1024u
 static m4_flow_record records[MAX_POIS];
+
+typedef char record_layouts_agree[sizeof(pxdut_record) == sizeof(m4_flow_record) ? 1 : -1];
 
 static uint32_t float_bits(float f) {
   uint32_t u;
@@ -42,8 +46,15 @@ static int check_case(const m4_vec_case *c) {
         return 1;
       }
   }
-  m4_flow_result r;
-  m4_flow_estimate(records, c->pois, &c->params, &r);
+  const m4_flow_params *q = &c->params;
+  const pxdut_params p = {q->width,         q->height,
+                          q->search_radius, M4_FLOW_TILE,
+                          q->blocks,        q->feature_threshold,
+                          q->sad_threshold, q->hist_filter,
+                          q->min_count,     0u};
+  pxdut_estimate r;
+  /* Same layout, 32 bytes (m4_flow.h, pxdut_types.h); built with -fno-strict-aliasing. */
+  pxdut_estimate_flow((const pxdut_record *)records, c->pois, &p, &r);
   if (float_bits(r.flow_x) != c->flow_x_bits || float_bits(r.flow_y) != c->flow_y_bits ||
       r.quality != c->quality || r.meancount != c->meancount) {
     printf(
