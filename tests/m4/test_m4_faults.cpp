@@ -248,4 +248,9 @@ TEST_CASE("m4-qemu: the probe says why the row cannot run", "[m4][fault]") {
   INFO(no_qemu.out << no_qemu.err);
   CHECK(no_qemu.exit_code == 1);
   CHECK(mentions(no_qemu, "qemu-system-arm not found in PATH"));
+  const RunResult bad_link =
+      pxflow::test::run_pxflow({"check", "--backends", "m4-qemu", "--m4-link", "swd"});
+  INFO(bad_link.out << bad_link.err);
+  CHECK(bad_link.exit_code == 2);
+  CHECK(mentions(bad_link, "--m4-link: unknown link 'swd': allowed semihosting, uart"));
 }
