@@ -23,8 +23,9 @@
 static struct {
   board_link_kind kind;
   int in, out; /* the semihosting handles */
-} link;
+} chosen;
 
+#if BOARD_SEMIHOSTING_LINK
 /* Whether the space-separated command line has the word `word`. */
 static int has_word(const char *line, const char *word) {
   for (const char *p = line; *p;) {
@@ -36,31 +37,34 @@ static int has_word(const char *line, const char *word) {
   }
   return 0;
 }
+#endif
 
 board_link_kind board_link_open(void) {
-  link.kind = BOARD_LINK_UART;
+  chosen.kind = BOARD_LINK_UART;
 #if BOARD_SEMIHOSTING_LINK
   static char cmdline[256];
   if (board_semihost_cmdline(cmdline, sizeof cmdline) == 0 &&
       has_word(cmdline, "link=semihosting")) {
-    link.in = board_semihost_open(":tt", SEMIHOST_MODE_READ);
-    link.out = board_semihost_open(":tt", SEMIHOST_MODE_WRITE);
-    if (link.in < 0 || link.out < 0) board_exit(BOARD_EXIT_NO_LINK);
-    link.kind = BOARD_LINK_SEMIHOSTING;
-    return link.kind;
+    chosen.in = board_semihost_open(":tt", SEMIHOST_MODE_READ);
+    chosen.out = board_semihost_open(":tt", SEMIHOST_MODE_WRITE);
+    if (chosen.in < 0 || chosen.out < 0) board_exit(BOARD_EXIT_NO_LINK);
+    chosen.kind = BOARD_LINK_SEMIHOSTING;
+    return chosen.kind;
   }
 #endif
   board_uart_init();
-  return link.kind;
+  return chosen.kind;
 }
 
-const char *board_link_name(void) { return link.kind == BOARD_LINK_UART ? "uart" : "semihosting"; }
+const char *board_link_name(void) {
+  return chosen.kind == BOARD_LINK_UART ? "uart" : "semihosting";
+}
 
 int board_link_read(uint8_t *buf, size_t max) {
 #if BOARD_SEMIHOSTING_LINK
-  if (link.kind == BOARD_LINK_SEMIHOSTING) {
+  if (chosen.kind == BOARD_LINK_SEMIHOSTING) {
     /* Nothing read: QEMU's stdin ended (the host closed the link) or failed. */
-    const size_t n = board_semihost_read(link.in, buf, max);
+    const size_t n = board_semihost_read(chosen.in, buf, max);
     return n > 0 ? (int)n : -1;
   }
 #endif
@@ -69,9 +73,9 @@ int board_link_read(uint8_t *buf, size_t max) {
 
 int board_link_write(const uint8_t *data, size_t n) {
 #if BOARD_SEMIHOSTING_LINK
-  if (link.kind == BOARD_LINK_SEMIHOSTING) {
+  if (chosen.kind == BOARD_LINK_SEMIHOSTING) {
     while (n > 0) { /* a pipe takes it all at once; a short write is continued */
-      const size_t done = board_semihost_write(link.out, data, n);
+      const size_t done = board_semihost_write(chosen.out, data, n);
       if (done == 0) return -1; /* QEMU's stdout is closed: the host has gone */
       data += done, n -= done;
     }
