@@ -58,7 +58,7 @@ int pxdut_port_write(const uint8_t *buf, int len) {
   while (start < len && buf[start] == 0) board_uart_write(&buf[start++], 1);
   const int32_t n =
       len - start > 1 ? pxdut_cobs_decode(buf + start, (uint32_t)(len - start - 1), packet) : -1;
-  if (n >= 8 && packet[0] == 0x81u) {
+  if (n >= 8 && packet[0] == PXDUT_MSG_HELLO_REPLY) {
     packet[2] = 2u, packet[3] = 0u;
     const uint32_t crc = pxdut_crc32(packet, (uint32_t)n - 4u);
     for (int k = 0; k < 4; ++k) packet[n - 4 + k] = (uint8_t)(crc >> (8 * k));
