@@ -98,3 +98,14 @@ TEST_CASE("a report of a --dut row records check and bench commands that rerun i
   CHECK(again.exit_code == 0);
   CHECK_THAT(again.out, Catch::Matches("(.|\n)*\nd +passed (.|\n)*"));
 }
+
+TEST_CASE("check --json records the --dut spec it ran with", "[dut]") {
+  const std::string spec = std::string("d=exec:") + DUT_FAULTY + " none";
+  const auto r = run_pxflow(
+      {"check", "--dut", spec, "--backends", "ref-original,d", "--generated-only", "--json", "-"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(nlohmann::json::parse(r.out)["command"] ==
+        "pxflow --dut '" + spec + "' check --backends ref-original,d --seed 1 --generated-only " +
+            "--json -");
+}
