@@ -54,15 +54,17 @@ int pxdut_port_write(const uint8_t *buf, int len) {
 }
 #elif M4_DUT_FAULT == 5 || M4_DUT_FAULT == 6
 /* A reply changed on its way out and sealed again with a fresh CRC, so that the host sees a
- * well-formed packet that says something wrong: 5, the HELLO reply (type 0x81) with protocol
- * version 2; 6, a RESULT (type 0x84) that carries an estimate (flags bit 0) with bit 0 of
+ * well-formed packet that says something wrong: 5, the HELLO reply with protocol
+ * version 2; 6, a RESULT that carries an estimate (flags bit 0) with bit 0 of
  * flow_x's IEEE-754 bits flipped: one unit in the last place off what pxdut_estimate_flow
  * computed (docs/dut-protocol.md, section 3: the RESULT body's flags at byte 20, flow_x at 24). */
 static void falsify(uint8_t *packet, int32_t n) {
 #if M4_DUT_FAULT == 5
-  if (n >= 8 && packet[0] == 0x81u) packet[2] = 2u, packet[3] = 0u;
+  if (n >= 8 && packet[0] == PXDUT_MSG_HELLO_REPLY) packet[2] = 2u, packet[3] = 0u;
 #else
-  if (n >= 2 + 40 + 4 && packet[0] == 0x84u && (packet[2 + 20] & 1u)) packet[2 + 24] ^= 1u;
+  if (n >= 2 + 40 + 4 && packet[0] == PXDUT_MSG_RESULT &&
+      (packet[2 + 20] & PXDUT_RESULT_FLAG_ESTIMATE))
+    packet[2 + 24] ^= 1u;
 #endif
 }
 

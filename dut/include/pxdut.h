@@ -12,6 +12,7 @@
 
 #include "pxdut_port.h"
 #include "pxdut_types.h"
+#include "pxdut_wire.h"
 
 #ifdef __cplusplus
 extern "C" {

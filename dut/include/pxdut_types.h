@@ -17,8 +17,6 @@
 #define PXDUT_MAX_PACKET 256u /* decoded bytes from type to CRC; at least 64 */
 #endif
 
-#define PXDUT_PROTOCOL_VERSION 1u
-
 typedef struct {
   uint32_t width, height;                    /* W, H: pixels, row stride = W */
   uint32_t search_radius;                    /* S, 1..31 */

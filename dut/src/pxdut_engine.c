@@ -3,34 +3,13 @@
  * new requests. Every buffer is static and sized by pxdut_types.h; nothing is allocated. */
 #include "pxdut.h"
 
-#if PXDUT_MAX_PACKET < 64u || PXDUT_MAX_PACKET > 65535u
+#if PXDUT_MAX_PACKET < PXDUT_MAX_PACKET_MIN || PXDUT_MAX_PACKET > PXDUT_MAX_PACKET_MAX
 #error "PXDUT_MAX_PACKET must be 64 .. 65535 (docs/dut-protocol.md section 1)"
 #endif
 
 #ifndef PXDUT_COMPUTE_ESTIMATE
 #define PXDUT_COMPUTE_ESTIMATE 1 /* the device runs SPEC §5 itself and RESULT carries it */
 #endif
-
-enum {
-  kHello = 0x01,
-  kParams = 0x02,
-  kFrame = 0x03,
-  kRun = 0x04,
-  kRecords = 0x05,
-  kAck = 0x06,
-  kNak = 0x15,
-  kError = 0x7F,
-  kReply = 0x80, /* HELLO reply = 0x81, RESULT = 0x84, RECORDS reply = 0x85 */
-};
-enum { kNakCrc = 1, kNakCobs = 2, kNakLong = 3, kNakShort = 4 };
-enum {
-  kErrMessage = 1,
-  kErrParams = 2,
-  kErrTooLarge = 3,
-  kErrNotReady = 4,
-  kErrRange = 5,
-  kErrVersion = 6
-};
 
 #define PXDUT_ENCODED_MAX (PXDUT_MAX_PACKET + PXDUT_MAX_PACKET / 254u + 2u)
 #define PXDUT_STRING_MAX 60u /* HELLO's strings are cut here so that the reply fits 256 bytes */
@@ -90,25 +69,25 @@ static uint8_t *begin(uint8_t type, uint8_t seq) {
 }
 
 static void error_reply(uint8_t seq, uint32_t code, const char *text) {
-  reply(put_string(put_u16(begin(kError, seq), code), text));
+  reply(put_string(put_u16(begin(PXDUT_MSG_ERROR, seq), code), text));
 }
 
 static void nak(uint8_t reason) {
   uint8_t out[16];
-  uint8_t *p = begin(kNak, 0);
+  uint8_t *p = begin(PXDUT_MSG_NAK, 0);
   *p++ = reason;
   /* The NAK is built in packet[] but not kept: the stored reply stays in tx[]. */
   pxdut_port_write(out, (int)seal(p, out));
 }
 
 static void on_hello(const pxdut_device *dev, uint8_t seq, const uint8_t *body, uint32_t n) {
-  if (n != 2u) {
-    error_reply(seq, kErrMessage, "HELLO body is u16 version");
+  if (n != PXDUT_HELLO_BODY) {
+    error_reply(seq, PXDUT_ERR_BAD_MESSAGE, "HELLO body is u16 version");
     return;
   }
-  uint8_t *p = begin(kHello | kReply, seq);
+  uint8_t *p = begin(PXDUT_MSG_HELLO_REPLY, seq);
   p = put_u16(p, PXDUT_PROTOCOL_VERSION);
-  p = put_u16(p, PXDUT_COMPUTE_ESTIMATE ? 1u : 0u);
+  p = put_u16(p, PXDUT_COMPUTE_ESTIMATE ? PXDUT_HELLO_FLAG_ESTIMATE : 0u);
   p = put_u32(p, pxdut_port_cycles_hz());
   p = put_u16(p, PXDUT_MAX_PACKET);
   p = put_u16(p, 0);
@@ -123,8 +102,8 @@ static void on_hello(const pxdut_device *dev, uint8_t seq, const uint8_t *body, 
 
 static void on_params(uint8_t seq, const uint8_t *body, uint32_t n) {
   g.params_ok = g.run_ok = 0;
-  if (n != 40u) {
-    error_reply(seq, kErrMessage, "PARAMS body is 10 x u32");
+  if (n != PXDUT_PARAMS_BODY) {
+    error_reply(seq, PXDUT_ERR_BAD_MESSAGE, "PARAMS body is 10 x u32");
     return;
   }
   pxdut_params q;
@@ -134,71 +113,71 @@ static void on_params(uint8_t seq, const uint8_t *body, uint32_t n) {
                           &q.gyro_comp};
   for (int i = 0; i < 10; ++i) *fields[i] = get_u32(body + 4 * i);
   if (q.tile != 8u) {
-    error_reply(seq, kErrParams, "T must be 8");
+    error_reply(seq, PXDUT_ERR_BAD_PARAMS, "T must be 8");
     return;
   }
   if (q.gyro_comp != 0u) {
-    error_reply(seq, kErrParams, "gyro compensation is not supported");
+    error_reply(seq, PXDUT_ERR_BAD_PARAMS, "gyro compensation is not supported");
     return;
   }
   if (q.search_radius < 1u || q.search_radius > 31u || q.blocks < 1u || q.blocks > 255u ||
       q.hist_filter > 1u || q.feature_threshold > 65535u || q.sad_threshold > 65535u ||
       q.min_count > 65535u || q.width > 65535u || q.height > 65535u) {
-    error_reply(seq, kErrParams, "a parameter is out of range");
+    error_reply(seq, PXDUT_ERR_BAD_PARAMS, "a parameter is out of range");
     return;
   }
   const uint32_t pois = pxdut_poi_count(&q);
   if (pois == 0u) {
-    error_reply(seq, kErrParams, "the grid does not fit the frame");
+    error_reply(seq, PXDUT_ERR_BAD_PARAMS, "the grid does not fit the frame");
     return;
   }
   if (q.width * q.height > PXDUT_MAX_PIXELS) {
-    error_reply(seq, kErrTooLarge, "frame larger than PXDUT_MAX_PIXELS");
+    error_reply(seq, PXDUT_ERR_TOO_LARGE, "frame larger than PXDUT_MAX_PIXELS");
     return;
   }
   if (pois > PXDUT_MAX_POIS) {
-    error_reply(seq, kErrTooLarge, "grid larger than PXDUT_MAX_POIS");
+    error_reply(seq, PXDUT_ERR_TOO_LARGE, "grid larger than PXDUT_MAX_POIS");
     return;
   }
   g.params = q;
   g.pois = pois;
   g.params_ok = 1;
-  reply(begin(kAck, seq));
+  reply(begin(PXDUT_MSG_ACK, seq));
 }
 
 static void on_frame(uint8_t seq, const uint8_t *body, uint32_t n) {
-  if (n < 9u || body[0] > 1u) {
-    error_reply(seq, kErrMessage, "FRAME body is image, 0, 0, offset, bytes");
+  if (n <= PXDUT_FRAME_HEADER || body[0] > PXDUT_IMAGE_NEXT) {
+    error_reply(seq, PXDUT_ERR_BAD_MESSAGE, "FRAME body is image, 0, 0, offset, bytes");
     return;
   }
   if (!g.params_ok) {
-    error_reply(seq, kErrNotReady, "no PARAMS since the device started");
+    error_reply(seq, PXDUT_ERR_NOT_READY, "no PARAMS since the device started");
     return;
   }
-  const uint32_t offset = get_u32(body + 4), len = n - 8u;
+  const uint32_t offset = get_u32(body + 4), len = n - PXDUT_FRAME_HEADER;
   if (offset > g.params.width * g.params.height ||
       len > g.params.width * g.params.height - offset) {
-    error_reply(seq, kErrRange, "FRAME bytes outside W*H");
+    error_reply(seq, PXDUT_ERR_RANGE, "FRAME bytes outside W*H");
     return;
   }
   uint8_t *dst = (uint8_t *)g.frames[body[0]] + offset;
-  for (uint32_t i = 0; i < len; ++i) dst[i] = body[8 + i];
+  for (uint32_t i = 0; i < len; ++i) dst[i] = body[PXDUT_FRAME_HEADER + i];
   g.run_ok = 0;
-  reply(begin(kAck, seq));
+  reply(begin(PXDUT_MSG_ACK, seq));
 }
 
 static void on_run(uint8_t seq, const uint8_t *body, uint32_t n) {
-  if (n != 8u) {
-    error_reply(seq, kErrMessage, "RUN body is u32 repetitions, u32 warmups");
+  if (n != PXDUT_RUN_BODY) {
+    error_reply(seq, PXDUT_ERR_BAD_MESSAGE, "RUN body is u32 repetitions, u32 warmups");
     return;
   }
   if (!g.params_ok) {
-    error_reply(seq, kErrNotReady, "no PARAMS since the device started");
+    error_reply(seq, PXDUT_ERR_NOT_READY, "no PARAMS since the device started");
     return;
   }
   const uint32_t reps = get_u32(body), warmups = get_u32(body + 4);
   if (reps < 1u) {
-    error_reply(seq, kErrMessage, "RUN needs at least 1 repetition");
+    error_reply(seq, PXDUT_ERR_BAD_MESSAGE, "RUN needs at least 1 repetition");
     return;
   }
   const uint8_t *prev = (const uint8_t *)g.frames[0], *next = (const uint8_t *)g.frames[1];
@@ -216,12 +195,12 @@ static void on_run(uint8_t seq, const uint8_t *body, uint32_t n) {
     lo = sum;
   }
   g.run_ok = 1;
-  uint8_t *p = begin(kRun | kReply, seq);
+  uint8_t *p = begin(PXDUT_MSG_RESULT, seq);
   p = put_u32(p, g.pois);
   p = put_u32(p, reps);
   p = put_u32(put_u32(p, lo), hi);
   p = put_u32(p, fastest);
-  p = put_u32(p, PXDUT_COMPUTE_ESTIMATE ? 1u : 0u);
+  p = put_u32(p, PXDUT_COMPUTE_ESTIMATE ? PXDUT_RESULT_FLAG_ESTIMATE : 0u);
   union {
     float f;
     uint32_t u;
@@ -251,23 +230,24 @@ static uint8_t *put_record(uint8_t *p, const pxdut_record *r) {
   return p;
 }
 
-#define PXDUT_RECORDS_PER_REPLY ((PXDUT_MAX_PACKET - 14u) / 32u)
+#define PXDUT_RECORDS_PER_REPLY \
+  ((PXDUT_MAX_PACKET - PXDUT_RECORDS_REPLY_OVERHEAD) / PXDUT_RECORD_BYTES)
 
 static void on_records(uint8_t seq, const uint8_t *body, uint32_t n) {
-  if (n != 8u) {
-    error_reply(seq, kErrMessage, "RECORDS body is u32 first, u32 count");
+  if (n != PXDUT_RECORDS_BODY) {
+    error_reply(seq, PXDUT_ERR_BAD_MESSAGE, "RECORDS body is u32 first, u32 count");
     return;
   }
   if (!g.run_ok) {
-    error_reply(seq, kErrNotReady, "no RUN since the last PARAMS or FRAME");
+    error_reply(seq, PXDUT_ERR_NOT_READY, "no RUN since the last PARAMS or FRAME");
     return;
   }
   const uint32_t first = get_u32(body), count = get_u32(body + 4);
   if (count < 1u || count > PXDUT_RECORDS_PER_REPLY || first > g.pois || count > g.pois - first) {
-    error_reply(seq, kErrRange, "RECORDS range outside the run's records or reply size");
+    error_reply(seq, PXDUT_ERR_RANGE, "RECORDS range outside the run's records or reply size");
     return;
   }
-  uint8_t *p = put_u32(put_u32(begin(kRecords | kReply, seq), first), count);
+  uint8_t *p = put_u32(put_u32(begin(PXDUT_MSG_RECORDS_REPLY, seq), first), count);
   for (uint32_t i = 0; i < count; ++i) p = put_record(p, &g.records[first + i]);
   reply(p);
 }
@@ -275,28 +255,28 @@ static void on_records(uint8_t seq, const uint8_t *body, uint32_t n) {
 /* One complete frame in rx[0 .. rx_len). */
 static void on_frame_received(const pxdut_device *dev) {
   if (g.rx_overflow) {
-    nak(kNakLong);
+    nak(PXDUT_NAK_TOO_LONG);
     return;
   }
   if (g.rx_len == 0u) return; /* an empty frame: a sender's resynchronisation */
   const int32_t n = pxdut_cobs_decode(g.rx, g.rx_len, g.rx);
   if (n < 0) {
-    nak(kNakCobs);
+    nak(PXDUT_NAK_BAD_COBS);
     return;
   }
-  if (n < 6) {
-    nak(kNakShort);
+  if (n < (int32_t)PXDUT_PACKET_OVERHEAD) {
+    nak(PXDUT_NAK_TOO_SHORT);
     return;
   }
   const uint32_t len = (uint32_t)n - 4u, crc = get_u32(g.rx + len);
   if (pxdut_crc32(g.rx, len) != crc) {
-    nak(kNakCrc);
+    nak(PXDUT_NAK_BAD_CRC);
     return;
   }
   const uint8_t type = g.rx[0], seq = g.rx[1];
   const uint8_t *body = g.rx + 2;
   const uint32_t body_len = len - 2u;
-  if (type != kHello && g.have_last && seq == g.last_seq && crc == g.last_crc) {
+  if (type != PXDUT_MSG_HELLO && g.have_last && seq == g.last_seq && crc == g.last_crc) {
     pxdut_port_write(g.tx, (int)g.tx_len); /* its reply was lost: the same reply again */
     return;
   }
@@ -304,28 +284,28 @@ static void on_frame_received(const pxdut_device *dev) {
   g.last_seq = seq;
   g.last_crc = crc;
   switch (type) {
-    case kHello: {
+    case PXDUT_MSG_HELLO: {
       on_hello(dev, seq, body, body_len);
       return;
     }
-    case kParams: {
+    case PXDUT_MSG_PARAMS: {
       on_params(seq, body, body_len);
       return;
     }
-    case kFrame: {
+    case PXDUT_MSG_FRAME: {
       on_frame(seq, body, body_len);
       return;
     }
-    case kRun: {
+    case PXDUT_MSG_RUN: {
       on_run(seq, body, body_len);
       return;
     }
-    case kRecords: {
+    case PXDUT_MSG_RECORDS: {
       on_records(seq, body, body_len);
       return;
     }
     default: {
-      error_reply(seq, kErrMessage, "unknown message type");
+      error_reply(seq, PXDUT_ERR_BAD_MESSAGE, "unknown message type");
       return;
     }
   }

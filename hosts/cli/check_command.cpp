@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "check.hpp"
+#include "command_line.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "list_option.hpp"
@@ -20,6 +21,7 @@ struct CheckArgs {
   long cases = 0;
   bool verbose = false, generated_only = false;
   BackendOptions backend_options;
+  std::string globals;  // the global options given (--dut, --disable-isa ...): they shape the run
   CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr,
               *shard_opt = nullptr;
 };
@@ -44,7 +46,7 @@ std::vector<std::string> chosen_backends(const CheckArgs& a) {
 
 // The command that reproduces this run, for the results file.
 std::string command_line(const CheckArgs& a) {
-  std::string c = "pxflow check";
+  std::string c = "pxflow" + a.globals + " check";
   if (a.backend_opt->count() > 0) c += " --backend " + a.backend;
   if (a.backends_opt->count() > 0) c += " --backends " + a.backends;
   if (!a.require.empty()) c += " --require " + a.require;
@@ -52,11 +54,11 @@ std::string command_line(const CheckArgs& a) {
   c += " --seed " + std::to_string(a.seed);
   if (a.shard_opt->count() > 0) c += " --shard " + a.shard;
   if (a.generated_only) c += " --generated-only";
-  if (a.data_opt->count() > 0) c += " --data " + a.data_dir;
-  if (!a.backend_options.device.empty()) c += " --device " + a.backend_options.device;
+  if (a.data_opt->count() > 0) c += " --data " + shell_word(a.data_dir);
+  if (!a.backend_options.device.empty()) c += " --device " + shell_word(a.backend_options.device);
   if (a.backend_options.threads != 0)
     c += " --threads " + std::to_string(a.backend_options.threads);
-  if (!a.json_path.empty()) c += " --json " + a.json_path;
+  if (!a.json_path.empty()) c += " --json " + shell_word(a.json_path);
   return c;
 }
 
@@ -128,7 +130,10 @@ Command add_check_command(CLI::App& app) {
       ->check(CLI::Range(0, 1024));
   sub->add_option("--device", a->backend_options.device,
                   "Device index or name substring (GPU backends)");
-  return {sub, [a] { return run_check_command(*a); }};
+  return {sub, [a, sub] {
+            a->globals = global_options(*sub);
+            return run_check_command(*a);
+          }};
 }
 
 }  // namespace pxflow::cli

@@ -30,10 +30,16 @@ inline std::string given_options(const CLI::App& app) {
   return line;
 }
 
-inline std::string given_command_line(const CLI::App& sub) {
+// The global options given with the subcommand (the families' --disable-isa, --dut,
+// --dut-timeout ...): " --dut 'py=exec:python3 dev.py' --dut-timeout 2", or "". Every command
+// another one runs in-process needs them to be rerun as it ran.
+inline std::string global_options(const CLI::App& sub) {
   const CLI::App* parent = sub.get_parent();
-  return "pxflow" + (parent ? given_options(*parent) : std::string()) + " " + sub.get_name() +
-         given_options(sub);
+  return parent ? given_options(*parent) : std::string();
+}
+
+inline std::string given_command_line(const CLI::App& sub) {
+  return "pxflow" + global_options(sub) + " " + sub.get_name() + given_options(sub);
 }
 
 }  // namespace pxflow::cli

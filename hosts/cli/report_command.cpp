@@ -36,6 +36,12 @@ struct ReportArgs {
   bool quick = false, no_accuracy = false;
   std::vector<std::pair<CliExtension, bool>> extensions;  // each with its skip flag's value
   std::string command;                                    // as run (command_line.hpp)
+  std::string globals;  // the global options given (--dut, --disable-isa ...), as typed
+
+  // "pxflow --dut ... check": a command this report runs, with the global options that shape it.
+  std::string pxflow(const std::string& subcommand) const {
+    return "pxflow" + globals + " " + subcommand;
+  }
 
   // The backend of the accuracy table and the flow pictures: --backend, else the default one.
   std::string picture_backend() const { return backend.empty() ? default_backend().name : backend; }
@@ -66,7 +72,8 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
   o.data_dir = a.data_dir;
   if (a.quick) o.pairs = 40, o.video_pairs = 2;
   in.accuracy_command =
-      "pxflow accuracy --backend " + o.backend + (a.quick ? " --pairs 40 --video-pairs 2" : "") +
+      a.pxflow("accuracy") + " --backend " + o.backend +
+      (a.quick ? " --pairs 40 --video-pairs 2" : "") +
       (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
       (a.data_dir == kSampleDataDir ? "" : " --data-dir " + shell_word(a.data_dir));
   std::cout << "== " << in.accuracy_command << "\n";
@@ -225,7 +232,7 @@ int run_report(const ReportArgs& a) {
     o.corpus.seed = a.seed;
     o.corpus.data_dir = a.data_dir;
     o.backend_options = a.backend_options();
-    in.check_command = "pxflow check --seed " + std::to_string(a.seed) + backends +
+    in.check_command = a.pxflow("check") + " --seed " + std::to_string(a.seed) + backends +
                        a.shared_flags() +
                        (a.data_dir == kSampleDataDir ? "" : " --data " + shell_word(a.data_dir));
     std::cout << "== " << in.check_command << "\n";
@@ -249,7 +256,8 @@ int run_report(const ReportArgs& a) {
       o.min_seconds = 0.05;
     }
     in.bench_command =
-        "pxflow bench" + backends + (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
+        a.pxflow("bench") + backends +
+        (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
         (a.threads ? " (default sweeps at --threads " + std::to_string(a.threads) + ")" : "") +
         (a.quick ? " (quick subset: batch <= 256, no radius/thread sweep, "
                    "--min-time 0.05)"
@@ -313,6 +321,7 @@ Command add_report_command(CLI::App& app) {
       sub->add_flag(e.report_skip_flag, skipped, e.report_skip_help);
   return {sub, [a, sub] {
             a->command = given_command_line(*sub);
+            a->globals = global_options(*sub);
             return run_report(*a);
           }};
 }

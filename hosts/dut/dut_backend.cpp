@@ -87,8 +87,8 @@ void DutBackend::run_pair(const FramePair& pair, const Params& p, std::span<PoiR
     dev_->params_sent = p;
   }
   const std::size_t max_packet = std::min<std::size_t>(h.max_packet, kHostMaxPacket);
-  send_image(s, pair.prev, 0, max_packet - 18);
-  send_image(s, pair.next, 1, max_packet - 18);
+  send_image(s, pair.prev, PXDUT_IMAGE_PREV, max_packet - PXDUT_FRAME_CHUNK_MARGIN);
+  send_image(s, pair.next, PXDUT_IMAGE_NEXT, max_packet - PXDUT_FRAME_CHUNK_MARGIN);
   const Packet reply = s.exchange(kRun, run_body(1, 0), kResult);
   const std::string pair_text = "pair " + std::to_string(index);
   try {
@@ -101,7 +101,8 @@ void DutBackend::run_pair(const FramePair& pair, const Params& p, std::span<PoiR
            "RESULT of " + pair_text + " says " + std::to_string(result.pois) +
                " records, the grid has " + std::to_string(out.size()),
            "the kernel must write one record per grid POI (SPEC §2)", false);
-  const std::uint32_t per_reply = static_cast<std::uint32_t>((max_packet - 14) / 32);
+  const std::uint32_t per_reply =
+      static_cast<std::uint32_t>((max_packet - PXDUT_RECORDS_REPLY_OVERHEAD) / PXDUT_RECORD_BYTES);
   for (std::uint32_t first = 0; first < out.size(); first += per_reply) {
     const std::uint32_t count =
         std::min<std::uint32_t>(per_reply, static_cast<std::uint32_t>(out.size()) - first);

@@ -87,7 +87,8 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body,
           fail(name, std::string("a malformed ERROR: ") + w.what(), "", false);
         }
         fail(name, "the device answered ERROR " + std::to_string(e.code) + " (" + e.text + ")",
-             e.code == 4 ? "did it reset? it lost the parameters or frames" : "", false);
+             e.code == PXDUT_ERR_NOT_READY ? "did it reset? it lost the parameters or frames" : "",
+             false);
       }
       if (p.type != expect)
         fail(name, "answered with " + message_name(p.type) + ", expected " + message_name(expect),

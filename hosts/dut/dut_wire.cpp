@@ -116,16 +116,18 @@ FrameReceiver::Event FrameReceiver::push(std::uint8_t byte) {
   frame.swap(buf_);
   const bool overflow = overflow_;
   overflow_ = false;
-  if (overflow) return why_bad_ = "too long", Event::kBad;
+  if (overflow) return why_bad_ = discard_reason(PXDUT_NAK_TOO_LONG), Event::kBad;
   if (frame.empty()) return Event::kNone;
   const std::int32_t n =
       pxdut_cobs_decode(frame.data(), static_cast<std::uint32_t>(frame.size()), frame.data());
-  if (n < 0) return why_bad_ = "bad COBS", Event::kBad;
-  if (n < 6) return why_bad_ = "too short", Event::kBad;
+  if (n < 0) return why_bad_ = discard_reason(PXDUT_NAK_BAD_COBS), Event::kBad;
+  if (n < std::int32_t{PXDUT_PACKET_OVERHEAD})
+    return why_bad_ = discard_reason(PXDUT_NAK_TOO_SHORT), Event::kBad;
   const std::uint32_t len = static_cast<std::uint32_t>(n) - 4;
   const std::uint32_t crc = get16(frame.data() + len) | std::uint32_t{get16(frame.data() + len + 2)}
                                                             << 16;
-  if (pxdut_crc32(frame.data(), len) != crc) return why_bad_ = "bad CRC", Event::kBad;
+  if (pxdut_crc32(frame.data(), len) != crc)
+    return why_bad_ = discard_reason(PXDUT_NAK_BAD_CRC), Event::kBad;
   packet_.type = frame[0];
   packet_.seq = frame[1];
   packet_.body.assign(frame.begin() + 2, frame.begin() + len);
@@ -137,7 +139,7 @@ Hello parse_hello(std::span<const std::uint8_t> body) {
   Hello h;
   h.version = r.u16("version");
   if (h.version != kProtocolVersion) return h;
-  h.computes_estimate = (r.u16("flags") & 1u) != 0;
+  h.computes_estimate = (r.u16("flags") & PXDUT_HELLO_FLAG_ESTIMATE) != 0;
   h.counter_hz = r.u32("counter_hz");
   h.max_packet = r.u16("max_packet");
   r.u16("reserved");
@@ -147,8 +149,9 @@ Hello parse_hello(std::span<const std::uint8_t> body) {
   h.build = r.str("build");
   h.clock = r.str("clock");
   r.end();
-  if (h.max_packet < 64)
-    throw WireError("HELLO reply: max_packet " + std::to_string(h.max_packet) + " is below 64");
+  if (h.max_packet < PXDUT_MAX_PACKET_MIN)
+    throw WireError("HELLO reply: max_packet " + std::to_string(h.max_packet) + " is below " +
+                    std::to_string(PXDUT_MAX_PACKET_MIN));
   if (h.counter_hz == 0) throw WireError("HELLO reply: counter_hz is 0");
   return h;
 }
@@ -194,7 +197,7 @@ RunResult parse_result(std::span<const std::uint8_t> body) {
   const std::uint64_t lo = r.u32("cycles_total");
   x.cycles_total = lo | std::uint64_t{r.u32("cycles_total")} << 32;
   x.cycles_min = r.u32("cycles_min");
-  x.has_estimate = (r.u32("flags") & 1u) != 0;
+  x.has_estimate = (r.u32("flags") & PXDUT_RESULT_FLAG_ESTIMATE) != 0;
   x.flow_x_bits = r.u32("flow_x");
   x.flow_y_bits = r.u32("flow_y");
   x.quality = static_cast<std::int32_t>(r.u32("quality"));
@@ -211,11 +214,12 @@ void parse_records(std::span<const std::uint8_t> body, std::uint32_t first, std:
     throw WireError("RECORDS reply holds records " + std::to_string(got_first) + " + " +
                     std::to_string(got_count) + ", asked for " + std::to_string(first) + " + " +
                     std::to_string(count));
-  if (body.size() != 8 + std::size_t{32} * count)
+  if (body.size() != 8 + std::size_t{PXDUT_RECORD_BYTES} * count)
     throw WireError("RECORDS reply has " + std::to_string(body.size() - 8) + " record bytes for " +
-                    std::to_string(count) + " records of 32");
+                    std::to_string(count) + " records of " + std::to_string(PXDUT_RECORD_BYTES));
   if (out.size() < count) throw WireError("RECORDS reply: more records than asked for");
-  for (std::uint32_t i = 0; i < count; ++i) out[i] = decode_record(body.data() + 8 + 32 * i);
+  for (std::uint32_t i = 0; i < count; ++i)
+    out[i] = decode_record(body.data() + 8 + PXDUT_RECORD_BYTES * i);
 }
 
 DeviceErrorReply parse_error(std::span<const std::uint8_t> body) {
@@ -229,19 +233,24 @@ DeviceErrorReply parse_error(std::span<const std::uint8_t> body) {
   return e;
 }
 
-std::string nak_reason(std::span<const std::uint8_t> body) {
-  if (body.size() != 1) return "a NAK of " + std::to_string(body.size()) + " bytes";
-  switch (body[0]) {
-    case 1:
+const char* discard_reason(unsigned reason) {
+  switch (reason) {
+    case PXDUT_NAK_BAD_CRC:
       return "bad CRC";
-    case 2:
+    case PXDUT_NAK_BAD_COBS:
       return "bad COBS";
-    case 3:
+    case PXDUT_NAK_TOO_LONG:
       return "too long";
-    case 4:
+    case PXDUT_NAK_TOO_SHORT:
       return "too short";
   }
-  return "reason " + std::to_string(body[0]);
+  return nullptr;
+}
+
+std::string nak_reason(std::span<const std::uint8_t> body) {
+  if (body.size() != 1) return "a NAK of " + std::to_string(body.size()) + " bytes";
+  const char* why = discard_reason(body[0]);
+  return why ? why : "reason " + std::to_string(body[0]);
 }
 
 PoiRecord decode_record(const std::uint8_t* b) {

@@ -10,25 +10,27 @@
 #include <vector>
 
 #include "params.hpp"
+#include "pxdut_wire.h"
 #include "record.hpp"
 
 namespace pxflow::dut {
 
-inline constexpr std::uint16_t kProtocolVersion = 1;
-inline constexpr std::size_t kHostMaxPacket = 65535;  // the largest packet the host accepts
+// The protocol's numbers are dut/include/pxdut_wire.h's, the one table device and host share.
+inline constexpr std::uint16_t kProtocolVersion = PXDUT_PROTOCOL_VERSION;
+inline constexpr std::size_t kHostMaxPacket = PXDUT_MAX_PACKET_MAX;  // the largest it accepts
 
 enum MessageType : std::uint8_t {
-  kHello = 0x01,
-  kParams = 0x02,
-  kFrame = 0x03,
-  kRun = 0x04,
-  kRecords = 0x05,
-  kAck = 0x06,
-  kNak = 0x15,
-  kError = 0x7F,
-  kHelloReply = 0x81,
-  kResult = 0x84,
-  kRecordsReply = 0x85,
+  kHello = PXDUT_MSG_HELLO,
+  kParams = PXDUT_MSG_PARAMS,
+  kFrame = PXDUT_MSG_FRAME,
+  kRun = PXDUT_MSG_RUN,
+  kRecords = PXDUT_MSG_RECORDS,
+  kAck = PXDUT_MSG_ACK,
+  kNak = PXDUT_MSG_NAK,
+  kError = PXDUT_MSG_ERROR,
+  kHelloReply = PXDUT_MSG_HELLO_REPLY,
+  kResult = PXDUT_MSG_RESULT,
+  kRecordsReply = PXDUT_MSG_RECORDS_REPLY,
 };
 
 // "HELLO", "RESULT", ... for messages; "0x42" for a type the protocol does not have.
@@ -107,6 +109,9 @@ struct DeviceErrorReply {
   std::string text;
 };
 DeviceErrorReply parse_error(std::span<const std::uint8_t> body);
+// "bad CRC", "too long", ...: why a frame was discarded (a PXDUT_NAK_* reason), the words of
+// the host's own receiver and of a device's NAK; nullptr for a reason the protocol lacks.
+const char* discard_reason(unsigned reason);
 std::string nak_reason(std::span<const std::uint8_t> body);
 
 // SPEC §4's 32 bytes, little-endian, field by field.

@@ -106,7 +106,7 @@ int pxdut_port_write(const uint8_t *buf, int len) {
       }
       break;
     case kLate:
-      if (type == 0x84) usleep((useconds_t)arg * 1000u);
+      if (type == PXDUT_MSG_RESULT) usleep((useconds_t)arg * 1000u);
       break;
     case kGarbage:
       if (sent == arg) send_noise(200);
@@ -120,33 +120,34 @@ int pxdut_port_write(const uint8_t *buf, int len) {
       }
       break;
     case kVersion:
-      if (type == 0x81) {
+      if (type == PXDUT_MSG_HELLO_REPLY) {
         packet[2] = 2;
         return ref_link_write(frame, seal_frame(packet, n, frame));
       }
       break;
     case kShortResult:
-      if (type == 0x84) {
+      if (type == PXDUT_MSG_RESULT) {
         packet[2] -= 1;
         return ref_link_write(frame, seal_frame(packet, n, frame));
       }
       break;
     case kWrongEstimate:
-      if (type == 0x84) {
+      if (type == PXDUT_MSG_RESULT) {
         packet[26] ^= 1; /* flow_x's lowest byte: type, seq, then 24 bytes before it */
         return ref_link_write(frame, seal_frame(packet, n, frame));
       }
       break;
     case kExtraRecords:
-      if (type == 0x85) {
-        memmove(packet + n - 4, packet + n - 36, 32); /* the last record again */
-        return ref_link_write(frame, seal_frame(packet, n + 32, frame));
+      if (type == PXDUT_MSG_RECORDS_REPLY) {
+        memmove(packet + n - 4, packet + n - 4 - PXDUT_RECORD_BYTES, PXDUT_RECORD_BYTES);
+        /* the last record again */
+        return ref_link_write(frame, seal_frame(packet, n + (int)PXDUT_RECORD_BYTES, frame));
       }
       break;
     case kShortRecords:
-      if (type == 0x85) {
-        memmove(packet + n - 36, packet + n - 4, 4);
-        return ref_link_write(frame, seal_frame(packet, n - 32, frame));
+      if (type == PXDUT_MSG_RECORDS_REPLY) {
+        memmove(packet + n - 4 - PXDUT_RECORD_BYTES, packet + n - 4, 4); /* the CRC's room */
+        return ref_link_write(frame, seal_frame(packet, n - (int)PXDUT_RECORD_BYTES, frame));
       }
       break;
     default:

@@ -15,7 +15,29 @@ import zlib
 import numpy as np
 from numpy.lib.stride_tricks import sliding_window_view
 
-VERSION = 1
+# The protocol's numbers, named as dut/include/pxdut_wire.h names them without its PXDUT_ (the
+# ctest dut_wire_table checks every one against the header, and that no code is written bare).
+PROTOCOL_VERSION = 1
+MSG_HELLO = 0x01
+MSG_PARAMS = 0x02
+MSG_FRAME = 0x03
+MSG_RUN = 0x04
+MSG_RECORDS = 0x05
+MSG_ACK = 0x06
+MSG_NAK = 0x15
+MSG_ERROR = 0x7F
+MSG_HELLO_REPLY = 0x81
+MSG_RESULT = 0x84
+MSG_RECORDS_REPLY = 0x85
+NAK_BAD_CRC, NAK_BAD_COBS, NAK_TOO_LONG, NAK_TOO_SHORT = 1, 2, 3, 4
+ERR_BAD_MESSAGE, ERR_BAD_PARAMS, ERR_TOO_LARGE, ERR_NOT_READY, ERR_RANGE = 1, 2, 3, 4, 5
+HELLO_FLAG_ESTIMATE = RESULT_FLAG_ESTIMATE = 1
+PACKET_OVERHEAD = 6
+RECORD_BYTES = 32
+PARAMS_BODY = 40
+FRAME_HEADER = RUN_BODY = RECORDS_BODY = 8
+RECORDS_REPLY_OVERHEAD = 14
+
 MAX_PACKET = 16384
 MAX_PIXELS = 1 << 24
 MAX_POIS = 65536
@@ -157,74 +179,75 @@ class Device:
         self.send(self.reply)
 
     def error(self, seq, code, text):
-        self.answer(0x7F, seq, struct.pack("<HB", code, len(text)) + text.encode())
+        self.answer(MSG_ERROR, seq, struct.pack("<HB", code, len(text)) + text.encode())
 
     def on_frame(self, raw):
         if not raw:
             return
         if len(raw) > MAX_PACKET + MAX_PACKET // 254 + 1:
-            return self.send(frame(0x15, 0, b"\x03"))
+            return self.send(frame(MSG_NAK, 0, bytes([NAK_TOO_LONG])))
         packet = cobs_decode(raw)
         if packet is None:
-            return self.send(frame(0x15, 0, b"\x02"))
-        if len(packet) < 6:
-            return self.send(frame(0x15, 0, b"\x04"))
+            return self.send(frame(MSG_NAK, 0, bytes([NAK_BAD_COBS])))
+        if len(packet) < PACKET_OVERHEAD:
+            return self.send(frame(MSG_NAK, 0, bytes([NAK_TOO_SHORT])))
         (crc,) = struct.unpack("<I", packet[-4:])
         if zlib.crc32(packet[:-4]) != crc:
-            return self.send(frame(0x15, 0, b"\x01"))
+            return self.send(frame(MSG_NAK, 0, bytes([NAK_BAD_CRC])))
         msg_type, seq, body = packet[0], packet[1], packet[2:-4]
-        if msg_type != 0x01 and self.last == (seq, crc):
+        if msg_type != MSG_HELLO and self.last == (seq, crc):
             return self.send(self.reply)  # its reply was lost: the same reply again
         self.last = (seq, crc)
-        handler = {0x01: self.hello, 0x02: self.params, 0x03: self.frame, 0x04: self.run,
-                   0x05: self.get_records}.get(msg_type)
+        handler = {MSG_HELLO: self.hello, MSG_PARAMS: self.params, MSG_FRAME: self.frame,
+                   MSG_RUN: self.run, MSG_RECORDS: self.get_records}.get(msg_type)
         if handler is None:
-            return self.error(seq, 1, "unknown message type")
+            return self.error(seq, ERR_BAD_MESSAGE, "unknown message type")
         handler(seq, body)
 
     def hello(self, seq, body):
         strings = b"".join(bytes([len(s)]) + s for s in (
             b"numpy-prototype", b"tests/dut/pxdut_numpy.py", b"dut-python-perf-counter-ns"))
-        self.answer(0x81, seq, struct.pack("<HHIHHII", VERSION, 1, 10**9, MAX_PACKET, 0,
-                                           MAX_PIXELS, MAX_POIS) + strings)
+        self.answer(MSG_HELLO_REPLY, seq, struct.pack(
+            "<HHIHHII", PROTOCOL_VERSION, HELLO_FLAG_ESTIMATE, 10**9, MAX_PACKET, 0, MAX_PIXELS,
+            MAX_POIS) + strings)
 
     def params(self, seq, body):
         self.q, self.records = None, None
-        if len(body) != 40:
-            return self.error(seq, 1, "PARAMS body is 10 x u32")
+        if len(body) != PARAMS_BODY:
+            return self.error(seq, ERR_BAD_MESSAGE, "PARAMS body is 10 x u32")
         w, h, s, t, b, ft, vt, hf, mc, gc = struct.unpack("<10I", body)
         if t != 8 or gc != 0 or not 1 <= s <= 31 or not 1 <= b <= 255:
-            return self.error(seq, 2, "T must be 8, GC 0, S 1..31, B 1..255")
+            return self.error(seq, ERR_BAD_PARAMS, "T must be 8, GC 0, S 1..31, B 1..255")
         nx, ny = grid_axis(w, s, b), grid_axis(h, s, b)
         if not nx or not ny:
-            return self.error(seq, 2, "the grid does not fit the frame")
+            return self.error(seq, ERR_BAD_PARAMS, "the grid does not fit the frame")
         if w * h > MAX_PIXELS or len(nx) * len(ny) > MAX_POIS:
-            return self.error(seq, 3, "too large for this device")
+            return self.error(seq, ERR_TOO_LARGE, "too large for this device")
         self.q = dict(W=w, H=h, S=s, B=b, FT=ft, VT=vt, HF=hf, MINCOUNT=mc, xs=nx, ys=ny)
         self.frames = [np.zeros(w * h, np.int32), np.zeros(w * h, np.int32)]
-        self.answer(0x06, seq)
+        self.answer(MSG_ACK, seq)
 
     def frame(self, seq, body):
-        if len(body) < 9 or body[0] > 1:
-            return self.error(seq, 1, "FRAME body is image, 0, 0, offset, bytes")
+        if len(body) <= FRAME_HEADER or body[0] > 1:
+            return self.error(seq, ERR_BAD_MESSAGE, "FRAME body is image, 0, 0, offset, bytes")
         if self.q is None:
-            return self.error(seq, 4, "no PARAMS yet")
+            return self.error(seq, ERR_NOT_READY, "no PARAMS yet")
         (offset,) = struct.unpack("<I", body[4:8])
-        data = np.frombuffer(body[8:], np.uint8)
+        data = np.frombuffer(body[FRAME_HEADER:], np.uint8)
         if offset + len(data) > self.q["W"] * self.q["H"]:
-            return self.error(seq, 5, "FRAME bytes outside W*H")
+            return self.error(seq, ERR_RANGE, "FRAME bytes outside W*H")
         self.frames[body[0]][offset:offset + len(data)] = data
         self.records = None
-        self.answer(0x06, seq)
+        self.answer(MSG_ACK, seq)
 
     def run(self, seq, body):
-        if len(body) != 8:
-            return self.error(seq, 1, "RUN body is u32 repetitions, u32 warmups")
+        if len(body) != RUN_BODY:
+            return self.error(seq, ERR_BAD_MESSAGE, "RUN body is u32 repetitions, u32 warmups")
         if self.q is None:
-            return self.error(seq, 4, "no PARAMS yet")
+            return self.error(seq, ERR_NOT_READY, "no PARAMS yet")
         reps, warmups = struct.unpack("<II", body)
         if reps < 1:
-            return self.error(seq, 1, "RUN needs at least 1 repetition")
+            return self.error(seq, ERR_BAD_MESSAGE, "RUN needs at least 1 repetition")
         q = self.q
         prev = self.frames[0].reshape(q["H"], q["W"])
         nxt = self.frames[1].reshape(q["H"], q["W"])
@@ -237,18 +260,19 @@ class Device:
             if i >= warmups:
                 total, fastest = total + ticks, min(fastest, ticks)
         self.records = records
-        self.answer(0x84, seq, struct.pack("<IIQII", len(records), reps, total, fastest, 1) +
+        self.answer(MSG_RESULT, seq, struct.pack("<IIQII", len(records), reps, total, fastest,
+                                                 RESULT_FLAG_ESTIMATE) +
                     fx.tobytes() + fy.tobytes() + struct.pack("<ii", quality, count))
 
     def get_records(self, seq, body):
-        if len(body) != 8:
-            return self.error(seq, 1, "RECORDS body is u32 first, u32 count")
+        if len(body) != RECORDS_BODY:
+            return self.error(seq, ERR_BAD_MESSAGE, "RECORDS body is u32 first, u32 count")
         if self.records is None:
-            return self.error(seq, 4, "no RUN since the last PARAMS or FRAME")
+            return self.error(seq, ERR_NOT_READY, "no RUN since the last PARAMS or FRAME")
         first, count = struct.unpack("<II", body)
-        if count < 1 or count > (MAX_PACKET - 14) // 32 or first + count > len(self.records):
-            return self.error(seq, 5, "RECORDS range outside the run's records or reply size")
-        self.answer(0x85, seq, struct.pack("<II", first, count) + b"".join(
+        if count < 1 or count > (MAX_PACKET - RECORDS_REPLY_OVERHEAD) // RECORD_BYTES or first + count > len(self.records):
+            return self.error(seq, ERR_RANGE, "RECORDS range outside the run's records or reply size")
+        self.answer(MSG_RECORDS_REPLY, seq, struct.pack("<II", first, count) + b"".join(
             pack_record(r) for r in self.records[first:first + count]))
 
 

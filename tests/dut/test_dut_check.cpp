@@ -1,6 +1,7 @@
-// The reference device through every transport, the small (20 KiB) device, and the --dut spec's
-// errors, by running pxflow as a user does.
+// The reference device through every transport, the small (20 KiB) device, the --dut spec's
+// errors, and a report of a --dut row, by running pxflow as a user does.
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include "dut_test_util.hpp"
 
@@ -72,4 +73,39 @@ TEST_CASE("a bad --dut spec is one line and exit 2", "[dut]") {
   const auto t = run_pxflow({"check", "--dut-timeout", "0", "--backends", "ref-original"});
   CHECK(t.exit_code == 2);
   CHECK_THAT(t.err, Catch::Contains("--dut-timeout"));
+}
+
+TEST_CASE("a report of a --dut row records check and bench commands that rerun it", "[dut]") {
+  TempDir dir;
+  // A spec with a space (the device's argument), so that the recorded command must quote it.
+  const std::string spec = std::string("d=exec:") + DUT_FAULTY + " none";
+  const auto t = timed_pxflow({"report", "--out", dir.path("r"), "--dut", spec, "--dut-timeout",
+                               "7", "--backends", "ref-original,d", "--no-accuracy", "--quick"});
+  INFO(t.r.out << t.r.err);
+  REQUIRE(t.r.exit_code == 0);
+  const auto results = nlohmann::json::parse(slurp(dir.path("r/results.json")));
+  const std::string globals =
+      "pxflow --dut 'd=exec:" + std::string(DUT_FAULTY) + " none' --dut-timeout 7 ";
+  const std::string check = results["commands"]["check"].get<std::string>();
+  CHECK_THAT(check, Catch::StartsWith(globals + "check "));
+  CHECK_THAT(results["commands"]["bench"].get<std::string>(),
+             Catch::StartsWith(globals + "bench "));
+  CHECK_THAT(slurp(dir.path("r/report.md")), Catch::Contains("Command: `" + check + "`"));
+  // The recorded check, run by a shell as a reader would paste it, checks the device again.
+  const auto again =
+      run_program("/bin/sh", {"-c", std::string(PXFLOW_BINARY) + check.substr(6) + " --require d"});
+  INFO(again.out << again.err);
+  CHECK(again.exit_code == 0);
+  CHECK_THAT(again.out, Catch::Matches("(.|\n)*\nd +passed (.|\n)*"));
+}
+
+TEST_CASE("check --json records the --dut spec it ran with", "[dut]") {
+  const std::string spec = std::string("d=exec:") + DUT_FAULTY + " none";
+  const auto r = run_pxflow(
+      {"check", "--dut", spec, "--backends", "ref-original,d", "--generated-only", "--json", "-"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(nlohmann::json::parse(r.out)["command"] ==
+        "pxflow --dut '" + spec + "' check --backends ref-original,d --seed 1 --generated-only " +
+            "--json -");
 }
