@@ -43,10 +43,10 @@ class Backend {
   struct DeviceTime {
     std::string source;  // e.g. "opencl-event-profiling", "vulkan-timestamps", "gap8-model-cycles"
     double ns = 0;
-    std::optional<double> cycles;  // when the clock counts cycles
+    std::optional<double> cycles{};  // when the clock counts cycles
     // When the clock counts instructions instead (QEMU -icount: the m4-qemu row); never
     // reported as cycles.
-    std::optional<double> instructions;
+    std::optional<double> instructions{};
     // A deterministic cycle model (the GAP8 model): one run is the measurement, and the host
     // time is the simulation's speed, never the backend's throughput.
     bool exact = false;
@@ -76,7 +76,7 @@ struct BackendRow {
   bool preferred = false;
   // Whether the backend has devices that --device chooses among (OpenCL, Vulkan).
   bool has_devices = false;
-  std::string family;  // filled in by the registry from the family the row came from
+  std::string family{};  // filled in by the registry from the family the row came from
 };
 
 // A global command-line option a family adds (e.g. the cpu family's --disable-isa). The CLI
@@ -106,10 +106,10 @@ struct BackendFamily {
   std::string name;  // "cpu", "opencl", ...
   std::vector<BackendRow> rows;
   std::vector<FamilyOption> options;
-  std::function<std::optional<BenchBound>()> measure_bench_bound;  // empty: no bound
+  std::function<std::optional<BenchBound>()> measure_bench_bound{};  // empty: no bound
   // Checks the environment variables the family reads (the cpu family: PXFLOW_DISABLE); throws
   // InputError for a bad value. The CLI calls it before every command. Empty: nothing to check.
-  std::function<void()> check_environment;
+  std::function<void()> check_environment{};
 };
 
 }  // namespace pxflow

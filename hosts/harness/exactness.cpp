@@ -73,7 +73,12 @@ Comparison compare_with_reference(const CaseLabel& label, std::span<const std::s
       std::string line = where + " poi=" + std::to_string(n) + " (x=" + std::to_string(w.x) +
                          ",y=" + std::to_string(w.y) + ") field=" + d->field +
                          " expected=" + d->expected + " got=" + d->got;
-      if (detail && c.mismatches < max_lines) line += "\n" + detail(pair, w);
+      if (detail && c.mismatches < max_lines) {
+        // Two appends, not "\n" + detail(): GCC 12 warns on that one (-Wrestrict, a false
+        // positive, GCC bug 105329).
+        line += '\n';
+        line += detail(pair, w);
+      }
       emit(std::move(line));
     }
     const FrameResult r = estimate_flow(got.subspan(pair * per, per), p);
