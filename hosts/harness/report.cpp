@@ -73,6 +73,22 @@ std::string render_md(const std::vector<Section>& secs) {
   return o.str();
 }
 
+// A section's text, escaped, its `code` spans (Markdown's, as report.md writes them) as <code>.
+std::string html_text(const std::string& text) {
+  std::string out;
+  bool code = false;
+  std::size_t start = 0;
+  for (std::size_t tick = text.find('`'); tick != std::string::npos;
+       start = tick + 1, tick = text.find('`', start)) {
+    out += html_escape(text.substr(start, tick - start));
+    out += code ? "</code>" : "<code>";
+    code = !code;
+  }
+  out += html_escape(text.substr(start));
+  if (code) out += "</code>";  // an unpaired backtick: the rest is code, the tag closed
+  return out;
+}
+
 std::string html_table(const Section& s) {
   std::ostringstream o;
   o << "<table><tr>";
@@ -96,7 +112,8 @@ std::string render_html(const std::vector<Section>& secs, const std::filesystem:
        "body{font-family:sans-serif;max-width:1060px;margin:1em auto;padding:0 1em;color:#222}"
        "h1{margin:0.2em 0}table{border-collapse:collapse;margin:0.6em 0}"
        "td,th{border:1px solid #ccc;padding:3px 8px;font-size:13px;vertical-align:top}"
-       "th{background:#f0f0f0}code{background:#f4f4f4;padding:1px 4px}"
+       "p{font-size:14px;line-height:1.4}th{background:#f0f0f0}code{background:#f4f4f4;padding:1px "
+       "4px}"
        "td.failed{color:#b00;font-weight:bold}td.passed{color:#070}"
        "td:first-child{white-space:nowrap}"
        ".first td,.first th{font-size:12px;padding:2px 6px}.first p{font-size:13px;margin:0.3em 0}"
@@ -111,7 +128,7 @@ std::string render_html(const std::vector<Section>& secs, const std::filesystem:
     }
     if (first && s.key == "provenance") o << "<div class='first'>";
     o << "<h2 id='" << html_escape(s.key) << "'>" << html_escape(s.title) << "</h2><p>"
-      << html_escape(s.text) << "</p>";
+      << html_text(s.text) << "</p>";
     for (const auto& c : s.charts) o << "<div>" << svg_chart(c) << "</div>";
     for (const auto& p : s.pictures)  // inlined, so the page stays one self-contained file
       o << "<figure><img alt='" << html_escape(p.caption)

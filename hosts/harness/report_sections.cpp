@@ -22,6 +22,17 @@ bool timed(const Json& r) { return r.value("median_ns_per_frame", 0.0) > 0; }
 bool host_clock(const Json& r) { return str(r, "source").rfind("host", 0) == 0; }
 // A deterministic device clock (the GAP8 model's cycles): one checked run is the measurement.
 bool exact_clock(const Json& r) { return r.value("exact_clock", false); }
+// An exact clock that counts instructions, not cycles (QEMU -icount: the m4-qemu row). Its
+// frames/s assume one instruction per tick of QEMU's virtual clock, a speed no core has: it is
+// tabled, labelled as such, and never charted beside the cycle models.
+bool counts_instructions(const Json& r) { return r.contains("instructions_per_frame"); }
+std::string clock_label(const Json& r) {
+  return counts_instructions(r) ? " (instruction count)" : " (model clock)";
+}
+const char* const kInstructionNote =
+    " Rows labelled by an instruction count (QEMU -icount) are tabled, not charted: their "
+    "frames/s take one instruction per tick of QEMU's virtual clock, a speed no core has.";
+std::string threads_text(int n) { return std::to_string(n) + (n == 1 ? " thread" : " threads"); }
 
 ChartStyle style_of(const std::string& backend) { return backend_style(registry_rank(backend)); }
 
@@ -39,8 +50,7 @@ std::string point_name(const Json& r) {
   return str(r, "profile") + ", " + std::to_string(r.value("width", 0)) + "x" +
          std::to_string(r.value("height", 0)) +
          ", S=" + std::to_string(r.value("search_radius", 0)) + ", batch " +
-         std::to_string(r.value("batch", 0)) + ", " + std::to_string(r.value("threads", 0)) +
-         " threads";
+         std::to_string(r.value("batch", 0)) + ", " + threads_text(r.value("threads", 0));
 }
 
 bool same_problem(const Json& a, const Json& b) {
@@ -96,7 +106,7 @@ std::string sweep_column(const SweepInfo& s, const Json& r) {
   if (n == "size")
     return std::to_string(r["width"].get<int>()) + "x" + std::to_string(r["height"].get<int>());
   if (n == "radius") return "S=" + std::to_string(r["search_radius"].get<int>());
-  return std::to_string(r["threads"].get<int>()) + " threads";
+  return threads_text(r["threads"].get<int>());
 }
 
 // A row of the batch sweep that is the sweep's point at its default value (e.g. batch 256 at
@@ -122,7 +132,7 @@ std::string fixed_part(const SweepInfo& s, const Json& r) {
     out += ", " + std::to_string(r.value("width", 0)) + "x" + std::to_string(r.value("height", 0));
   if (n != "radius") out += ", S=" + std::to_string(r.value("search_radius", 0));
   if (n != "batch") out += ", batch " + std::to_string(r.value("batch", 0));
-  if (n != "threads") out += ", " + std::to_string(r.value("threads", 0)) + " threads";
+  if (n != "threads") out += ", " + threads_text(r.value("threads", 0));
   return out;
 }
 
@@ -256,6 +266,7 @@ Section throughput(const Json& bench, const std::string& cmd) {
   });
   for (const Json* r : model_rows) {
     if (!same_point(*r, *pick)) s.rows.push_back(bench_cells(*r));
+    if (counts_instructions(*r)) continue;
     sim.bars.push_back(
         {str(*r, "backend") + " (batch " + std::to_string((*r)["batch"].get<int>()) + ")",
          (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
@@ -267,6 +278,9 @@ Section throughput(const Json& bench, const std::string& cmd) {
       "run and charted apart, never beside the host's figures. Speed-ups compare rows of the "
       "same clock only. Command: `" +
       cmd + "`.";
+  if (std::any_of(model_rows.begin(), model_rows.end(),
+                  [](const Json* r) { return counts_instructions(*r); }))
+    s.text += kInstructionNote;
   if (!host.bars.empty()) s.charts.push_back(host);
   if (!sim.bars.empty()) s.charts.push_back(sim);
   return s;
@@ -307,6 +321,7 @@ Section scaling(const Json& bench, const std::string& sweep) {
   struct Line {
     std::string label;
     bool model = false;
+    bool charted = true;
     std::map<double, std::string> cells;
     std::set<std::string> notes;
     Series series;
@@ -318,9 +333,11 @@ Section scaling(const Json& bench, const std::string& sweep) {
     const std::string backend = str(*r, "backend");
     const double x = sweep_x(*info, *r);
     columns[x] = sweep_column(*info, *r);
-    Line& l = lines[{registry_rank(backend), backend + (model ? " (model clock)" : "")}];
-    l.label = backend + (model ? " (model clock)" : "");
+    const std::string label = backend + (model ? clock_label(*r) : "");
+    Line& l = lines[{registry_rank(backend), label}];
+    l.label = label;
     l.model = model;
+    l.charted = !counts_instructions(*r);
     l.series.name = backend;
     l.series.style = style_of(backend);
     if (!timed(*r)) {
@@ -351,7 +368,7 @@ Section scaling(const Json& bench, const std::string& sweep) {
     for (const auto& n : l.notes) notes += (notes.empty() ? "" : "; ") + n;
     row.push_back(notes);
     s.rows.push_back(row);
-    if (!l.series.points.empty()) (l.model ? model : host).series.push_back(l.series);
+    if (l.charted && !l.series.points.empty()) (l.model ? model : host).series.push_back(l.series);
   }
   s.text = std::string(info->per_poi ? "Nanoseconds per POI" : "Frames per second") + " by " +
            info->x_label + ", at " + fixed_part(*info, first) +
@@ -360,6 +377,8 @@ Section scaling(const Json& bench, const std::string& sweep) {
            "apart, by the model's clock, from the pairs their note names. Cells that are not "
            "numbers say why (n/a: outside the backend's limits; not run: the note says how to run "
            "it).";
+  if (std::any_of(lines.begin(), lines.end(), [](const auto& kv) { return !kv.second.charted; }))
+    s.text += kInstructionNote;
   if (!host.series.empty()) s.charts.push_back(host);
   if (!model.series.empty()) s.charts.push_back(model);
   return s;
