@@ -12,8 +12,12 @@ import sys
 import time
 import zlib
 
-import numpy as np
-from numpy.lib.stride_tricks import sliding_window_view
+try:
+    import numpy as np
+    from numpy.lib.stride_tricks import sliding_window_view
+except ImportError:  # one line for pxflow to show beside its "device went away"
+    sys.exit(f"pxdut_numpy.py: {sys.executable} has no numpy: install python3-numpy (Debian) "
+             "or give a python3 that has it (e.g. exec:/usr/bin/python3)")
 
 # The protocol's numbers, named as dut/include/pxdut_wire.h names them without its PXDUT_ (the
 # ctest dut_wire_table checks every one against the header, and that no code is written bare).
