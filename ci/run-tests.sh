@@ -1,16 +1,46 @@
 #!/usr/bin/env bash
-# The whole test suite: set up, build, run every test; then the same tests built with
-# AddressSanitizer + UndefinedBehaviorSanitizer (tests labelled no-sanitizer opt out, each saying
-# why in its CMakeLists.txt). Exits non-zero when anything fails.
-set -euo pipefail
+# The whole test suite in two stages: set up, build and run every test (Release); then the same
+# tests built with AddressSanitizer + UndefinedBehaviorSanitizer (tests labelled no-sanitizer are
+# left out, each saying why beside its label). Both stages run even when the first fails; the
+# script ends with one line per stage (passed, failed, skipped with each skip's reason, left out,
+# time) and exits non-zero when anything failed.
+set -uo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 jobs=$(nproc)
+summary=()
+status=0
 
-echo "== build and test (Release)"
-"$root/ci/build.sh" "$root/build"
-ctest --test-dir "$root/build" -j"$jobs" --output-on-failure
+# stage NAME BUILD_DIR CTEST_ARGS [CMAKE_ARGS...]: build, then run the tests CTEST_ARGS select.
+stage() {
+  local name=$1 build=$2 ctest_args=$3
+  shift 3
+  local t0 t1 t2 left_out=""
+  t0=$(date +%s)
+  echo "== $name: build ($build)"
+  if ! "$root/ci/build.sh" "$build" "$@"; then
+    summary+=("$name: the build failed, no test ran, $(($(date +%s) - t0)) s")
+    status=1
+    return
+  fi
+  t1=$(date +%s)
+  echo "== $name: test"
+  rm -f "$build/ctest-junit.xml"
+  # shellcheck disable=SC2086  # CTEST_ARGS is a list of options
+  ctest --test-dir "$build" -j"$jobs" --output-on-failure --output-junit "$build/ctest-junit.xml" \
+    $ctest_args || status=1
+  t2=$(date +%s)
+  if [[ $ctest_args == *"-LE no-sanitizer"* ]]; then
+    left_out="$(ctest --test-dir "$build" -N -L no-sanitizer | sed -n 's/^Total Tests: //p') left out (label no-sanitizer)"
+  fi
+  summary+=("$(python3 "$root/ci/test-summary.py" "$name" "$build/ctest-junit.xml" \
+    "$((t2 - t0)) s (build $((t1 - t0)) s, tests $((t2 - t1)) s)" "$left_out")")
+}
 
-echo "== build and test (ASan + UBSan)"
-"$root/ci/build.sh" "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPXFLOW_SANITIZE=ON
-ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --test-dir "$root/build-sanitize" -j"$jobs" --output-on-failure -LE no-sanitizer
+stage "Release" "$root/build" ""
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+stage "ASan+UBSan" "$root/build-sanitize" "-LE no-sanitizer" \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPXFLOW_SANITIZE=ON
+
+echo "== summary"
+printf '%s\n' "${summary[@]}"
+exit "$status"

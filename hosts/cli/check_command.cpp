@@ -109,7 +109,8 @@ Command add_check_command(CLI::App& app) {
   a->backends_opt = sub->add_option("--backends", a->backends,
                                     "Comma-separated backends to check (default: all compiled in)");
   sub->add_option("--require", a->require,
-                  "Backends that must run (comma-separated, or 'all'): their skips fail");
+                  "Backends that must run (comma-separated, or 'all': every row but those needing "
+                  "hardware this machine lacks, an ISA extension): their skips fail");
   sub->add_option("--seed", a->seed, "Seed of the random pairs (printed; reproduces any failure)")
       ->check(seed_value())
       ->capture_default_str();

@@ -76,6 +76,10 @@ struct BackendRow {
   bool preferred = false;
   // Whether the backend has devices that --device chooses among (OpenCL, Vulkan).
   bool has_devices = false;
+  // For a row that needs hardware some machines of the same build lack (an ISA extension): true
+  // where this machine lacks it. `check --require all` then reports the row skipped (the
+  // machine's limit, not the backend's failure); naming the row in --require still requires it.
+  std::function<bool()> host_lacks{};
   std::string family{};  // filled in by the registry from the family the row came from
 };
 

@@ -80,6 +80,7 @@ BackendRow isa_row(const cpu::IsaInfo& info) {
   row.needs = info.needs;
   row.probe = [isa = row.name] { return cpu::isa_unavailable(isa); };
   row.create = [isa = row.name](const BackendOptions& o) { return create_isa(isa, o); };
+  row.host_lacks = [has = info.cpu_has] { return !has(); };
   return row;
 }
 

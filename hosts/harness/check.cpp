@@ -60,8 +60,9 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
     }
     const std::string why = opened.why_not;
     if (!why.empty()) {
-      const bool required =
-          all || std::find(o.require.begin(), o.require.end(), c.row->name) != o.require.end();
+      const bool named =
+          std::find(o.require.begin(), o.require.end(), c.row->name) != o.require.end();
+      const bool required = named || (all && !(c.row->host_lacks && c.row->host_lacks()));
       c.outcome.state = required ? BackendState::kFailed : BackendState::kSkipped;
       c.outcome.reason = why;
       if (required)

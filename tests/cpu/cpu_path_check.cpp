@@ -48,7 +48,10 @@ std::vector<RealPair> real_pairs(const std::string& dir) {
 // line) for the NEON cross test, which runs where OpenCV is not available.
 int dump_real(const std::string& dir) {
   const std::vector<RealPair> pairs = real_pairs(kSampleDataDir);
-  if (pairs.empty()) return kSkip;
+  if (pairs.empty()) {
+    std::printf("SKIPPED: no real frames in %s (opencv-doc)\n", kSampleDataDir);
+    return kSkip;
+  }
   std::filesystem::create_directories(dir);
   std::ofstream list(dir + "/frames.txt");
   for (const RealPair& rp : pairs) {

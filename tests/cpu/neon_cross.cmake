@@ -23,8 +23,8 @@ endif()
 
 if(missing)
   message(STATUS "pxflow: NEON cross test will be skipped, missing:${missing}")
-  add_test(NAME cpu_neon_cross COMMAND sh -c "echo 'skipped: missing${missing}'; exit 77")
-  set_tests_properties(cpu_neon_cross PROPERTIES SKIP_RETURN_CODE 77 LABELS "cpu;cross")
+  pxflow_missing_tool_test(cpu_neon_cross "missing${missing}")
+  set_tests_properties(cpu_neon_cross PROPERTIES LABELS "cross")
   return()
 endif()
 
@@ -78,9 +78,10 @@ add_custom_target(neon_cross_check ALL DEPENDS ${neon_cross_binary})
 set(real_raw ${CMAKE_CURRENT_BINARY_DIR}/real_raw)
 add_test(NAME cpu_real_frames_raw COMMAND cpu_path_check --dump-real ${real_raw})
 set_tests_properties(cpu_real_frames_raw PROPERTIES
-  SKIP_RETURN_CODE 77 FIXTURES_SETUP cpu_real_raw LABELS "cpu;cross")
+  FIXTURES_SETUP cpu_real_raw LABELS "cross")
+pxflow_tool_skip(cpu_real_frames_raw)  # the real frames of opencv-doc
 add_test(NAME cpu_neon_cross
          COMMAND ${PXFLOW_QEMU_AARCH64} -L ${PXFLOW_AARCH64_SYSROOT} ${neon_cross_binary}
                  ${real_raw}/frames.txt)
-set_tests_properties(cpu_neon_cross PROPERTIES LABELS "cpu;cross" FIXTURES_REQUIRED cpu_real_raw)
+set_tests_properties(cpu_neon_cross PROPERTIES LABELS "cross" FIXTURES_REQUIRED cpu_real_raw)
 message(STATUS "pxflow: NEON cross test on (${PXFLOW_AARCH64_CXX}, ${PXFLOW_QEMU_AARCH64})")

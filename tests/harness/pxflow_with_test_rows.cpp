@@ -55,5 +55,10 @@ int main(int argc, char** argv) {
   add_backend_row(row("test-unwritten", Fault::kSkipRecord, 1 << 20));
   add_backend_row(row("test-unavailable", Fault::kNone, 1 << 20, "no such device here (test row)"));
   add_backend_row(row("test-small-only", Fault::kNone, 64));
+  // A row whose hardware this machine lacks (as an ISA row on an older CPU).
+  BackendRow lacking =
+      row("test-no-hardware", Fault::kNone, 1 << 20, "this CPU lacks it (test row)");
+  lacking.host_lacks = [] { return true; };
+  add_backend_row(lacking);
   return run_pxflow(argc, argv);
 }

@@ -68,6 +68,19 @@ TEST_CASE("a backend that cannot run is skipped with its reason, or fails when r
   CHECK(r.exit_code == 1);
 }
 
+TEST_CASE("a row whose hardware this machine lacks: --require all skips it, --require NAME fails",
+          "[check]") {
+  auto r =
+      check({"--backends", "test-no-hardware,ref-local", "--require", "all", "--generated-only"});
+  INFO(r.out);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("skip test-no-hardware (this CPU lacks it (test row))") != std::string::npos);
+  r = check({"--backends", "test-no-hardware,ref-local", "--require", "test-no-hardware",
+             "--generated-only"});
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("FAIL test-no-hardware: required but cannot run") != std::string::npos);
+}
+
 TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   const auto r = check({"--backends", "test-small-only", "--generated-only"});
   INFO(r.out);

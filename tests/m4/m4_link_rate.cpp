@@ -4,10 +4,10 @@
 // times FRAME messages of the largest chunk the device takes (host to device) and RECORDS
 // replies of all 64 records (device to host). A rate is payload bytes (pixels, records) per
 // second of wall clock over whole exchanges: what the row gets, framing and acknowledgements
-// included. Exits 1 when a link fails or when semihosting is not at least --min-ratio times the
-// UART in both directions.
+// included. A measurement, not a test: it asserts no rate (docs/cortex-m4.md has the figures and
+// this command). Exits 1 when a link fails to carry the bytes, 2 on a bad command line.
 //
-//   m4_link_rate FIRMWARE [--kib N] [--min-ratio R]
+//   m4_link_rate FIRMWARE [--kib N]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -69,15 +69,19 @@ Rates measure(const std::string& firmware, m4qemu::M4Link link, std::size_t byte
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: m4_link_rate FIRMWARE [--kib N] [--min-ratio R]\n");
+    std::fprintf(stderr, "usage: m4_link_rate FIRMWARE [--kib N]\n");
     return 2;
   }
   const std::string firmware = argv[1];
   std::size_t kib = 128;
-  double min_ratio = 0;
-  for (int i = 2; i + 1 < argc; i += 2) {
-    if (std::strcmp(argv[i], "--kib") == 0) kib = std::strtoul(argv[i + 1], nullptr, 10);
-    if (std::strcmp(argv[i], "--min-ratio") == 0) min_ratio = std::strtod(argv[i + 1], nullptr);
+  for (int i = 2; i < argc; i += 2) {
+    char* end = nullptr;
+    if (std::strcmp(argv[i], "--kib") != 0 || i + 1 >= argc ||
+        (kib = std::strtoul(argv[i + 1], &end, 10)) == 0 || *end != '\0' || kib > 65536) {
+      std::fprintf(stderr, "m4_link_rate: bad option '%s' (usage: FIRMWARE [--kib 1..65536])\n",
+                   argv[i]);
+      return 2;
+    }
   }
   std::printf("m4_link_rate: %zu KiB each way per link, firmware %s\n", kib, firmware.c_str());
   std::printf("%-12s %18s %18s\n", "link", "host->device KB/s", "device->host KB/s");
@@ -96,9 +100,5 @@ int main(int argc, char** argv) {
   const double to = rates[0].to_device / rates[1].to_device;
   const double from = rates[0].from_device / rates[1].from_device;
   std::printf("semihosting / uart: %.1fx host->device, %.1fx device->host\n", to, from);
-  if (to < min_ratio || from < min_ratio) {
-    std::printf("FAIL semihosting is less than %.1fx the UART\n", min_ratio);
-    return 1;
-  }
   return 0;
 }
