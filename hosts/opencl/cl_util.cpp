@@ -1,5 +1,7 @@
 #include "cl_util.hpp"
 
+#include <algorithm>
+#include <thread>
 #include <vector>
 
 #include "errors.hpp"
@@ -84,6 +86,25 @@ std::string platform_string(cl_platform_id platform, cl_platform_info what) {
         return clGetPlatformInfo(platform, what, n, out, size);
       },
       "clGetPlatformInfo");
+}
+
+cl_int poll_event(cl_event event, std::chrono::duration<double> allowance) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(allowance);
+  // 2 us doubling to 1 ms: a fast kernel is seen within a few microseconds of its end, a long one
+  // costs at most a thousand status queries a second.
+  auto pause = std::chrono::microseconds(2);
+  for (;;) {
+    cl_int status = CL_QUEUED;
+    check(clGetEventInfo(event, CL_EVENT_COMMAND_EXECUTION_STATUS, sizeof status, &status, nullptr),
+          "clGetEventInfo");
+    if (status <= CL_COMPLETE) return status;  // CL_COMPLETE is 0, errors are negative
+    const Clock::time_point now = Clock::now();
+    if (now >= deadline) return status;
+    std::this_thread::sleep_for(std::min<Clock::duration>(pause, deadline - now));
+    pause = std::min(pause * 2, std::chrono::microseconds(1000));
+  }
 }
 
 cl_ulong event_nanoseconds(cl_event event) {

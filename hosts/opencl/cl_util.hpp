@@ -4,6 +4,7 @@
 // CL_TARGET_OPENCL_VERSION=120 comes from the build (hosts/opencl/CMakeLists.txt).
 #include <CL/cl.h>
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -43,5 +44,11 @@ T device_value(cl_device_id device, cl_device_info what) {
 
 // Nanoseconds between the START and END of a profiled command.
 cl_ulong event_nanoseconds(cl_event event);
+
+// Polls `event` (CL_EVENT_COMMAND_EXECUTION_STATUS) with a short backoff until it completes or
+// fails, and returns its status (CL_COMPLETE or a negative error); returns CL_QUEUED, CL_SUBMITTED
+// or CL_RUNNING when `allowance` ran out first. A blocking wait (clWaitForEvents, clFinish) could
+// never be given up on a kernel that does not end. The command must have been flushed.
+cl_int poll_event(cl_event event, std::chrono::duration<double> allowance);
 
 }  // namespace pxflow::cl

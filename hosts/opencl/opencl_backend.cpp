@@ -83,7 +83,8 @@ Backend::Description OpenclBackend::describe() const {
 }
 
 OpenclBackend::~OpenclBackend() {
-  if (queue_) clFinish(queue_.get());  // no buffer is released while a command still uses it
+  // No buffer is released while a command still uses it; an abandoned device's were leaked.
+  if (queue_ && abandoned_.empty()) clFinish(queue_.get());
 }
 
 std::size_t OpenclBackend::local_window_bytes(const Params& p) const {
@@ -116,6 +117,9 @@ std::string OpenclBackend::unsupported(const Params& p) const {
 void OpenclBackend::run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
                         OpCounts&) {
   timing_ = {};
+  if (!abandoned_.empty())
+    throw BackendError("opencl: device '" + device_name() +
+                       "' unusable after an earlier failure: " + abandoned_);
   if (pairs.empty()) return;
   try {
     if (const std::string why = unsupported(p); !why.empty()) throw BackendError("opencl: " + why);
@@ -138,6 +142,7 @@ void OpenclBackend::run_chunks(std::span<const FramePair> pairs, const Params& p
     set_arguments(p, n * pois);
     const auto in = upload(pairs.subspan(first, n), p);
     const auto kernel = launch(n * pois);
+    await_kernel(kernel.get(), DeviceWork{n, pois, p.search_radius});
     const auto back = download(out.subspan(first * pois, n * pois));
     account(in.get(), kernel.get(), back.get());
   }

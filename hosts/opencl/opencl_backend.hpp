@@ -10,6 +10,7 @@
 
 #include "backend.hpp"
 #include "cl_program.hpp"
+#include "device_wait.hpp"
 
 namespace pxflow {
 
@@ -73,6 +74,12 @@ class OpenclBackend final : public Backend {
   cl::Owned<cl_event> upload(std::span<const FramePair> pairs, const Params& p);
   cl::Owned<cl_event> launch(std::size_t total_pois);
   cl::Owned<cl_event> download(std::span<PoiRecord> out);
+  // Flushes the queue and polls the kernel for as long as `work` allows; when that runs out,
+  // abandons the device (abandon()) and throws the wait's line.
+  void await_kernel(cl_event kernel, const DeviceWork& work);
+  // Gives up a device whose kernel may still run: leaks the queue, kernel and buffers (releasing
+  // them, or clFinish, would wait for the kernel forever) and refuses every later run.
+  void abandon(const std::string& line);
   void account(cl_event upload, cl_event kernel, cl_event download);
   void run_chunks(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out);
 
@@ -85,6 +92,7 @@ class OpenclBackend final : public Backend {
   std::size_t group_size_ = 0;
   Limits limits_;
   OpenclTiming timing_;
+  std::string abandoned_;  // the line of the wait that gave the device up
 };
 
 }  // namespace pxflow
