@@ -28,8 +28,12 @@ std::size_t floor_pow2(std::size_t n) {
 }  // namespace
 
 OpenclBackend::OpenclBackend(const BackendOptions& options, const OpenclTuning& tuning)
-    : tuning_(tuning) {
-  program_ = cl::device_program(cl::choose_device(cl::list_devices(), options.device));
+    : OpenclBackend(tuning,
+                    cl::device_program(cl::choose_device(cl::list_devices(), options.device))) {}
+
+OpenclBackend::OpenclBackend(const OpenclTuning& tuning,
+                             std::shared_ptr<const cl::DeviceProgram> program)
+    : tuning_(tuning), program_(std::move(program)) {
   const cl_device_id device = program_->device.device;
   // Records leave the device as uint words in the layout of a little-endian PoiRecord.
   if (!cl::device_value<cl_bool>(device, CL_DEVICE_ENDIAN_LITTLE))

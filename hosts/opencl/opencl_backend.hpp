@@ -41,6 +41,9 @@ class OpenclBackend final : public Backend {
   // Throws InputError for a device selector that names no device, BackendError when the
   // driver fails or the kernel does not build (with the build log).
   explicit OpenclBackend(const BackendOptions& options, const OpenclTuning& tuning = {});
+  // Runs the kernels of `program` (built for its device) instead of opencl.cl's: the hang tests
+  // give one whose flow_item_per_poi never ends (tests/opencl/spin.cl).
+  OpenclBackend(const OpenclTuning& tuning, std::shared_ptr<const cl::DeviceProgram> program);
   ~OpenclBackend() override;
 
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
