@@ -1,7 +1,7 @@
 #include "cl_util.hpp"
 
-#include <algorithm>
-#include <thread>
+#include <condition_variable>
+#include <mutex>
 #include <vector>
 
 #include "errors.hpp"
@@ -88,23 +88,46 @@ std::string platform_string(cl_platform_id platform, cl_platform_info what) {
       "clGetPlatformInfo");
 }
 
-cl_int poll_event(cl_event event, std::chrono::duration<double> allowance) {
+namespace {
+
+// What the completion callback and the waiting host share. The callback holds a reference of its
+// own: after a wait that was given up, it may still come (or never: then it leaks with the device).
+struct Completion {
+  std::mutex mutex;
+  std::condition_variable done_cv;
+  bool done = false;
+};
+
+void CL_CALLBACK on_complete(cl_event, cl_int, void* user) {
+  auto* held = static_cast<std::shared_ptr<Completion>*>(user);
+  {
+    std::lock_guard lock((*held)->mutex);
+    (*held)->done = true;
+  }
+  (*held)->done_cv.notify_all();
+  delete held;
+}
+
+}  // namespace
+
+cl_int wait_for_event(cl_event event, std::chrono::duration<double> allowance) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point deadline =
       Clock::now() + std::chrono::duration_cast<Clock::duration>(allowance);
-  // 2 us doubling to 1 ms: a fast kernel is seen within a few microseconds of its end, a long one
-  // costs at most a thousand status queries a second.
-  auto pause = std::chrono::microseconds(2);
-  for (;;) {
-    cl_int status = CL_QUEUED;
-    check(clGetEventInfo(event, CL_EVENT_COMMAND_EXECUTION_STATUS, sizeof status, &status, nullptr),
-          "clGetEventInfo");
-    if (status <= CL_COMPLETE) return status;  // CL_COMPLETE is 0, errors are negative
-    const Clock::time_point now = Clock::now();
-    if (now >= deadline) return status;
-    std::this_thread::sleep_for(std::min<Clock::duration>(pause, deadline - now));
-    pause = std::min(pause * 2, std::chrono::microseconds(1000));
+  auto completion = std::make_shared<Completion>();
+  auto* held = new std::shared_ptr<Completion>(completion);
+  // Called once, when the command completes or fails (OpenCL 1.2, clSetEventCallback).
+  const cl_int err = clSetEventCallback(event, CL_COMPLETE, on_complete, held);
+  if (err != CL_SUCCESS) delete held;
+  check(err, "clSetEventCallback");
+  {
+    std::unique_lock lock(completion->mutex);
+    completion->done_cv.wait_until(lock, deadline, [&] { return completion->done; });
   }
+  cl_int status = CL_QUEUED;
+  check(clGetEventInfo(event, CL_EVENT_COMMAND_EXECUTION_STATUS, sizeof status, &status, nullptr),
+        "clGetEventInfo");
+  return status;
 }
 
 cl_ulong event_nanoseconds(cl_event event) {

@@ -85,7 +85,7 @@ cl::Owned<cl_event> OpenclBackend::launch(std::size_t total_pois) {
 void OpenclBackend::await_kernel(cl_event kernel, const DeviceWork& work) {
   const auto start = std::chrono::steady_clock::now();
   cl::check(clFlush(queue_.get()), "clFlush on '" + device_name() + "'");
-  const cl_int status = cl::poll_event(kernel, wait_allowance(work));
+  const cl_int status = cl::wait_for_event(kernel, wait_allowance(work));
   if (status < 0) cl::check(status, "the kernel on '" + device_name() + "'");
   if (status == CL_COMPLETE) return;
   const std::chrono::duration<double> waited = std::chrono::steady_clock::now() - start;
