@@ -79,7 +79,7 @@ FamilyOption device_timeout_option() {
   o.help =
       "Seconds a device (Vulkan, OpenCL, --dut, m4-qemu) may take per 1 M candidate positions "
       "(POIs x (2S+1)^2) before it is called hung; every wait is allowed at least this once "
-      "(default 10; --dut-timeout is the same option); docs/harness.md";
+      "(default 30; --dut-timeout is the same option); docs/harness.md";
   o.apply = [](const std::string& text) {
     char* end = nullptr;
     const double s = std::strtod(text.c_str(), &end);
