@@ -50,7 +50,7 @@ TEST_CASE("vulkan: a spinning shader (child process)", "[.][vulkan-spin-child]")
     runner.run(body, kWork);
     const auto* w = reinterpret_cast<const std::uint32_t*>(flag.data());
     FAIL("a shader that never ends was reported finished (stop " << w[0] << ", count " << w[1]
-                                                                  << ")");
+                                                                 << ")");
   } catch (const BackendError& e) {
     std::cout << "first: " << e.what() << "\n";
   }
