@@ -5,6 +5,7 @@
 
 #include "cli_extension.hpp"
 #include "commands.hpp"
+#include "device_wait.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "interrupt.hpp"
@@ -41,7 +42,10 @@ int run_pxflow(int argc, char** argv) {
   app.fallthrough();  // global options may follow the subcommand
   // The families' global options (e.g. the cpu family's --disable-isa), applied before the
   // command runs.
-  std::vector<std::pair<const FamilyOption*, std::vector<std::string>>> family_options;
+  // --device-timeout first: shared by every family that waits on a device, declared once here.
+  static const FamilyOption device_timeout = device_timeout_option();
+  std::vector<std::pair<const FamilyOption*, std::vector<std::string>>> family_options = {
+      {&device_timeout, {}}};
   for (const BackendFamily& f : backend_families())
     for (const FamilyOption& opt : f.options) family_options.push_back({&opt, {}});
   std::vector<CLI::Option*> family_flags;

@@ -30,8 +30,9 @@ inline std::string given_options(const CLI::App& app) {
   return line;
 }
 
-// The global options given with the subcommand (the families' --disable-isa, --dut,
-// --dut-timeout ...): " --dut 'py=exec:python3 dev.py' --dut-timeout 2", or "". Every command
+// The global options given with the subcommand (--device-timeout, the families' --disable-isa,
+// --dut ...): " --device-timeout 2 --dut 'py=exec:python3 dev.py'", or "". An option with an alias
+// is recorded under its first name (--dut-timeout as --device-timeout). Every command
 // another one runs in-process needs them to be rerun as it ran.
 inline std::string global_options(const CLI::App& sub) {
   const CLI::App* parent = sub.get_parent();

@@ -8,17 +8,14 @@
 
 namespace pxflow::dut {
 
-std::chrono::duration<double>& dut_timeout() {
-  static std::chrono::duration<double> t{10.0};
-  return t;
-}
-
 std::string Device::probe() {
   if (probed_) return why_not_;
   probed_ = true;
+  // --device-timeout (hosts/core/device_wait.hpp), read when the device is opened.
+  const std::chrono::duration<double> timeout(device_timeout_seconds());
   try {
     session_ = std::make_unique<Session>("dut " + spec_.name + " (" + spec_.text + ")",
-                                         open_link(spec_, dut_timeout()), dut_timeout());
+                                         open_link(spec_, timeout), timeout);
     hello_ = session_->hello();
   } catch (const LinkError& e) {
     why_not_ = e.what();
@@ -89,7 +86,8 @@ void DutBackend::run_pair(const FramePair& pair, const Params& p, std::span<PoiR
   const std::size_t max_packet = std::min<std::size_t>(h.max_packet, kHostMaxPacket);
   send_image(s, pair.prev, PXDUT_IMAGE_PREV, max_packet - PXDUT_FRAME_CHUNK_MARGIN);
   send_image(s, pair.next, PXDUT_IMAGE_NEXT, max_packet - PXDUT_FRAME_CHUNK_MARGIN);
-  const Packet reply = s.exchange(kRun, run_body(1, 0), kResult);
+  const DeviceWork work{1, out.size(), p.search_radius};  // scales the wait for RESULT
+  const Packet reply = s.exchange(kRun, run_body(1, 0), kResult, &work);
   const std::string pair_text = "pair " + std::to_string(index);
   try {
     result = parse_result(reply.body);

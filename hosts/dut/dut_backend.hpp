@@ -12,9 +12,6 @@
 
 namespace pxflow::dut {
 
-// The timeout of every wait (--dut-timeout), read when a device is opened.
-std::chrono::duration<double>& dut_timeout();
-
 class Device {
  public:
   explicit Device(DutSpec spec) : spec_(std::move(spec)) {}

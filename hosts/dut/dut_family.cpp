@@ -1,5 +1,6 @@
 // The dut family: no rows of its own; `--dut NAME=SPEC` (repeatable) appends one row per device
-// before the command runs, and `--dut-timeout` bounds every wait for a device.
+// before the command runs. Its waits follow --device-timeout (alias --dut-timeout), declared once
+// for every family by the CLI (hosts/core/device_wait.hpp).
 #include <set>
 
 #include "backend.hpp"
@@ -26,20 +27,7 @@ BackendFamily dut_family() {
                          row.family + " row): choose another NAME (see pxflow backends)");
     add_backend_row(dut::dut_row(spec));
   };
-  FamilyOption timeout;
-  timeout.flag = "--dut-timeout";
-  timeout.help =
-      "Seconds to wait for any one answer of a --dut device (default 10); a message is resent "
-      "at most 3 times, so a silent device fails within 4 x this";
-  timeout.apply = [](const std::string& text) {
-    char* end = nullptr;
-    const double s = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end || !(s >= 0.01 && s <= 3600))
-      throw InputError("--dut-timeout: '" + text +
-                       "': allowed seconds from 0.01 to 3600 (see pxflow --help)");
-    dut::dut_timeout() = std::chrono::duration<double>(s);
-  };
-  f.options = {dut, timeout};
+  f.options = {dut};
   return f;
 }
 

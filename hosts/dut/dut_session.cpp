@@ -26,15 +26,19 @@ void Session::fail(const std::string& message, const std::string& what, const st
   throw DutError(label_ + ": " + message + ": " + what + (hint.empty() ? "" : "; " + hint), fatal);
 }
 
-Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body,
-                         std::uint8_t expect) {
+Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body, std::uint8_t expect,
+                         const DeviceWork* work) {
   const std::string name = message_name(type);
   const std::uint8_t seq = next_seq_++;
   const std::vector<std::uint8_t> frame = encode_frame(type, seq, body);
-  const auto wait = std::chrono::duration_cast<Clock::duration>(timeout_);
+  // The allowance of one wait (hosts/core/device_wait.hpp): the timeout once per work unit.
+  const double allowed = timeout_.count() * (work ? work_units(*work) : 1.0);
+  const auto wait =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(allowed));
+  const std::string for_work = work ? " for " + work_text(*work) : "";
   std::string problem;
   for (int attempt = 0; attempt <= kResends; ++attempt) {
-    const Clock::time_point deadline = Clock::now() + wait;
+    Clock::time_point deadline = Clock::now() + wait;
     try {
       // A leading delimiter ends whatever partial frame the device holds (section 1).
       if (attempt > 0 || type == kHello) link_->write(std::vector<std::uint8_t>{0}, deadline);
@@ -60,11 +64,16 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body,
         }
         pending_.resize(n);
         if (n == 0) {
-          if (resend_at == deadline) problem = "no answer within " + seconds_text(timeout_.count());
+          if (resend_at == deadline)
+            problem = "no answer within " + seconds_text(allowed) + for_work;
           break;
         }
       }
       const FrameReceiver::Event ev = rx_.push(pending_[pending_at_++]);
+      if (ev == FrameReceiver::Event::kKeepalive || ev == FrameReceiver::Event::kPacket) {
+        // The device is alive: the wait starts again (unless a corrupted reply is settling).
+        if (resend_at == deadline) resend_at = deadline = Clock::now() + wait;
+      }
       if (ev == FrameReceiver::Event::kBad) {
         problem = "a corrupted reply (" + rx_.why_bad() + ")";
         resend_at = std::min(resend_at, Clock::now() + kSettle);
@@ -98,9 +107,8 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body,
   }
   fail(name,
        (problem.empty() ? std::string("no valid answer") : problem) + " after " +
-           std::to_string(kResends) + " resends (each waited up to " +
-           seconds_text(timeout_.count()) + ")",
-       "is the device running and on this link (baud rate)? try a longer --dut-timeout", true);
+           std::to_string(kResends) + " resends (each waited up to " + seconds_text(allowed) + ")",
+       "is the device running and on this link (baud rate)? " + raise_timeout_hint(work), true);
 }
 
 Hello Session::hello() {

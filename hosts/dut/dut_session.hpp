@@ -1,7 +1,9 @@
 // One conversation with a device (docs/dut-protocol.md section 2): numbered requests, replies
 // matched by sequence number, resends on a timeout, a NAK or a corrupted reply (at most
 // kResends), and every failure turned into one line naming the device, the message and what
-// to try.
+// to try. A wait lasts --device-timeout x the work units of the request (RUN: its pair's
+// candidates; hosts/core/device_wait.hpp) and starts again whenever the device sends a valid
+// frame or a keepalive (an empty frame, a lone 0x00): a device that keeps talking is not hung.
 #pragma once
 #include <chrono>
 #include <memory>
@@ -9,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "device_wait.hpp"
 #include "dut_link.hpp"
 #include "dut_wire.hpp"
 #include "errors.hpp"
@@ -36,7 +39,9 @@ class Session {
   // Sends a request and returns the reply of type `expect`; an ERROR reply, a reply of another
   // type or a malformed one is a DutError (not fatal); no valid reply after kResends resends or
   // a closed link is a fatal DutError.
-  Packet exchange(std::uint8_t type, std::span<const std::uint8_t> body, std::uint8_t expect);
+  // `work`: the kernel work the request starts (RUN), which scales the wait; nullptr for none.
+  Packet exchange(std::uint8_t type, std::span<const std::uint8_t> body, std::uint8_t expect,
+                  const DeviceWork* work = nullptr);
 
   const std::string& label() const { return label_; }
   double timeout_seconds() const { return timeout_.count(); }

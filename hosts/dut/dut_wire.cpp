@@ -117,7 +117,7 @@ FrameReceiver::Event FrameReceiver::push(std::uint8_t byte) {
   const bool overflow = overflow_;
   overflow_ = false;
   if (overflow) return why_bad_ = discard_reason(PXDUT_NAK_TOO_LONG), Event::kBad;
-  if (frame.empty()) return Event::kNone;
+  if (frame.empty()) return Event::kKeepalive;
   const std::int32_t n =
       pxdut_cobs_decode(frame.data(), static_cast<std::uint32_t>(frame.size()), frame.data());
   if (n < 0) return why_bad_ = discard_reason(PXDUT_NAK_BAD_COBS), Event::kBad;

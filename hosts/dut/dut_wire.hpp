@@ -53,9 +53,10 @@ std::vector<std::uint8_t> encode_frame(std::uint8_t type, std::uint8_t seq,
 // Collects link bytes and cuts them into frames at each 0x00.
 class FrameReceiver {
  public:
-  enum class Event { kNone, kPacket, kBad };
+  enum class Event { kNone, kPacket, kBad, kKeepalive };
   // Takes one byte; kPacket: packet() holds a frame with a good CRC; kBad: why_bad() says why
-  // the frame was dropped (bad COBS, too long, too short, bad CRC). Empty frames are kNone.
+  // the frame was dropped (bad COBS, too long, too short, bad CRC); kKeepalive: an empty frame
+  // (a 0x00 right after a 0x00), which a busy device may send to show it is alive.
   Event push(std::uint8_t byte);
   const Packet& packet() const { return packet_; }
   const std::string& why_bad() const { return why_bad_; }

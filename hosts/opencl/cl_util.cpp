@@ -1,5 +1,7 @@
 #include "cl_util.hpp"
 
+#include <condition_variable>
+#include <mutex>
 #include <vector>
 
 #include "errors.hpp"
@@ -84,6 +86,48 @@ std::string platform_string(cl_platform_id platform, cl_platform_info what) {
         return clGetPlatformInfo(platform, what, n, out, size);
       },
       "clGetPlatformInfo");
+}
+
+namespace {
+
+// What the completion callback and the waiting host share. The callback holds a reference of its
+// own: after a wait that was given up, it may still come (or never: then it leaks with the device).
+struct Completion {
+  std::mutex mutex;
+  std::condition_variable done_cv;
+  bool done = false;
+};
+
+void CL_CALLBACK on_complete(cl_event, cl_int, void* user) {
+  auto* held = static_cast<std::shared_ptr<Completion>*>(user);
+  {
+    std::lock_guard lock((*held)->mutex);
+    (*held)->done = true;
+  }
+  (*held)->done_cv.notify_all();
+  delete held;
+}
+
+}  // namespace
+
+cl_int wait_for_event(cl_event event, std::chrono::duration<double> allowance) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(allowance);
+  auto completion = std::make_shared<Completion>();
+  auto* held = new std::shared_ptr<Completion>(completion);
+  // Called once, when the command completes or fails (OpenCL 1.2, clSetEventCallback).
+  const cl_int err = clSetEventCallback(event, CL_COMPLETE, on_complete, held);
+  if (err != CL_SUCCESS) delete held;
+  check(err, "clSetEventCallback");
+  {
+    std::unique_lock lock(completion->mutex);
+    completion->done_cv.wait_until(lock, deadline, [&] { return completion->done; });
+  }
+  cl_int status = CL_QUEUED;
+  check(clGetEventInfo(event, CL_EVENT_COMMAND_EXECUTION_STATUS, sizeof status, &status, nullptr),
+        "clGetEventInfo");
+  return status;
 }
 
 cl_ulong event_nanoseconds(cl_event event) {

@@ -4,6 +4,7 @@
 // CL_TARGET_OPENCL_VERSION=120 comes from the build (hosts/opencl/CMakeLists.txt).
 #include <CL/cl.h>
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -43,5 +44,13 @@ T device_value(cl_device_id device, cl_device_info what) {
 
 // Nanoseconds between the START and END of a profiled command.
 cl_ulong event_nanoseconds(cl_event event);
+
+// Waits for `event` to complete or fail, at most `allowance`, and returns its
+// CL_EVENT_COMMAND_EXECUTION_STATUS: CL_COMPLETE, a negative error, or CL_QUEUED, CL_SUBMITTED
+// or CL_RUNNING when the allowance ran out first. A blocking wait (clWaitForEvents, clFinish)
+// could never be given up on a kernel that does not end; this one sleeps on a condition variable
+// that the event's completion callback wakes, so a fast kernel costs no polling latency. The
+// command must have been flushed.
+cl_int wait_for_event(cl_event event, std::chrono::duration<double> allowance);
 
 }  // namespace pxflow::cl

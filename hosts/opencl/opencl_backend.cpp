@@ -28,8 +28,12 @@ std::size_t floor_pow2(std::size_t n) {
 }  // namespace
 
 OpenclBackend::OpenclBackend(const BackendOptions& options, const OpenclTuning& tuning)
-    : tuning_(tuning) {
-  program_ = cl::device_program(cl::choose_device(cl::list_devices(), options.device));
+    : OpenclBackend(tuning,
+                    cl::device_program(cl::choose_device(cl::list_devices(), options.device))) {}
+
+OpenclBackend::OpenclBackend(const OpenclTuning& tuning,
+                             std::shared_ptr<const cl::DeviceProgram> program)
+    : tuning_(tuning), program_(std::move(program)) {
   const cl_device_id device = program_->device.device;
   // Records leave the device as uint words in the layout of a little-endian PoiRecord.
   if (!cl::device_value<cl_bool>(device, CL_DEVICE_ENDIAN_LITTLE))
@@ -83,7 +87,8 @@ Backend::Description OpenclBackend::describe() const {
 }
 
 OpenclBackend::~OpenclBackend() {
-  if (queue_) clFinish(queue_.get());  // no buffer is released while a command still uses it
+  // No buffer is released while a command still uses it; an abandoned device's were leaked.
+  if (queue_ && abandoned_.empty()) clFinish(queue_.get());
 }
 
 std::size_t OpenclBackend::local_window_bytes(const Params& p) const {
@@ -116,6 +121,9 @@ std::string OpenclBackend::unsupported(const Params& p) const {
 void OpenclBackend::run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
                         OpCounts&) {
   timing_ = {};
+  if (!abandoned_.empty())
+    throw BackendError("opencl: device '" + device_name() +
+                       "' unusable after an earlier failure: " + abandoned_);
   if (pairs.empty()) return;
   try {
     if (const std::string why = unsupported(p); !why.empty()) throw BackendError("opencl: " + why);
@@ -138,6 +146,7 @@ void OpenclBackend::run_chunks(std::span<const FramePair> pairs, const Params& p
     set_arguments(p, n * pois);
     const auto in = upload(pairs.subspan(first, n), p);
     const auto kernel = launch(n * pois);
+    await_kernel(kernel.get(), DeviceWork{n, pois, p.search_radius});
     const auto back = download(out.subspan(first * pois, n * pois));
     account(in.get(), kernel.get(), back.get());
   }

@@ -10,6 +10,7 @@
 
 #include "backend.hpp"
 #include "cl_program.hpp"
+#include "device_wait.hpp"
 
 namespace pxflow {
 
@@ -40,6 +41,9 @@ class OpenclBackend final : public Backend {
   // Throws InputError for a device selector that names no device, BackendError when the
   // driver fails or the kernel does not build (with the build log).
   explicit OpenclBackend(const BackendOptions& options, const OpenclTuning& tuning = {});
+  // Runs the kernels of `program` (built for its device) instead of opencl.cl's: the hang tests
+  // give one whose flow_item_per_poi never ends (tests/opencl/spin.cl).
+  OpenclBackend(const OpenclTuning& tuning, std::shared_ptr<const cl::DeviceProgram> program);
   ~OpenclBackend() override;
 
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
@@ -73,6 +77,12 @@ class OpenclBackend final : public Backend {
   cl::Owned<cl_event> upload(std::span<const FramePair> pairs, const Params& p);
   cl::Owned<cl_event> launch(std::size_t total_pois);
   cl::Owned<cl_event> download(std::span<PoiRecord> out);
+  // Flushes the queue and polls the kernel for as long as `work` allows; when that runs out,
+  // abandons the device (abandon()) and throws the wait's line.
+  void await_kernel(cl_event kernel, const DeviceWork& work);
+  // Gives up a device whose kernel may still run: leaks the queue, kernel and buffers (releasing
+  // them, or clFinish, would wait for the kernel forever) and refuses every later run.
+  void abandon(const std::string& line);
   void account(cl_event upload, cl_event kernel, cl_event download);
   void run_chunks(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out);
 
@@ -85,6 +95,7 @@ class OpenclBackend final : public Backend {
   std::size_t group_size_ = 0;
   Limits limits_;
   OpenclTiming timing_;
+  std::string abandoned_;  // the line of the wait that gave the device up
 };
 
 }  // namespace pxflow

@@ -82,6 +82,31 @@ cl::Owned<cl_event> OpenclBackend::launch(std::size_t total_pois) {
   return cl::Owned<cl_event>{event};
 }
 
+void OpenclBackend::await_kernel(cl_event kernel, const DeviceWork& work) {
+  const auto start = std::chrono::steady_clock::now();
+  cl::check(clFlush(queue_.get()), "clFlush on '" + device_name() + "'");
+  const cl_int status = cl::wait_for_event(kernel, wait_allowance(work));
+  if (status < 0) cl::check(status, "the kernel on '" + device_name() + "'");
+  if (status == CL_COMPLETE) return;
+  const std::chrono::duration<double> waited = std::chrono::steady_clock::now() - start;
+  const std::string line =
+      wait_failure_line("opencl on '" + device_name() + "'", waited.count(), work);
+  abandon(line);
+  throw BackendError(line);
+}
+
+void OpenclBackend::abandon(const std::string& line) {
+  abandoned_ = line;
+  note_abandoned_device();
+  // Deliberately leaked (see the header): the driver may still run the kernel on them.
+  (void)queue_.release();
+  (void)kernel_.release();
+  (void)frames_.release();
+  (void)records_.release();
+}
+
+// Runs only once the kernel completed (await_kernel), so this blocking read never waits on a
+// kernel, and nothing is left to write into `out` once run() returned or threw.
 cl::Owned<cl_event> OpenclBackend::download(std::span<PoiRecord> out) {
   cl_event event = nullptr;
   cl::check(clEnqueueReadBuffer(queue_.get(), records_.get(), CL_TRUE, 0, out.size_bytes(),

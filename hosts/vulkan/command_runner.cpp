@@ -1,11 +1,13 @@
 #include "command_runner.hpp"
 
+#include "errors.hpp"
 #include "vk_error.hpp"
 
 namespace pxflow::vk {
 
-CommandRunner::CommandRunner(const Context& ctx)
-    : device_(ctx.device()),
+CommandRunner::CommandRunner(Context& ctx)
+    : ctx_(&ctx),
+      device_(ctx.device()),
       queue_(ctx.queue()),
       timestamp_bits_(ctx.timestamp_valid_bits()),
       timestamp_period_(ctx.properties().limits.timestampPeriod) {
@@ -37,7 +39,10 @@ CommandRunner::CommandRunner(const Context& ctx)
 CommandRunner::~CommandRunner() { release(); }
 
 void CommandRunner::release() {
-  // A pending command buffer must finish before its pool goes away.
+  // A command buffer still pending after a wait that fired may never finish: waiting for it
+  // (vkDeviceWaitIdle) would hang, so its pool, fence and queries are leaked with the context.
+  if (ctx_->abandoned()) return;
+  // After a lost device nothing runs any more; vkDeviceWaitIdle returns at once.
   if (!broken_.empty()) vkDeviceWaitIdle(device_);
   if (queries_) vkDestroyQueryPool(device_, queries_, nullptr);
   if (fence_) vkDestroyFence(device_, fence_, nullptr);
@@ -47,8 +52,7 @@ void CommandRunner::release() {
   pool_ = VK_NULL_HANDLE;
 }
 
-void CommandRunner::run(const std::function<void(VkCommandBuffer)>& body,
-                        std::chrono::milliseconds timeout) {
+void CommandRunner::run(const std::function<void(VkCommandBuffer)>& body, const DeviceWork& work) {
   ensure_usable();
   record(body);
   check(vkResetFences(device_, 1, &fence_), "vkResetFences");
@@ -58,7 +62,7 @@ void CommandRunner::run(const std::function<void(VkCommandBuffer)>& body,
   const VkResult r = vkQueueSubmit(queue_, 1, &submit, fence_);
   if (r == VK_ERROR_DEVICE_LOST) broken_ = "device lost at vkQueueSubmit";
   check(r, "vkQueueSubmit");
-  wait(timeout);
+  wait(work);
   read_timestamps();
 }
 
@@ -80,12 +84,17 @@ void CommandRunner::record(const std::function<void(VkCommandBuffer)>& body) {
   check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
 }
 
-void CommandRunner::wait(std::chrono::milliseconds timeout) {
-  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count();
-  const VkResult r = vkWaitForFences(device_, 1, &fence_, VK_TRUE, static_cast<std::uint64_t>(ns));
+void CommandRunner::wait(const DeviceWork& work) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(wait_allowance(work));
+  const VkResult r =
+      vkWaitForFences(device_, 1, &fence_, VK_TRUE, static_cast<std::uint64_t>(ns.count()));
   if (r == VK_TIMEOUT) {
-    broken_ = "timed out after " + std::to_string(timeout.count()) + " ms";
-    fail("the kernel did not finish within " + std::to_string(timeout.count()) + " ms");
+    const std::chrono::duration<double> waited = std::chrono::steady_clock::now() - start;
+    const std::string line = wait_failure_line("vulkan", waited.count(), work);
+    broken_ = line;
+    ctx_->abandon();
+    throw BackendError(line);
   }
   if (r == VK_ERROR_DEVICE_LOST) broken_ = "device lost";
   check(r, "vkWaitForFences");

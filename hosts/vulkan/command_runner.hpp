@@ -1,5 +1,6 @@
-// One command buffer, one fence and a two-slot timestamp query pool: record, submit, wait with
-// a timeout, read the device time. Reused for every chunk of every batch.
+// One command buffer, one fence and a two-slot timestamp query pool: record, submit, wait as long
+// as the work submitted allows (hosts/core/device_wait.hpp), read the device time. Reused for
+// every chunk of every batch.
 #pragma once
 #include <vulkan/vulkan.h>
 
@@ -8,20 +9,22 @@
 #include <optional>
 
 #include "context.hpp"
+#include "device_wait.hpp"
 
 namespace pxflow::vk {
 
 class CommandRunner {
  public:
-  explicit CommandRunner(const Context& ctx);  // throws BackendError
+  explicit CommandRunner(Context& ctx);  // throws BackendError
   ~CommandRunner();
   CommandRunner(const CommandRunner&) = delete;
   CommandRunner& operator=(const CommandRunner&) = delete;
 
   // Records `body` between two timestamps (when the queue has them), submits, and waits up to
-  // `timeout`. Throws BackendError on any failure; after a timeout or a lost device the runner
-  // refuses further work (the command buffer may still be pending).
-  void run(const std::function<void(VkCommandBuffer)>& body, std::chrono::milliseconds timeout);
+  // wait_allowance(work). Throws BackendError on any failure; after a lost device the runner
+  // refuses further work, after a wait that fired it also abandons the context (the command
+  // buffer may still run: Context::abandon).
+  void run(const std::function<void(VkCommandBuffer)>& body, const DeviceWork& work);
 
   // Throws BackendError when an earlier timeout or lost device made the runner refuse work.
   // Callers check before touching buffers that a pending command buffer may still use.
@@ -33,10 +36,11 @@ class CommandRunner {
 
  private:
   void record(const std::function<void(VkCommandBuffer)>& body);
-  void wait(std::chrono::milliseconds timeout);
+  void wait(const DeviceWork& work);
   void read_timestamps();
   void release();
 
+  Context* ctx_;
   VkDevice device_;
   VkQueue queue_;
   std::uint32_t timestamp_bits_;

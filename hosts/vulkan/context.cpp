@@ -4,6 +4,7 @@
 #include <cstring>
 #include <optional>
 
+#include "device_wait.hpp"
 #include "vk_error.hpp"
 
 namespace pxflow::vk {
@@ -75,7 +76,14 @@ Context::Context(const ContextOptions& options) {
   }
 }
 
-Context::~Context() { release(); }
+Context::~Context() {
+  if (!abandoned_) release();
+}
+
+void Context::abandon() {
+  abandoned_ = true;
+  note_abandoned_device();
+}
 
 void Context::release() {
   if (device_) vkDestroyDevice(device_, nullptr);

@@ -3,6 +3,7 @@
 #pragma once
 #include <vulkan/vulkan.h>
 
+#include <atomic>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -42,6 +43,14 @@ class Context {
   std::vector<std::string> messages() const;
   void clear_messages();
 
+  // Gives the device up while work may still run on it (a wait that fired): from now on nothing
+  // made from this context is destroyed, the device and instance included, since that would wait
+  // for the work forever. The objects are leaked on purpose (docs/vulkan.md, "Waiting on a
+  // device") and the process ends without joining the driver's threads
+  // (exit_now_if_device_abandoned).
+  void abandon();
+  bool abandoned() const { return abandoned_; }
+
  private:
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                    VkDebugUtilsMessageTypeFlagsEXT type,
@@ -62,6 +71,7 @@ class Context {
   VkPhysicalDeviceProperties properties_{};
   mutable std::mutex messages_mutex_;
   std::vector<std::string> messages_;
+  std::atomic<bool> abandoned_{false};
 };
 
 // The devices of `instance` as selection candidates, with the reason each one cannot be used.

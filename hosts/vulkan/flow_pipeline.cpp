@@ -24,7 +24,7 @@ constexpr VkDescriptorType kBindingTypes[2] = {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_
 }  // namespace
 
 FlowPipeline::FlowPipeline(const Context& ctx, int search_radius)
-    : device_(ctx.device()), search_radius_(search_radius) {
+    : ctx_(&ctx), device_(ctx.device()), search_radius_(search_radius) {
   const auto& limits = ctx.properties().limits;
   local_size_ = std::min({kPreferredLocalSize, limits.maxComputeWorkGroupSize[0],
                           limits.maxComputeWorkGroupInvocations});
@@ -38,7 +38,9 @@ FlowPipeline::FlowPipeline(const Context& ctx, int search_radius)
   }
 }
 
-FlowPipeline::~FlowPipeline() { release(); }
+FlowPipeline::~FlowPipeline() {
+  if (!ctx_->abandoned()) release();  // a spinning shader may still use it: leak it
+}
 
 void FlowPipeline::release() {
   if (frames_view_) vkDestroyBufferView(device_, frames_view_, nullptr);

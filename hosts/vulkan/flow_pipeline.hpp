@@ -52,6 +52,7 @@ class FlowPipeline {
   void create_descriptor_set();
   void release();
 
+  const Context* ctx_;
   VkDevice device_;
   std::uint32_t local_size_ = 64;
   std::int32_t search_radius_;

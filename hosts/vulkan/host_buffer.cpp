@@ -17,7 +17,8 @@ std::uint32_t host_memory_type(VkPhysicalDevice pd, std::uint32_t allowed) {
 
 }  // namespace
 
-HostBuffer::HostBuffer(const Context& ctx, VkDeviceSize size) : device_(ctx.device()), size_(size) {
+HostBuffer::HostBuffer(const Context& ctx, VkDeviceSize size)
+    : ctx_(&ctx), device_(ctx.device()), size_(size) {
   try {
     auto info = zeroed<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
     info.size = size;
@@ -41,7 +42,9 @@ HostBuffer::HostBuffer(const Context& ctx, VkDeviceSize size) : device_(ctx.devi
   }
 }
 
-HostBuffer::~HostBuffer() { release(); }
+HostBuffer::~HostBuffer() {
+  if (!ctx_->abandoned()) release();  // a spinning shader may still write here: leak it
+}
 
 void HostBuffer::release() {
   if (mapped_) vkUnmapMemory(device_, memory_);

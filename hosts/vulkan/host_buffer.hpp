@@ -24,6 +24,7 @@ class HostBuffer {
  private:
   void release();
 
+  const Context* ctx_;
   VkDevice device_;
   VkDeviceSize size_;
   VkBuffer buffer_ = VK_NULL_HANDLE;

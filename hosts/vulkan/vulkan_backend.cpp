@@ -65,10 +65,10 @@ VulkanBackend::VulkanBackend(const VulkanConfig& config) : config_(config) {
 }
 
 VulkanBackend::~VulkanBackend() {
-  // A chunk that timed out may still be running and writing into records_: let it finish
-  // before any buffer is freed (lavapipe's buffers are host memory). Then children before the
-  // device they were made from.
-  if (ctx_) vkDeviceWaitIdle(ctx_->device());
+  // A chunk whose wait fired may still be running and writing into records_, forever: the context
+  // was abandoned then, and the members below leak what they hold instead of waiting for it
+  // (Context::abandon). Otherwise children go before the device they were made from.
+  if (ctx_ && !ctx_->abandoned()) vkDeviceWaitIdle(ctx_->device());
   records_.reset();
   frames_.reset();
   runner_.reset();
@@ -186,7 +186,7 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
         }
         barrier_to_host(cmd);
       },
-      config_.fence_timeout);
+      DeviceWork{pairs.size(), layout.pois_per_pair, p.search_radius});
   std::memcpy(out.data(), records_->data(), out.size_bytes());
 }
 

@@ -2,7 +2,6 @@
 // is public so that tests and the benchmark can reach what the Backend interface does not
 // offer: validation, chunk limits, the device time of the last run.
 #pragma once
-#include <chrono>
 #include <map>
 #include <memory>
 #include <optional>
@@ -23,7 +22,6 @@ class HostBuffer;
 struct VulkanConfig {
   std::string device;       // index or name substring (BackendOptions::device); empty = preferred
   bool validation = false;  // Khronos validation layer on; any message fails the run
-  std::chrono::milliseconds fence_timeout{60000};  // per chunk
   // Upper bound of each storage buffer, below the device's maxStorageBufferRange.
   std::uint64_t max_buffer_bytes = 64ull << 20;
   // Integer-search pixel differences per chunk: keeps each submission well under a second on

@@ -1,7 +1,7 @@
 /* pxdut-faulty: the reference device with one fault (docs/dut-protocol.md section 4), for the
  * fault tests. `pxdut-faulty MODE [N]`; N counts the device's frames sent (replies and NAKs),
- * from 1, or the requests received (flip-request, exit). Every fault but `late` and `silent`
- * happens once or from then on, as listed in kModes. */
+ * from 1, or the requests received (flip-request, exit). Every fault but `late`, `slow-alive`
+ * and `silent` happens once or from then on, as listed in kModes. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +17,7 @@ typedef enum {
   kFlipReply,    /* N: one bit of reply N flips */
   kFlipRequest,  /* N: one bit of request N flips (the device NAKs it) */
   kLate,         /* N: every RESULT is sent N ms late */
+  kSlowAlive,    /* N: every RESULT is sent N ms late, a keepalive (0x00) every 100 ms till then */
   kGarbage,      /* N: 200 bytes of noise (zeros among them) before reply N */
   kGarbageOnly,  /* noise, never a frame */
   kSilent,       /* reads, never answers */
@@ -39,6 +40,7 @@ static const struct {
               {"flip-reply", kFlipReply},
               {"flip-request", kFlipRequest},
               {"late", kLate},
+              {"slow-alive", kSlowAlive},
               {"garbage", kGarbage},
               {"garbage-only", kGarbageOnly},
               {"silent", kSilent},
@@ -107,6 +109,16 @@ int pxdut_port_write(const uint8_t *buf, int len) {
       break;
     case kLate:
       if (type == PXDUT_MSG_RESULT) usleep((useconds_t)arg * 1000u);
+      break;
+    case kSlowAlive:
+      /* A slow kernel on a device that says it is alive: an empty frame (a lone delimiter after
+       * the last frame's) every 100 ms, which restarts the host's wait (docs/dut-protocol.md). */
+      if (type == PXDUT_MSG_RESULT)
+        for (long waited = 0; waited < arg; waited += 100) {
+          static const uint8_t keepalive = 0;
+          usleep(100000u);
+          ref_link_write(&keepalive, 1);
+        }
       break;
     case kGarbage:
       if (sent == arg) send_noise(200);

@@ -70,14 +70,18 @@ TEST_CASE("a bad --dut spec is one line and exit 2", "[dut]") {
     CHECK(r.err_lines() == 1);
     CHECK_THAT(r.err, Catch::StartsWith("pxflow: error: --dut"));
   }
-  const auto t = run_pxflow({"check", "--dut-timeout", "0", "--backends", "ref-original"});
-  CHECK(t.exit_code == 2);
-  CHECK_THAT(t.err, Catch::Contains("--dut-timeout"));
+  // --dut-timeout is an alias of --device-timeout: the error names the option's one name.
+  for (const char* flag : {"--device-timeout", "--dut-timeout"}) {
+    const auto t = run_pxflow({"check", flag, "0", "--backends", "ref-original"});
+    CHECK(t.exit_code == 2);
+    CHECK_THAT(t.err, Catch::Contains("--device-timeout: '0': allowed seconds from 0.01"));
+  }
 }
 
 TEST_CASE("a report of a --dut row records check and bench commands that rerun it", "[dut]") {
   TempDir dir;
-  // A spec with a space (the device's argument), so that the recorded command must quote it.
+  // A spec with a space (the device's argument), so that the recorded command must quote it; the
+  // old name --dut-timeout is recorded as the option's name, --device-timeout.
   const std::string spec = std::string("d=exec:") + DUT_FAULTY + " none";
   const auto t = timed_pxflow({"report", "--out", dir.path("r"), "--dut", spec, "--dut-timeout",
                                "7", "--backends", "ref-original,d", "--no-accuracy", "--quick"});
@@ -85,7 +89,7 @@ TEST_CASE("a report of a --dut row records check and bench commands that rerun i
   REQUIRE(t.r.exit_code == 0);
   const auto results = nlohmann::json::parse(slurp(dir.path("r/results.json")));
   const std::string globals =
-      "pxflow --dut 'd=exec:" + std::string(DUT_FAULTY) + " none' --dut-timeout 7 ";
+      "pxflow --device-timeout 7 --dut 'd=exec:" + std::string(DUT_FAULTY) + " none' ";
   const std::string check = results["commands"]["check"].get<std::string>();
   CHECK_THAT(check, Catch::StartsWith(globals + "check "));
   CHECK_THAT(results["commands"]["bench"].get<std::string>(),

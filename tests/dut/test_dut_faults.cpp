@@ -1,6 +1,7 @@
 // Every fault mode of docs/dut-protocol.md section 4 against the binary: a fault the protocol
 // absorbs (resend) passes; every other one is a failure line naming the device and the message,
-// exit 1, within the bound --dut-timeout sets; no device process outlives the run.
+// exit 1, within the bound --device-timeout sets; no device process outlives the run. A slow
+// device that keeps sending keepalives is not hung.
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -19,9 +20,9 @@ using namespace pxflow::test;
 
 namespace {
 
-constexpr double kTimeout = 0.4;  // --dut-timeout of these runs
+constexpr double kTimeout = 0.4;  // --device-timeout of these runs
 // A guard against a hang only (these runs take about a second on an idle machine, several on a
-// loaded one); the bound --dut-timeout sets is measured against a fault-free run below.
+// loaded one); the bound --device-timeout sets is measured against a fault-free run below.
 constexpr double kBound = 30.0;
 
 struct FaultRun {
@@ -29,14 +30,15 @@ struct FaultRun {
   std::string word;
 };
 
-FaultRun run_fault(const std::string& mode, bool require = true, const std::string& cases = "40") {
+FaultRun run_fault(const std::string& mode, bool require = true, const std::string& cases = "40",
+                   double timeout = kTimeout) {
   FaultRun f;
   f.word = unique_word();
   std::vector<std::string> args = {"check",
                                    "--dut",
                                    std::string("f=exec:") + DUT_FAULTY + " " + mode + " " + f.word,
-                                   "--dut-timeout",
-                                   std::to_string(kTimeout),
+                                   "--device-timeout",
+                                   std::to_string(timeout),
                                    "--backends",
                                    "ref-original,f",
                                    "--cases",
@@ -75,19 +77,39 @@ TEST_CASE("faults the protocol absorbs: the resend succeeds", "[dut][faults]") {
   expect_passed(run_fault("late 150", true, "8"));  // 150 ms per RESULT, within the timeout
 }
 
-TEST_CASE("a device that answers too late fails within 4 x --dut-timeout", "[dut][faults]") {
+TEST_CASE("a device that answers too late fails within 4 x --device-timeout", "[dut][faults]") {
   // The same run without the fault, just before, measures pxflow's start and the machine's load.
   const FaultRun baseline = run_fault("none 0", true, "1");
   const FaultRun f = run_fault("late 3000", true, "1");
   expect_failed(f, "dut f (exec:");
-  CHECK_THAT(f.t.r.out, Catch::Contains("RUN: no answer within 0.4 s after 3 resends"));
+  // The px4flow-64 case's RUN is less than one work unit: its wait is the timeout itself.
+  CHECK_THAT(f.t.r.out, Catch::Contains("RUN: no answer within 0.4 s for 1 pair (") &&
+                            Catch::Contains(" POIs at S=") &&
+                            Catch::Contains("after 3 resends (each waited up to 0.4 s)") &&
+                            Catch::Contains("the device hangs or is slower than --device-timeout "
+                                            "0.4 allows per 1 M candidates: raise "
+                                            "--device-timeout"));
   // 4 attempts of 0.4 s, then 1 s for the device to end by itself before SIGKILL, plus slack.
   CHECK(f.t.seconds < baseline.t.seconds + 4 * kTimeout + 1.0 + 1.5);
 }
 
+TEST_CASE("a device that answers slowly but sends keepalives is not hung", "[dut][faults]") {
+  // Each RESULT 6 s late, 3 x the 2 s timeout, with a keepalive every 0.1 s: every keepalive
+  // restarts the wait, so no wait ever fires and the case passes. Margins for a loaded machine:
+  // a keepalive would have to be 2 s late (20 x its period) for a wait to fire.
+  const FaultRun f = run_fault("slow-alive 6000", true, "1", 2.0);
+  expect_passed(f);
+  CHECK(f.t.seconds > 6);  // the device did take its time
+}
+
 TEST_CASE("a device that never answers, or answers noise, is skipped with its reason",
           "[dut][faults]") {
-  expect_failed(run_fault("silent"), "required but cannot run: HELLO: no answer within 0.4 s");
+  const FaultRun silent = run_fault("silent");
+  expect_failed(silent, "required but cannot run: HELLO: no answer within 0.4 s");
+  CHECK_THAT(silent.t.r.out, Catch::Contains("after 3 resends (each waited up to 0.4 s); is the "
+                                             "device running and on this link (baud rate)? the "
+                                             "device hangs or is slower than --device-timeout "
+                                             "0.4 allows: raise --device-timeout"));
   expect_failed(run_fault("garbage-only"), "not a pxflow device");
   const FaultRun skipped = run_fault("silent", false);
   INFO(skipped.t.r.out << skipped.t.r.err);
@@ -122,12 +144,16 @@ TEST_CASE("a wrong field is the usual mismatch line, a wrong estimate names both
 
 TEST_CASE("Ctrl-C stops pxflow and its device at once", "[dut][faults]") {
   const std::string word = unique_word();
-  std::vector<std::string> args = {
-      PXFLOW_BINARY,   "check",
-      "--dut",         std::string("f=exec:") + DUT_FAULTY + " late 60000 " + word,
-      "--dut-timeout", "30",
-      "--backends",    "ref-original,f",
-      "--cases",       "300"};  // two cases: the second sees the signal
+  std::vector<std::string> args = {PXFLOW_BINARY,
+                                   "check",
+                                   "--dut",
+                                   std::string("f=exec:") + DUT_FAULTY + " late 60000 " + word,
+                                   "--device-timeout",
+                                   "30",
+                                   "--backends",
+                                   "ref-original,f",
+                                   "--cases",
+                                   "300"};  // two cases: the second sees the signal
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

@@ -58,7 +58,7 @@ Timed check_with(const std::string& firmware, const std::string& timeout) {
   const auto t0 = std::chrono::steady_clock::now();
   Timed t;
   t.result = pxflow::test::run_pxflow({"check", "--backends", "m4-qemu", "--require", "m4-qemu",
-                                       "--generated-only", "--dut-timeout", timeout,
+                                       "--generated-only", "--device-timeout", timeout,
                                        "--m4-firmware", firmware});
   t.seconds = Seconds(std::chrono::steady_clock::now() - t0).count();
   return t;
@@ -153,6 +153,8 @@ std::vector<int> wait_for_qemu(const std::string& firmware, double limit) {
 
 }  // namespace
 
+// QEMU's start-up is the HELLO wait: a firmware that never answers is a QEMU that never boots,
+// given up after 4 x --device-timeout with the line naming the option.
 TEST_CASE("m4-qemu: firmware that never answers: skipped, required, exit 1 within the bound",
           "[m4][fault]") {
   const std::string fw = fault_firmware(1);
@@ -160,6 +162,7 @@ TEST_CASE("m4-qemu: firmware that never answers: skipped, required, exit 1 withi
   INFO(t.result.out << t.result.err);
   CHECK(t.result.exit_code == 1);
   CHECK(mentions(t.result, "HELLO: no answer within 0.5 s after 3 resends"));
+  CHECK(mentions(t.result, "slower than --device-timeout 0.5 allows: raise --device-timeout"));
   CHECK(t.seconds < 20);  // 4 x 0.5 s for HELLO, QEMU's start and stop
   require_no_qemu(fw);
 }
@@ -170,7 +173,8 @@ TEST_CASE("m4-qemu: firmware that hangs in RUN: the case fails, exit 1 within th
   const Timed t = check_with(fw, "2");
   INFO(t.result.out << t.result.err);
   CHECK(t.result.exit_code == 1);
-  CHECK(mentions(t.result, "RUN: no answer"));
+  CHECK(mentions(t.result, "RUN: no answer within 2 s for 1 pair ("));
+  CHECK(mentions(t.result, "--device-timeout 2 allows per 1 M candidates: raise --device-timeout"));
   CHECK(t.seconds < 40);  // the first pair's transfer, then 4 x 2 s; the dead row fails at once
   require_no_qemu(fw);
 }
@@ -220,7 +224,7 @@ TEST_CASE("m4-qemu: a device estimate one ULP off the host's: the case fails nam
 TEST_CASE("m4-qemu: QEMU killed during a check: the case fails, exit 1, no QEMU left",
           "[m4][fault]") {
   const PrivateFirmware fw;
-  Background run(long_check({"--dut-timeout", "2", "--m4-firmware", fw}));
+  Background run(long_check({"--device-timeout", "2", "--m4-firmware", fw}));
   const std::vector<int> pids = wait_for_qemu(fw, 30);
   REQUIRE(pids.size() == 1);
   kill(pids[0], SIGKILL);  // the one QEMU this test's pxflow started

@@ -1,15 +1,18 @@
 #include "run_program.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 extern char** environ;
 
@@ -27,6 +30,13 @@ int RunResult::err_lines() const {
 }
 
 RunResult run_program(const std::string& binary, const std::vector<std::string>& args) {
+  double seconds = 0;
+  return run_program_within(binary, args, 0, seconds);
+}
+
+RunResult run_program_within(const std::string& binary, const std::vector<std::string>& args,
+                             double limit_seconds, double& seconds) {
+  const auto start = std::chrono::steady_clock::now();
   TempDir io;
   const std::string out = io.path("stdout"), err = io.path("stderr");
   std::vector<std::string> argv_s = {binary};
@@ -45,9 +55,24 @@ RunResult run_program(const std::string& binary, const std::vector<std::string>&
   posix_spawn_file_actions_destroy(&fa);
   if (rc != 0) throw std::runtime_error("cannot start " + binary);
   int status = 0;
-  waitpid(pid, &status, 0);
+  bool killed = false;
+  if (limit_seconds > 0) {
+    const auto end = start + std::chrono::duration<double>(limit_seconds);
+    while (waitpid(pid, &status, WNOHANG) != pid) {
+      if (std::chrono::steady_clock::now() >= end) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        killed = true;
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  } else {
+    waitpid(pid, &status, 0);
+  }
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RunResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.exit_code = killed ? -2 : WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = slurp(out);
   r.err = slurp(err);
   return r;

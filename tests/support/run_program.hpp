@@ -13,6 +13,11 @@ struct RunResult {
 
 RunResult run_program(const std::string& binary, const std::vector<std::string>& args);
 
+// run_program with a guard: a program still running after `limit_seconds` is killed (SIGKILL)
+// and its exit_code is -2. `seconds` receives how long it ran.
+RunResult run_program_within(const std::string& binary, const std::vector<std::string>& args,
+                             double limit_seconds, double& seconds);
+
 // The whole file (empty when it cannot be read).
 std::string slurp(const std::string& path);
 

@@ -113,17 +113,3 @@ TEST_CASE("vulkan: a frame pair beyond the buffer limit is refused untouched", "
                     [](std::uint8_t b) { return b == kUnwrittenSentinel; }));
   CHECK(make_vulkan()->unsupported(p).empty());
 }
-
-TEST_CASE("vulkan: a kernel that misses its deadline is an error, then refused", "[vulkan]") {
-  VulkanConfig config;
-  config.fence_timeout = std::chrono::milliseconds(0);
-  auto vk = make_vulkan(config);
-  const Params p = make_params("px4flow-64", 256, 256, 16, 8);
-  const auto pairs = random_pairs(256, 256, 16, 4);
-  std::vector<FramePair> views;
-  for (const auto& op : pairs) views.push_back(op.view());
-  std::vector<PoiRecord> out(views.size() * poi_count(p));
-  OpCounts counts;
-  CHECK_THROWS_WITH(vk->run(views, p, out, counts), Contains("did not finish within 0 ms"));
-  CHECK_THROWS_WITH(vk->run(views, p, out, counts), Contains("unusable after an earlier failure"));
-}
