@@ -37,7 +37,7 @@ for run in $(seq "$runs"); do
   start=$(date +%s)
   load_before=$(cut -d' ' -f1 /proc/loadavg)
   status=0
-  ctest --test-dir "$build" -j$((2 * cores)) --output-on-failure \
+  ctest --test-dir "$build" -j$((2 * cores)) --output-on-failure --timeout 1500 \
     --output-junit "$build/stress-$run.xml" >"$build/stress-$run.log" 2>&1 || status=$?
   seconds=$(($(date +%s) - start))
   summary=$(python3 "$root/ci/test-summary.py" "stress run $run" "$build/stress-$run.xml" "$seconds s")
