@@ -6,9 +6,9 @@
 A skip's reason is the first line of the test's output that says SKIP (the missing-tool policy of
 cmake/PxflowTests.cmake prints "SKIPPED: <reason>"), else its last line.
 
-Usage: test-summary.py STAGE JUNIT_FILE TIME [LEFT_OUT]
-TIME is printed as given (e.g. "412 s (build 150 s, tests 262 s)").
-LEFT_OUT, when given, is appended as is (the tests a stage leaves out, e.g. by label)."""
+Usage: test-summary.py STAGE JUNIT_FILE TIME [REGISTERED WHY]
+TIME is printed as given (e.g. "412 s (build 150 s, tests 262 s)"). REGISTERED, the number of
+tests the build registered, and WHY, the reason some did not run, add "N left out (WHY)"."""
 import sys
 import xml.etree.ElementTree as ET
 
@@ -23,11 +23,11 @@ def skip_reason(case):
 
 
 def main():
-    if len(sys.argv) not in (4, 5):
+    if len(sys.argv) not in (4, 6):
         sys.stderr.write(__doc__)
         return 2
     stage, junit, time_text = sys.argv[1:4]
-    left_out = sys.argv[4] if len(sys.argv) == 5 else ""
+    registered, why = (int(sys.argv[4]), sys.argv[5]) if len(sys.argv) == 6 else (None, "")
     try:
         root = ET.parse(junit).getroot()
     except (OSError, ET.ParseError) as e:
@@ -47,8 +47,9 @@ def main():
     if failed:
         parts[-1] += " (" + "; ".join(failed) + ")"
     parts.append(f"{len(skipped)} skipped" + (" (" + "; ".join(skipped) + ")" if skipped else ""))
-    if left_out:
-        parts.append(left_out)
+    ran = len(passed) + len(failed) + len(skipped)
+    if registered is not None and registered > ran:
+        parts.append(f"{registered - ran} left out ({why})")
     print(f"{stage}: " + ", ".join(parts) + f", {time_text}")
     return 0
 

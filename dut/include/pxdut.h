@@ -18,7 +18,9 @@
 extern "C" {
 #endif
 
-/* What HELLO says about the device (strings of at most 255 bytes, static). */
+/* What HELLO says about the device (static strings). HELLO sends at most PXDUT_STRING_MAX bytes of
+ * each, the most that lets its reply fit PXDUT_MAX_PACKET: 11 at the smallest packet (64), 75 at
+ * the default (256), never above 255 (pxdut_engine.c). */
 typedef struct {
   const char *name;  /* implementation name */
   const char *build; /* build id */

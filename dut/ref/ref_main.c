@@ -6,6 +6,13 @@
 #include "pxdut.h"
 #include "ref_link.h"
 
+#ifndef PXDUT_REF_NAME /* a test device sets its own (tests/dut: the smallest packet size) */
+#define PXDUT_REF_NAME "pxdut-portable-c"
+#endif
+#ifndef PXDUT_REF_CLOCK
+#define PXDUT_REF_CLOCK "dut-ref-monotonic-ns"
+#endif
+
 int pxdut_port_read(uint8_t *buf, int max) { return ref_link_read(buf, max); }
 int pxdut_port_write(const uint8_t *buf, int len) { return ref_link_write(buf, len); }
 uint32_t pxdut_port_cycles(void) { return ref_link_nanoseconds(); }
@@ -24,7 +31,7 @@ int main(int argc, char **argv) {
             "  the pxflow reference device (docs/dut-protocol.md): stdin/stdout by default\n");
     return 2;
   }
-  static const pxdut_device dev = {"pxdut-portable-c", PXDUT_BUILD_ID, "dut-ref-monotonic-ns"};
+  static const pxdut_device dev = {PXDUT_REF_NAME, PXDUT_BUILD_ID, PXDUT_REF_CLOCK};
   pxdut_serve(&dev);
   return 0;
 }

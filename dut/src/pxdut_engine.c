@@ -12,7 +12,24 @@
 #endif
 
 #define PXDUT_ENCODED_MAX (PXDUT_MAX_PACKET + PXDUT_MAX_PACKET / 254u + 2u)
-#define PXDUT_STRING_MAX 60u /* HELLO's strings are cut here so that the reply fits 256 bytes */
+
+/* Every reply fits one packet of PXDUT_MAX_PACKET bytes (type, seq, body, CRC), whatever the
+ * device's strings: HELLO's three strings and ERROR's text are cut to PXDUT_STRING_MAX bytes, the
+ * most that lets HELLO's reply (2 + 22 + 3 x (1 + n) + 4 bytes) fit, and never above 255 (a
+ * string's length is a u8): 11 bytes at the smallest packet (64), 75 at the default (256). */
+#define PXDUT_HELLO_REPLY_FIXED 22u /* version, flags, counter_hz, max_packet, 0, pixels, POIs */
+#define PXDUT_STRING_FIT \
+  ((PXDUT_MAX_PACKET - PXDUT_PACKET_OVERHEAD - PXDUT_HELLO_REPLY_FIXED) / 3u - 1u)
+#define PXDUT_STRING_MAX (PXDUT_STRING_FIT < 255u ? PXDUT_STRING_FIT : 255u)
+#define PXDUT_HELLO_REPLY_MAX \
+  (PXDUT_PACKET_OVERHEAD + PXDUT_HELLO_REPLY_FIXED + 3u * (1u + PXDUT_STRING_MAX))
+#define PXDUT_ERROR_REPLY_MAX (PXDUT_PACKET_OVERHEAD + 2u + 1u + PXDUT_STRING_MAX)
+#define PXDUT_RESULT_REPLY (PXDUT_PACKET_OVERHEAD + 40u)
+#define PXDUT_RECORDS_REPLY_MIN (PXDUT_RECORDS_REPLY_OVERHEAD + PXDUT_RECORD_BYTES)
+#if PXDUT_HELLO_REPLY_MAX > PXDUT_MAX_PACKET || PXDUT_ERROR_REPLY_MAX > PXDUT_MAX_PACKET || \
+    PXDUT_RESULT_REPLY > PXDUT_MAX_PACKET || PXDUT_RECORDS_REPLY_MIN > PXDUT_MAX_PACKET
+#error "a reply of the engine does not fit PXDUT_MAX_PACKET bytes"
+#endif
 
 static struct {
   uint8_t rx[PXDUT_ENCODED_MAX]; /* the frame being received, decoded in place */

@@ -133,6 +133,13 @@ Hello Session::hello() {
     throw DutError("protocol version " + std::to_string(h.version) + ", this pxflow speaks " +
                        std::to_string(kProtocolVersion),
                    true);
+  // The device's own size rule (section 1): no packet of its may exceed what it declares.
+  const std::size_t packet = p.body.size() + PXDUT_PACKET_OVERHEAD;
+  if (packet > h.max_packet)
+    throw DutError("its HELLO reply is a " + std::to_string(packet) +
+                       "-byte packet, more than the max_packet of " + std::to_string(h.max_packet) +
+                       " it declares (a reply overran its buffer)",
+                   true);
   return h;
 }
 

@@ -52,6 +52,19 @@ TEST_CASE("a 20 KiB device takes 64x64 pairs in chunks and says n/a to larger fr
   CHECK_THAT(t.r.out, Catch::Matches("(.|\n)*d +passed +8 +238 +8 (.|\n)*"));
 }
 
+TEST_CASE(
+    "a device built at the smallest packet size, 60-byte strings, passes with every reply fitting",
+    "[dut]") {
+  const auto t =
+      timed_pxflow({"check", "--dut", std::string("d=exec:") + DUT_MIN_PACKET, "--backends",
+                    "ref-original,d", "--require", "d", "--generated-only"});
+  INFO(t.r.out << t.r.err);
+  CHECK(t.r.exit_code == 0);
+  CHECK_THAT(t.r.out, Catch::Matches("(.|\n)*d +passed +8 +238 +8 (.|\n)*"));
+  // HELLO's strings were cut to the 11 bytes a 64-byte reply leaves each of them.
+  CHECK_THAT(t.r.out + t.r.err, Catch::Contains("string-of-s") && !Catch::Contains("string-of-si"));
+}
+
 TEST_CASE("pxflow backends lists a --dut row and says why it cannot run", "[dut][all-probes]") {
   const auto ok = run_pxflow({"backends", "--dut", std::string("d=exec:") + DUT_REF});
   CHECK(ok.exit_code == 0);
