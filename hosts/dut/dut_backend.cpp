@@ -33,8 +33,8 @@ Session& Device::session() {
 }
 
 void Device::kill(const std::string& line) {
-  dead_ = line;
-  session_.reset();  // an exec device is stopped and reaped now
+  if (dead_.empty()) dead_ = line;  // the first failure is the one every later use repeats
+  session_.reset();                 // an exec device is stopped and reaped now
 }
 
 std::string DutBackend::unsupported(const Params& p) const {

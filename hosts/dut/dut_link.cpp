@@ -45,11 +45,13 @@ bool wait_fd(int fd, short events, Clock::time_point deadline) {
 // A pair of file descriptors (the same one for sockets and ttys).
 class FdLink : public Link {
  public:
-  FdLink(int in, int out) : in_(in), out_(out) {
+  FdLink(int in, int out, std::string garbage_hint)
+      : in_(in), out_(out), garbage_hint_(std::move(garbage_hint)) {
     set_nonblocking(in_);
     set_nonblocking(out_);
   }
   ~FdLink() override { close_fds(); }
+  std::string garbage_hint() const override { return garbage_hint_; }
 
   void write(std::span<const std::uint8_t> bytes, Clock::time_point deadline) override {
     std::size_t done = 0;
@@ -91,12 +93,17 @@ class FdLink : public Link {
 
  private:
   int in_, out_;
+  std::string garbage_hint_;
 };
 
 class ExecLink : public FdLink {
  public:
   ExecLink(int in, int out, pid_t pid, std::string command)
-      : FdLink(in, out), pid_(pid), command_(std::move(command)) {}
+      : FdLink(in, out,
+               "does the program write only protocol frames to its stdout? (anything else goes "
+               "to stderr)"),
+        pid_(pid),
+        command_(std::move(command)) {}
   ~ExecLink() override {
     close_fds();  // the device sees the end of its input and may exit by itself
     for (int i = 0; i < 20 && !reaped_; ++i) {
@@ -205,7 +212,7 @@ std::unique_ptr<Link> open_tcp_link(const std::string& host, const std::string& 
       freeaddrinfo(found);
       const int one = 1;
       setsockopt(s, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);  // small frames, answered at once
-      return std::make_unique<FdLink>(s, s);
+      return std::make_unique<FdLink>(s, s, "is a pxflow device listening on that port?");
     }
     why = std::strerror(errno);
     ::close(s);
@@ -263,7 +270,7 @@ std::unique_ptr<Link> open_serial_link(const std::string& path, int baud) {
     throw LinkError(why);
   }
   tcflush(fd, TCIOFLUSH);  // whatever the device printed before we came is not an answer
-  return std::make_unique<FdLink>(fd, fd);
+  return std::make_unique<FdLink>(fd, fd, "wrong port or baud rate?");
 }
 
 }  // namespace pxflow::dut

@@ -27,6 +27,9 @@ class Link {
   // Waits for bytes until `deadline`: returns how many were read, 0 at the deadline; throws
   // LinkError when the link is closed (the message says how: "exited with status 3").
   virtual std::size_t read(std::uint8_t* buf, std::size_t max, Clock::time_point deadline) = 0;
+  // What to look at when bytes arrive but never a valid frame: this kind of link's usual
+  // misconnection ("wrong port or baud rate?" on a serial port, not over exec:).
+  virtual std::string garbage_hint() const = 0;
 };
 
 // exec: COMMAND split at blanks, no shell; its own process group; stopped and reaped by the

@@ -14,6 +14,9 @@ std::string seconds_text(double s) {
 
 constexpr auto kSettle = std::chrono::milliseconds(100);  // after a corrupted frame, see whether
                                                           // a good one follows before resending
+// More bytes than this with no valid frame among them is not a device talking: four of the
+// largest frames the host accepts, far above any stray print a device may send between frames.
+constexpr std::uint64_t kGarbageLimit = 4 * (kHostMaxPacket + kHostMaxPacket / 254 + 2);
 
 }  // namespace
 
@@ -49,6 +52,7 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body, 
     }
     Clock::time_point resend_at = deadline;
     bool resend = false;
+    std::string wrong_seq;  // a reply of this attempt that did not copy the request's seq
     while (!resend) {
       if (pending_at_ == pending_.size()) {
         if (Clock::now() >= resend_at) break;
@@ -65,11 +69,21 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body, 
         pending_.resize(n);
         if (n == 0) {
           if (resend_at == deadline)
-            problem = "no answer within " + seconds_text(allowed) + for_work;
+            problem = wrong_seq.empty() ? "no answer within " + seconds_text(allowed) + for_work
+                                        : wrong_seq;
           break;
         }
       }
       const FrameReceiver::Event ev = rx_.push(pending_[pending_at_++]);
+      if (ev == FrameReceiver::Event::kPacket) bytes_at_last_packet_ = rx_.bytes_seen();
+      if (rx_.bytes_seen() - bytes_at_last_packet_ > kGarbageLimit) {
+        pending_.clear();
+        pending_at_ = 0;
+        fail(name,
+             std::to_string(rx_.bytes_seen() - bytes_at_last_packet_) +
+                 " bytes arrived with no valid frame among them",
+             link_->garbage_hint(), true);
+      }
       if (ev == FrameReceiver::Event::kKeepalive || ev == FrameReceiver::Event::kPacket) {
         // The device is alive: the wait starts again (unless a corrupted reply is settling).
         if (resend_at == deadline) resend_at = deadline = Clock::now() + wait;
@@ -87,7 +101,12 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body, 
         resend = true;
         continue;
       }
-      if (p.seq != seq) continue;  // a late copy of an earlier reply
+      if (p.seq != seq) {  // a late copy of an earlier reply, or a device that does not copy seq
+        wrong_seq = "only a reply with seq " + std::to_string(p.seq) + " within " +
+                    seconds_text(allowed) + for_work + ", not the request's " +
+                    std::to_string(seq) + " (a reply copies its request's seq)";
+        continue;
+      }
       if (p.type == kError) {
         DeviceErrorReply e;
         try {
@@ -119,7 +138,7 @@ Hello Session::hello() {
     const std::string line = e.what();
     if (!valid_frame_seen_ && rx_.bytes_seen() > 0)
       throw DutError("not a pxflow device: " + std::to_string(rx_.bytes_seen()) +
-                         " bytes arrived but no valid frame (wrong port or baud rate?)",
+                         " bytes arrived but no valid frame (" + link_->garbage_hint() + ")",
                      true);
     throw DutError(line.substr(std::min(line.size(), label_.size() + 2)), true);
   }

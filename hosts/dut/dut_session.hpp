@@ -59,6 +59,7 @@ class Session {
   std::vector<std::uint8_t> pending_;  // bytes read but not yet fed to rx_
   std::size_t pending_at_ = 0;
   bool valid_frame_seen_ = false;
+  std::uint64_t bytes_at_last_packet_ = 0;  // rx_.bytes_seen() when the last valid frame ended
 };
 
 }  // namespace pxflow::dut

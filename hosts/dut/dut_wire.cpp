@@ -106,17 +106,22 @@ std::vector<std::uint8_t> encode_frame(std::uint8_t type, std::uint8_t seq,
 FrameReceiver::Event FrameReceiver::push(std::uint8_t byte) {
   ++bytes_seen_;
   if (byte != 0) {
-    if (buf_.size() < kHostMaxPacket + kHostMaxPacket / 254 + 1)
+    if (buf_.size() < kHostMaxPacket + kHostMaxPacket / 254 + 1) {
       buf_.push_back(byte);
-    else
-      overflow_ = true;
-    return Event::kNone;
+      return Event::kNone;
+    }
+    // Reported once, at the first byte too many, not at a delimiter that may never come (a
+    // link that carries anything but frames): whoever reads it need not wait for the end.
+    if (overflow_) return Event::kNone;
+    overflow_ = true;
+    return why_bad_ = std::string(discard_reason(PXDUT_NAK_TOO_LONG)) + ", with no delimiter",
+           Event::kBad;
   }
   std::vector<std::uint8_t> frame;
   frame.swap(buf_);
   const bool overflow = overflow_;
   overflow_ = false;
-  if (overflow) return why_bad_ = discard_reason(PXDUT_NAK_TOO_LONG), Event::kBad;
+  if (overflow) return Event::kNone;  // reported when it began
   if (frame.empty()) return Event::kKeepalive;
   const std::int32_t n =
       pxdut_cobs_decode(frame.data(), static_cast<std::uint32_t>(frame.size()), frame.data());

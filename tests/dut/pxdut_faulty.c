@@ -12,23 +12,24 @@
 
 typedef enum {
   kNone,
-  kDropByte,     /* N: one byte of reply N is lost (its CRC fails) */
-  kDropReply,    /* N: reply N is lost entirely (the host times out) */
-  kFlipReply,    /* N: one bit of reply N flips */
-  kFlipRequest,  /* N: one bit of request N flips (the device NAKs it) */
-  kLate,         /* N: every RESULT is sent N ms late */
-  kSlowAlive,    /* N: every RESULT is sent N ms late, a keepalive (0x00) every 100 ms till then */
-  kGarbage,      /* N: 200 bytes of noise (zeros among them) before reply N */
-  kGarbageOnly,  /* noise, never a frame */
-  kSilent,       /* reads, never answers */
-  kReset,        /* N: state lost (and a boot banner) after reply N */
-  kExit,         /* N: exits with status 3 when request N arrives */
-  kVersion,      /* HELLO says protocol version 2 */
-  kShortResult,  /* RESULT says one record fewer than the grid */
-  kExtraRecords, /* every RECORDS reply carries one record more than asked */
-  kShortRecords, /* every RECORDS reply lacks its last record */
-  kWrongField,   /* N: run N's first accepted record has sub[3] off by one */
-  kWrongEstimate /* RESULT's flow_x has its lowest bit flipped */
+  kDropByte,      /* N: one byte of reply N is lost (its CRC fails) */
+  kDropReply,     /* N: reply N is lost entirely (the host times out) */
+  kFlipReply,     /* N: one bit of reply N flips */
+  kFlipRequest,   /* N: one bit of request N flips (the device NAKs it) */
+  kLate,          /* N: every RESULT is sent N ms late */
+  kSlowAlive,     /* N: every RESULT is sent N ms late, a keepalive (0x00) every 100 ms till then */
+  kGarbage,       /* N: 200 bytes of noise (zeros among them) before reply N */
+  kGarbageOnly,   /* noise, never a frame */
+  kSilent,        /* reads, never answers */
+  kReset,         /* N: state lost (and a boot banner) after reply N */
+  kExit,          /* N: exits with status 3 when request N arrives */
+  kVersion,       /* HELLO says protocol version 2 */
+  kShortResult,   /* RESULT says one record fewer than the grid */
+  kExtraRecords,  /* every RECORDS reply carries one record more than asked */
+  kShortRecords,  /* every RECORDS reply lacks its last record */
+  kWrongField,    /* N: run N's first accepted record has sub[3] off by one */
+  kWrongEstimate, /* RESULT's flow_x has its lowest bit flipped */
+  kWrongSeq       /* every RESULT carries its request's seq plus one */
 } fault_mode;
 
 static const struct {
@@ -51,7 +52,8 @@ static const struct {
               {"extra-records", kExtraRecords},
               {"short-records", kShortRecords},
               {"wrong-field", kWrongField},
-              {"wrong-estimate", kWrongEstimate}};
+              {"wrong-estimate", kWrongEstimate},
+              {"wrong-seq", kWrongSeq}};
 
 static fault_mode mode = kNone;
 static long arg = 0;
@@ -140,6 +142,12 @@ int pxdut_port_write(const uint8_t *buf, int len) {
     case kShortResult:
       if (type == PXDUT_MSG_RESULT) {
         packet[2] -= 1;
+        return ref_link_write(frame, seal_frame(packet, n, frame));
+      }
+      break;
+    case kWrongSeq:
+      if (type == PXDUT_MSG_RESULT) {
+        packet[1] = (uint8_t)(packet[1] + 1u);
         return ref_link_write(frame, seal_frame(packet, n, frame));
       }
       break;

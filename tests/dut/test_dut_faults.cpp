@@ -113,6 +113,42 @@ TEST_CASE("a device that never answers, or answers noise, is skipped with its re
   CHECK_FALSE(process_with_word(skipped.word));
 }
 
+TEST_CASE("a device that does not copy seq is told so, not 'no answer'", "[dut][faults]") {
+  expect_failed(run_fault("wrong-seq"), "RUN: only a reply with seq ");
+  expect_failed(run_fault("wrong-seq"), "(a reply copies its request's seq)");
+}
+
+TEST_CASE("a dead device's line is given once, then repeated as it was", "[dut][faults]") {
+  // Dies in the first case's second pair; the fixed corpus's 7 other 64x64 cases follow.
+  const std::string word = unique_word();
+  const RunResult r =
+      timed_pxflow({"check", "--dut", std::string("f=exec:") + DUT_FAULTY + " exit 10 " + word,
+                    "--backends", "ref-original,f", "--generated-only"})
+          .r;
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.out, Catch::Contains("(its output above may say why) (failed earlier in this run)"));
+  CHECK_THAT(r.out, !Catch::Contains("(failed earlier in this run) (failed earlier"));
+  CHECK_FALSE(process_with_word(word));
+}
+
+TEST_CASE("a program that prints anything but frames is given up after a bounded read",
+          "[dut][faults]") {
+  // yes(1) writes "y\n" without end and never a delimiter: the host reads a bounded amount (four
+  // of its largest frames, 262,160 bytes, plus at most one read of 4,096) and says what to check.
+  const RunResult r = timed_pxflow({"check", "--dut", "y=exec:/usr/bin/yes", "--backends",
+                                    "ref-original,y", "--require", "y", "--generated-only"})
+                          .r;
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  const std::string line = "not a pxflow device: ";
+  const auto at = r.out.find(line);
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stoull(r.out.substr(at + line.size())) <= 262160u + 4096u);
+  CHECK_THAT(r.out, Catch::Contains("does the program write only protocol frames to its stdout?"));
+  CHECK_THAT(r.out, !Catch::Contains("baud rate"));
+}
+
 TEST_CASE("a device of another protocol version is skipped naming both versions", "[dut][faults]") {
   expect_failed(run_fault("version"), "protocol version 2, this pxflow speaks 1");
   const FaultRun skipped = run_fault("version", false);
