@@ -2,7 +2,7 @@
 """A device under test in Python and numpy: the worked example for prototyping a port before
 writing C. It speaks docs/dut-protocol.md version 1 on stdin/stdout and implements SPEC.md
 sections 2-5 with whole-array numpy operations (not the firmware's shape). Checked by
-    pxflow check --dut py=exec:python3 tests/dut/pxdut_numpy.py --require py
+    pxflow check --dut "py=exec:python3 tests/dut/pxdut_numpy.py" --require py
 Its own code throughout: COBS and the frame handling are written from the protocol page, and the
 CRC is zlib's crc32 (CRC-32/ISO-HDLC, the protocol's CRC), a second implementation beside dut/'s.
 """
