@@ -14,13 +14,13 @@ for f in report.md report.html results.json results.csv; do
   [ -s "$out/$f" ] || { echo "FAIL: $f missing or empty"; exit 1; }
 done
 flags=(--headless --no-sandbox --disable-gpu --hide-scrollbars --enable-logging=stderr --v=0)
-timeout 120 "$browser" "${flags[@]}" --window-size=1100,2400 --screenshot="$out/report.png" \
+timeout 600 "$browser" "${flags[@]}" --window-size=1100,2400 --screenshot="$out/report.png" \
   "file://$out/report.html" 2>"$out/chromium.log" || { cat "$out/chromium.log"; exit 1; }
 [ -s "$out/report.png" ] || { echo "FAIL: no screenshot"; exit 1; }
 if grep -E "CONSOLE|Uncaught|Failed to load resource|net::ERR" "$out/chromium.log"; then
   echo "FAIL: the page logged errors"; exit 1
 fi
-dom=$(timeout 120 "$browser" "${flags[@]}" --dump-dom "file://$out/report.html" 2>/dev/null)
+dom=$(timeout 600 "$browser" "${flags[@]}" --dump-dom "file://$out/report.html" 2>/dev/null)
 charts=$(grep -o "<svg" <<<"$dom" | wc -l)
 [ "$charts" -ge 3 ] || { echo "FAIL: expected >= 3 charts in the rendered page, found $charts"; exit 1; }
 grep -q "Conformance" <<<"$dom" || { echo "FAIL: conformance section missing"; exit 1; }

