@@ -109,6 +109,7 @@ int run_pxflow(int argc, char** argv) {
     std::fprintf(stderr, "pxflow: error: %s\n", e.what());
     return 2;
   } catch (const Interrupted& e) {
+    std::fflush(stdout);  // what was printed goes out first, never cut by this line on a terminal
     std::fprintf(stderr, "pxflow: interrupted: %s\n", e.what());
     return 128 + e.signal;
   } catch (const OutputError& e) {

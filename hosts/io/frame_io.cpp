@@ -14,12 +14,16 @@ namespace pxflow {
 namespace fs = std::filesystem;
 namespace {
 
+// Names the one limit a size breaks: a side, or the pixel count (a size whose sides are both in
+// range may still have too many pixels).
 void check_size_limits(const std::string& what, std::int64_t w, std::int64_t h) {
-  if (w < 1 || h < 1 || w > kMaxFrameSide || h > kMaxFrameSide || w * h > kMaxFramePixels)
-    throw InputError(what + ": size " + std::to_string(w) + "x" + std::to_string(h) +
-                     " is outside the supported 1x1.." + std::to_string(kMaxFrameSide) + "x" +
-                     std::to_string(kMaxFrameSide) + " (at most " +
-                     std::to_string(kMaxFramePixels) + " pixels)");
+  const std::string size = std::to_string(w) + "x" + std::to_string(h);
+  if (w < 1 || h < 1 || w > kMaxFrameSide || h > kMaxFrameSide)
+    throw InputError(what + ": size " + size + ": each side must be 1.." +
+                     std::to_string(kMaxFrameSide));
+  if (w * h > kMaxFramePixels)
+    throw InputError(what + ": size " + size + " is " + std::to_string(w * h) +
+                     " pixels, more than the supported " + std::to_string(kMaxFramePixels));
 }
 
 // Existence, type and emptiness, with the message a user needs.

@@ -72,7 +72,11 @@ TEST_CASE("absurd sizes are refused before anything is allocated", "[cli][errors
   png += std::string("\x00\x01\x86\xa0\x00\x01\x86\xa0\x08\x00\x00\x00\x00", 13);
   png += std::string(64, '\0');
   f.dir.write("bomb.png", png);
-  require_bad_input({"flow", f.dir.path("bomb.png"), f.good}, "100000x100000");
+  require_bad_input({"flow", f.dir.path("bomb.png"), f.good},
+                    "size 100000x100000: each side must be 1..16384");
+  // Both sides in range, too many pixels: the message names that limit, never the sides.
+  require_bad_input({"flow", "--size", "16384x16384", f.raw, f.raw},
+                    "size 16384x16384 is 268435456 pixels, more than the supported 67108864");
   require_bad_input({"flow", "--size", "100000x100000", f.raw, f.raw}, "--size");
   require_bad_input({"flow", "--size", "64x", f.raw, f.raw}, "--size");
   require_bad_input({"flow", "--size", "sixty", f.raw, f.raw}, "--size");

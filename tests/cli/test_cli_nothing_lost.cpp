@@ -172,6 +172,26 @@ TEST_CASE("SIGINT and SIGTERM stop a run soon, leave the previous file, exit 130
   }
 }
 
+TEST_CASE("an interrupted run's stdout comes out before the interrupted line", "[cli][lost]") {
+  // stdout and stderr into one file: stdout is then fully buffered, and the check's first line
+  // ("pxflow check: seed ...") waits in the buffer when the signal comes.
+  test::TempDir dir;
+  const std::string both = dir.path("both.txt");
+  const std::string script =
+      std::string("'") + PXFLOW_BINARY +
+      "' check --backends ref-original,ref-local --cases 100000000 --progress >'" + both +
+      "' 2>&1 & p=$!; n=0; until grep -q 'pairs' '" + both +
+      "' || [ $n -ge 600 ]; do sleep 0.1; n=$((n+1)); done; kill -INT $p; wait $p; echo rc=$?";
+  const auto r = test::run_program("/bin/sh", {"-c", script});
+  const std::string out = slurp(both);
+  INFO(r.out << out);
+  REQUIRE(r.out.rfind("rc=130", 0) == 0);
+  const auto first = out.find("pxflow check: seed"), stop = out.find("pxflow: interrupted:");
+  REQUIRE(first != std::string::npos);
+  REQUIRE(stop != std::string::npos);
+  CHECK(first < stop);
+}
+
 TEST_CASE("pxflow --version names the commit, the compiler and the families", "[cli]") {
   const auto r = run_pxflow({"--version"});
   CHECK(r.exit_code == 0);
