@@ -66,6 +66,7 @@ int run_bench_command(const BenchArgs& a) {
                      ": give one of them (see pxflow bench --help)");
   BenchOptions o;
   o.backends = split_list(a.backend.empty() ? a.backends : a.backend);
+  for (const std::string& name : o.backends) (void)find_backend(name);  // before any output
   o.points = bench_points(a);
   o.min_seconds = a.min_time;
   o.backend_options = a.backend_options;

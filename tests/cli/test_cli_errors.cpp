@@ -113,6 +113,8 @@ TEST_CASE("unknown names and malformed parameters", "[cli][errors]") {
   require_bad_input({"flow", "--backend", "cuda-magic", f.good, f.good2},
                     "unknown backend 'cuda-magic'");
   require_bad_input({"flow", "--frobnicate", f.good, f.good2}, "frobnicate");
+  // Refused before the command prints anything (bench's header included).
+  require_bad_input({"bench", "--backends", "ref-original,nope"}, "unknown backend 'nope'");
   require_bad_input({"flow", f.good}, "NEXT");
   require_bad_input({"teleport"}, "teleport");
 }
