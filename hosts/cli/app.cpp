@@ -62,6 +62,10 @@ int run_pxflow(int argc, char** argv) {
       cli::add_merge_command(app)};
   for (const cli::CliExtension& e : cli::registered_cli_extensions())
     if (e.add_command) commands.push_back(e.add_command(app));
+  // Every command's --help (and so its man page) lists the global options too.
+  std::string globals = "Global options (before or after the command; see pxflow --help):";
+  for (const auto& [opt, values] : family_options) globals += "\n  " + opt->flag + "  " + opt->help;
+  for (const auto& c : commands) c.app->footer(globals);
   std::string command;  // the subcommand being parsed, for "see pxflow CMD --help"
   if (argc > 1 && argv[1][0] != '-') {
     for (const auto& c : commands)

@@ -129,6 +129,13 @@ TEST_CASE("text summary and the backend list", "[cli][all-probes]") {
   const auto help = run_pxflow({"flow", "--help"});
   CHECK(help.exit_code == 0);
   CHECK(help.out.find("--set") != std::string::npos);
+  // Every command's help lists the global options (the families' and --device-timeout).
+  for (const char* command : {"flow", "check", "bench", "report", "merge"}) {
+    const auto h = run_pxflow({command, "--help"});
+    INFO(command);
+    CHECK(h.out.find("Global options") != std::string::npos);
+    CHECK(h.out.find("--device-timeout") != std::string::npos);
+  }
 }
 
 #ifdef PXFLOW_TEST_CPU_BUILT
