@@ -55,6 +55,10 @@
 #define PXDUT_FRAME_HEADER 8u       /* u8 image, u8 0, u16 0, u32 offset; then the pixels */
 #define PXDUT_RUN_BODY 8u           /* u32 repetitions, u32 warmups */
 #define PXDUT_RECORDS_BODY 8u       /* u32 first, u32 count */
+#define PXDUT_RESULT_BODY 40u       /* 10 x u32 (section 3) */
+/* The HELLO reply's body before its three strings: version, flags, counter_hz, max_packet,
+ * reserved, max_pixels, max_pois. */
+#define PXDUT_HELLO_REPLY_FIXED 22u
 /* The host's FRAME chunks hold at most max_packet - this many pixel bytes. */
 #define PXDUT_FRAME_CHUNK_MARGIN 18u
 /* A RECORDS reply holds at most (max_packet - this) / PXDUT_RECORD_BYTES records: type, seq,

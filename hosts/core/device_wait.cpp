@@ -22,13 +22,6 @@ std::string grouped(std::uint64_t n) {
   return out;
 }
 
-// "10", "0.4", "2.5": the option's value as a user would write it.
-std::string option_value_text(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", s);
-  return buf;
-}
-
 }  // namespace
 
 std::uint64_t DeviceWork::candidates() const {
@@ -61,9 +54,15 @@ std::string seconds_text(double seconds) {
   return buf;
 }
 
+std::string setting_text(double seconds) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", seconds);
+  return buf;
+}
+
 std::string raise_timeout_hint(bool per_work) {
   return "the device hangs or is slower than --device-timeout " +
-         option_value_text(device_timeout_seconds()) + " allows" +
+         setting_text(device_timeout_seconds()) + " allows" +
          (per_work ? " per 1 M candidates" : "") + ": raise --device-timeout";
 }
 

@@ -1,16 +1,9 @@
 #include "dut_session.hpp"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace pxflow::dut {
 namespace {
-
-std::string seconds_text(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g s", s);
-  return buf;
-}
 
 constexpr auto kSettle = std::chrono::milliseconds(100);  // after a corrupted frame, see whether
                                                           // a good one follows before resending
@@ -38,6 +31,7 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body, 
   const double allowed = timeout_.count() * (work ? work_units(*work) : 1.0);
   const auto wait =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(allowed));
+  const std::string allowed_text = setting_text(allowed) + " s";
   const std::string for_work = work ? " for " + work_text(*work) : "";
   std::string problem;
   for (int attempt = 0; attempt <= kResends; ++attempt) {
@@ -69,8 +63,7 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body, 
         pending_.resize(n);
         if (n == 0) {
           if (resend_at == deadline)
-            problem = wrong_seq.empty() ? "no answer within " + seconds_text(allowed) + for_work
-                                        : wrong_seq;
+            problem = wrong_seq.empty() ? "no answer within " + allowed_text + for_work : wrong_seq;
           break;
         }
       }
@@ -102,9 +95,9 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body, 
         continue;
       }
       if (p.seq != seq) {  // a late copy of an earlier reply, or a device that does not copy seq
-        wrong_seq = "only a reply with seq " + std::to_string(p.seq) + " within " +
-                    seconds_text(allowed) + for_work + ", not the request's " +
-                    std::to_string(seq) + " (a reply copies its request's seq)";
+        wrong_seq = "only a reply with seq " + std::to_string(p.seq) + " within " + allowed_text +
+                    for_work + ", not the request's " + std::to_string(seq) +
+                    " (a reply copies its request's seq)";
         continue;
       }
       if (p.type == kError) {
@@ -126,7 +119,7 @@ Packet Session::exchange(std::uint8_t type, std::span<const std::uint8_t> body, 
   }
   fail(name,
        (problem.empty() ? std::string("no valid answer") : problem) + " after " +
-           std::to_string(kResends) + " resends (each waited up to " + seconds_text(allowed) + ")",
+           std::to_string(kResends) + " resends (each waited up to " + allowed_text + ")",
        "is the device running and on this link (baud rate)? " + raise_timeout_hint(work), true);
 }
 

@@ -77,8 +77,8 @@ class OpenclBackend final : public Backend {
   cl::Owned<cl_event> upload(std::span<const FramePair> pairs, const Params& p);
   cl::Owned<cl_event> launch(std::size_t total_pois);
   cl::Owned<cl_event> download(std::span<PoiRecord> out);
-  // Flushes the queue and polls the kernel for as long as `work` allows; when that runs out,
-  // abandons the device (abandon()) and throws the wait's line.
+  // Flushes the queue and waits for the kernel (cl::wait_for_event) as long as `work` allows;
+  // when that runs out, abandons the device (abandon()) and throws the wait's line.
   void await_kernel(cl_event kernel, const DeviceWork& work);
   // Gives up a device whose kernel may still run: leaks the queue, kernel and buffers (releasing
   // them, or clFinish, would wait for the kernel forever) and refuses every later run.
