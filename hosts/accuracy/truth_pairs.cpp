@@ -8,6 +8,7 @@
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "frame_ops.hpp"
+#include "interrupt.hpp"
 #include "opencv_module.hpp"
 #include "sample_data.hpp"
 #include "synthetic.hpp"
@@ -134,6 +135,7 @@ std::vector<TruthPair> make_truth_pairs(const std::vector<SourceImage>& images, 
   std::vector<TruthPair> out;
   constexpr std::size_t kinds = std::size(kKinds);
   for (int n = 0; n < count; ++n) {
+    stop_if_interrupted(std::to_string(n) + " of " + std::to_string(count) + " pairs made");
     const auto i = static_cast<std::size_t>(n);
     // Kinds cycle fastest, images change every pass, so each image meets every kind.
     out.push_back(

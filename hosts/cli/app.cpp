@@ -9,7 +9,7 @@
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "interrupt.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 #include "parse_errors.hpp"
 #include "pxflow_app.hpp"
 #include "registry.hpp"
@@ -114,7 +114,8 @@ int run_pxflow(int argc, char** argv) {
     return 2;
   } catch (const Interrupted& e) {
     std::fflush(stdout);  // what was printed goes out first, never cut by this line on a terminal
-    std::fprintf(stderr, "pxflow: interrupted: %s\n", e.what());
+    std::fprintf(stderr, "pxflow: interrupted: %s%s\n", e.what(),
+                 files_changed() == 0 ? "; no output file was changed" : "");
     return 128 + e.signal;
   } catch (const OutputError& e) {
     std::fprintf(stderr, "pxflow: error: %s\n", e.what());

@@ -5,14 +5,16 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 #include "registry.hpp"
 
 namespace pxflow::cli {
 namespace {
 
 int run_backends(const std::string& json_path) {
-  if (!json_path.empty()) check_output_path("--json", json_path);
+  OutputPlan plan;
+  OutputFile* const json_file = json_path.empty() ? nullptr : &plan.file("--json", json_path);
+  plan.prepare();
   nlohmann::json rows = nlohmann::json::array();
   const bool table = json_path != kStdoutPath;
   if (table) std::printf("%-14s %-10s %s\n", "backend", "status", "needs / reason");
@@ -29,8 +31,7 @@ int run_backends(const std::string& json_path) {
                     {"has_devices", row.has_devices},
                     {"preferred", row.preferred}});
   }
-  if (!json_path.empty())
-    write_output_file(json_path, nlohmann::json{{"backends", rows}}.dump(2) + "\n");
+  if (json_file) json_file->write(nlohmann::json{{"backends", rows}}.dump(2) + "\n");
   return 0;
 }
 

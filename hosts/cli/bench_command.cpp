@@ -8,7 +8,7 @@
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "list_option.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 #include "progress.hpp"
 
 namespace pxflow::cli {
@@ -72,7 +72,9 @@ int run_bench_command(const BenchArgs& a) {
   o.backend_options = a.backend_options;
   // `--json -`: the JSON is standard output, so the table goes to standard error.
   const bool json_to_stdout = a.json_path == "-";
-  if (!a.json_path.empty() && !json_to_stdout) check_output_path("--json", a.json_path);
+  OutputPlan plan;
+  OutputFile* const json_file = a.json_path.empty() ? nullptr : &plan.file("--json", a.json_path);
+  plan.prepare();
   std::ostream& out = json_to_stdout ? std::cerr : std::cout;
   out << "pxflow bench: " << o.points.size() << " points; each backend's records are checked "
       << "against ref-original before it is timed; ns/frame is the median over repeats "
@@ -80,10 +82,7 @@ int run_bench_command(const BenchArgs& a) {
   BenchReport r = run_bench(o, out);
   r.command = a.command;
   const std::string json = bench_json(r).dump(2) + "\n";
-  if (json_to_stdout)
-    std::cout << json;
-  else if (!a.json_path.empty())
-    write_output_file(a.json_path, json);
+  if (json_file) json_file->write(json);
   return 0;
 }
 

@@ -6,7 +6,7 @@
 #include "commands.hpp"
 #include "errors.hpp"
 #include "list_option.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 #include "progress.hpp"
 
 namespace pxflow::cli {
@@ -78,7 +78,10 @@ int run_check_command(const CheckArgs& a) {
   o.pxflow_version = built.version;
   o.pxflow_commit = built.commit;
   const bool json_to_stdout = a.json_path == kStdoutPath;
-  if (!a.json_path.empty()) check_output_path("--json", a.json_path);
+  OutputPlan plan;
+  if (o.corpus.real) plan.read_folder("--data", a.data_dir);
+  OutputFile* const json_file = a.json_path.empty() ? nullptr : &plan.file("--json", a.json_path);
+  plan.prepare();
   o.banner = "pxflow check: seed " + std::to_string(a.seed) +
              (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
                           : ", fixed corpus") +
@@ -94,7 +97,7 @@ int run_check_command(const CheckArgs& a) {
     human << "shard " << o.shard.text()
           << " compared nothing: exit 0, pxflow merge judges the whole campaign\n";
   const std::string json = check_json(r).dump(2) + "\n";
-  if (!a.json_path.empty()) write_output_file(a.json_path, json);
+  if (json_file) json_file->write(json);
   return r.ok() || merge_judges ? 0 : 1;
 }
 

@@ -18,7 +18,7 @@
 #include "frame_sequence.hpp"
 #include "grid.hpp"
 #include "interrupt.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 #include "registry.hpp"
 
 namespace pxflow::cli {
@@ -39,34 +39,6 @@ struct FlowOptions {
   bool pairs_given = false, progress = false;
   std::string first, second;  // PREV NEXT, or SOURCE
 };
-
-// One machine-readable output: a file (written whole at the end, atomically) or stdout (line by
-// line, as the pairs finish).
-struct Sink {
-  bool on = false, to_stdout = false;
-  std::string path, text;
-  void add(const std::string& s) {
-    if (!on) return;
-    if (to_stdout) {
-      std::fwrite(s.data(), 1, s.size(), stdout);
-      std::fflush(stdout);
-    } else {
-      text += s;
-    }
-  }
-  void finish() const {
-    if (on && !to_stdout) write_output_file(path, text);
-  }
-};
-
-Sink make_sink(bool given, const std::string& option, const std::string& path,
-               std::span<const std::string> inputs) {
-  Sink s;
-  if (!given) return s;
-  s.on = true, s.to_stdout = path == kStdoutPath, s.path = path;
-  if (!s.to_stdout) check_output_path(option, path, inputs);
-  return s;
-}
 
 // The backend opened for `p`, or one line saying why not; a problem it does not support (a
 // frame too large for its memory) names the options that make the frames smaller.
@@ -129,19 +101,9 @@ class FlowRunner {
 
 std::string file_name(const std::string& name) { return fs::path(name).filename().string(); }
 
-void draw_pair(const std::string& path, const NamedFrame& prev, const PairRun& r) {
-  draw_flow(path, prev.frame.view(), *r.params, r.records, r.result,
-            {file_name(r.prev_name) + " -> " + file_name(r.next_name), r.backend, r.profile});
-}
-
-// --json, --jsonl and --csv may not all claim standard output.
-void check_stdout_claims(const FlowOptions& o) {
-  int claims = 0;
-  for (auto [given, path] :
-       {std::pair{o.json_given, &o.json}, {o.jsonl_given, &o.jsonl}, {o.csv_given, &o.csv}})
-    claims += given && *path == kStdoutPath;
-  if (claims > 1)
-    throw InputError("--json, --jsonl, --csv: only one of them can write to standard output (-)");
+std::string picture(const NamedFrame& prev, const PairRun& r) {
+  return flow_png(prev.frame.view(), *r.params, r.records, r.result,
+                  {file_name(r.prev_name) + " -> " + file_name(r.next_name), r.backend, r.profile});
 }
 
 NamedFrame shaped(NamedFrame f, const FrameShaping& s) {
@@ -151,25 +113,40 @@ NamedFrame shaped(NamedFrame f, const FrameShaping& s) {
 
 int run_single(const FlowOptions& o, const BackendRow& row, const FrameShaping& shaping,
                std::optional<FrameSize> raw_size) {
-  const std::string inputs[] = {o.first, o.second};
-  if (o.draw_given) check_draw_path(o.draw, inputs);
-  Sink json = make_sink(o.json_given, "--json", o.json, inputs);
-  Sink jsonl = make_sink(o.jsonl_given, "--jsonl", o.jsonl, inputs);
-  Sink csv = make_sink(o.csv_given, "--csv", o.csv, inputs);
+  OutputPlan plan;
+  plan.read_all({o.first, o.second});
+  auto planned = [&](bool given, const char* option, const std::string& path) {
+    return given ? &plan.file(option, path) : nullptr;
+  };
+  if (o.draw_given) check_png_name("--draw", o.draw);
+  OutputFile* const draw = planned(o.draw_given, "--draw", o.draw);
+  OutputFile* const json = planned(o.json_given, "--json", o.json);
+  OutputFile* const jsonl = planned(o.jsonl_given, "--jsonl", o.jsonl);
+  OutputFile* const csv = planned(o.csv_given, "--csv", o.csv);
+  plan.prepare();
   const NamedFrame prev = shaped({o.first, load_frame(o.first, raw_size)}, shaping);
   const NamedFrame next = shaped({o.second, load_frame(o.second, raw_size)}, shaping);
   FlowRunner runner(o, row);
   const PairRun r = runner.run(prev, next);
-  if (o.draw_given) draw_pair(o.draw, prev, r);
+  if (draw) draw->write(picture(prev, r));
   const std::string object = pair_json(r).dump() + "\n";
-  json.add(object);
-  jsonl.add(object);
-  csv.add(csv_header() + csv_row(0, r));
-  for (const Sink* s : {&json, &jsonl, &csv}) s->finish();
-  const bool stdout_taken =
-      (json.on && json.to_stdout) || (jsonl.on && jsonl.to_stdout) || (csv.on && csv.to_stdout);
+  if (json) json->write(object);
+  if (jsonl) jsonl->write(object);
+  if (csv) csv->write(csv_header() + csv_row(0, r));
+  bool stdout_taken = false;
+  for (const OutputFile* f : {json, jsonl, csv}) stdout_taken |= f && f->to_stdout();
   if (!stdout_taken) std::cout << pair_summary(r);
   return 0;
+}
+
+// What a sequence that stopped early (Ctrl-C, a bad frame, a failed backend) kept: its streams
+// hold every completed pair (OutputStream), and the summary says the run is incomplete.
+void say_incomplete(int pairs, std::initializer_list<const OutputStream*> streams) {
+  std::string kept;
+  for (const OutputStream* s : streams)
+    if (s && !s->to_stdout() && s->records() > 0) kept += " " + s->option() + " " + s->path();
+  std::fprintf(stderr, "flow: incomplete: %d pair%s done before the stop%s\n", pairs,
+               pairs == 1 ? "" : "s", kept.empty() ? "" : ("; kept in" + kept).c_str());
 }
 
 // Every consecutive pair of a sequence, or every pair of a list file.
@@ -189,16 +166,15 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
     sequence = open_frame_sequence(o.first, raw_size);
     inputs = sequence->files();
   }
-  if (o.draw_given) {
-    std::error_code ec;
-    if (o.draw.empty() || !fs::is_directory(o.draw, ec))
-      throw InputError("--draw " + o.draw +
-                       ": for a sequence, --draw names an existing folder (one PNG per pair)");
-  }
-  Sink jsonl = make_sink(o.jsonl_given, "--jsonl", o.jsonl, inputs);
-  Sink csv = make_sink(o.csv_given, "--csv", o.csv, inputs);
-  csv.add(csv_header());
-  const bool stdout_taken = (jsonl.on && jsonl.to_stdout) || (csv.on && csv.to_stdout);
+  OutputPlan plan;
+  plan.read_all(inputs);
+  OutputStream* const jsonl = o.jsonl_given ? &plan.stream("--jsonl", o.jsonl) : nullptr;
+  OutputStream* const csv = o.csv_given ? &plan.stream("--csv", o.csv) : nullptr;
+  OutputFolder* const draw =
+      o.draw_given ? &plan.folder("--draw", o.draw, "pair-NNNNNN.png") : nullptr;
+  plan.prepare();
+  if (csv) csv->header(csv_header());
+  const bool stdout_taken = (jsonl && jsonl->to_stdout()) || (csv && csv->to_stdout());
   // Lines per pair: on stdout when it is free, else on stderr on a terminal or with --progress.
   std::FILE* lines = !stdout_taken ? stdout : (o.progress || ::isatty(2) == 1) ? stderr : nullptr;
   FlowRunner runner(o, row);
@@ -211,15 +187,13 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
   auto one_pair = [&](const NamedFrame& a, const NamedFrame& b) {
     stop_if_interrupted(std::to_string(pairs) + " pairs done");
     const PairRun r = runner.run(a, b);
-    if (o.draw_given) {
+    if (draw) {
       char name[32];
       std::snprintf(name, sizeof name, "pair-%06d.png", pairs);
-      const std::string path = (fs::path(o.draw) / name).string();
-      check_output_path("--draw", path, inputs);
-      draw_pair(path, a, r);
+      draw->write(name, picture(a, r));
     }
-    jsonl.add(pair_json(r).dump() + "\n");
-    csv.add(csv_row(pairs, r));
+    if (jsonl) jsonl->add(pair_json(r).dump() + "\n");
+    if (csv) csv->add(csv_row(pairs, r));
     if (lines) std::fputs(pair_line(pairs, r).c_str(), lines);
     backend_seconds += r.host_seconds;
     last_what =
@@ -230,23 +204,30 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
     ++pairs;
   };
   const auto more = [&] { return o.max_pairs == 0 || pairs < o.max_pairs; };
-  if (o.pairs_given) {
-    for (const auto& [a, b] : list)
-      if (more())
-        one_pair(shaped({a, load_frame(a, raw_size)}, shaping),
-                 shaped({b, load_frame(b, raw_size)}, shaping));
-  } else {
-    while (more() && sequence->next(next)) {
-      next = shaped(std::move(next), shaping);
-      if (have_prev) one_pair(prev, next);
-      prev = std::move(next), have_prev = true;
+  try {
+    if (o.pairs_given) {
+      for (const auto& [a, b] : list)
+        if (more())
+          one_pair(shaped({a, load_frame(a, raw_size)}, shaping),
+                   shaped({b, load_frame(b, raw_size)}, shaping));
+    } else {
+      while (more() && sequence->next(next)) {
+        next = shaped(std::move(next), shaping);
+        if (have_prev) one_pair(prev, next);
+        prev = std::move(next), have_prev = true;
+      }
+      if (pairs == 0)
+        throw InputError(o.first + ": holds " + std::string(have_prev ? "1 frame" : "no frame") +
+                         "; a sequence needs at least 2");
     }
-    if (pairs == 0)
-      throw InputError(o.first + ": holds " + std::string(have_prev ? "1 frame" : "no frame") +
-                       "; a sequence needs at least 2");
+    // A signal that ended the source early (Ctrl-C reaches `cat ... |` too) is a stop as well.
+    stop_if_interrupted(std::to_string(pairs) + " pairs done");
+  } catch (...) {
+    if (pairs > 0) say_incomplete(pairs, {jsonl, csv});
+    throw;
   }
-  jsonl.finish();
-  csv.finish();
+  if (jsonl) jsonl->finish();
+  if (csv) csv->finish();
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
   char buf[256];
   std::snprintf(buf, sizeof buf,
@@ -263,7 +244,6 @@ int run_flow(const FlowOptions& o) {
   const BackendRow& row = find_backend(o.backend);  // unknown names fail before any work
   const BackendRow* const rows[] = {&row};
   check_device_option(rows, o.backend_options.device);
-  check_stdout_claims(o);
   FrameShaping shaping;
   if (!o.crop.empty()) parse_crop(o.crop, shaping);
   shaping.bin = o.bin;

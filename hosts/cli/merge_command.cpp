@@ -6,7 +6,7 @@
 #include "check_merge.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -37,7 +37,10 @@ ShardFile read_shard(const std::string& path) {
 
 int run_merge_command(const MergeArgs& a) {
   const bool to_stdout = a.out == "-";
-  if (!to_stdout) check_output_path("OUT", a.out, a.files);
+  OutputPlan plan;
+  plan.read_all(a.files);
+  OutputFile& out = plan.file("OUT", a.out);
+  plan.prepare();
   std::vector<ShardFile> shards;
   for (const std::string& f : a.files) shards.push_back(read_shard(f));
   CheckReport m = merge_shards(shards);
@@ -56,10 +59,7 @@ int run_merge_command(const MergeArgs& a) {
     for (const std::string& line : b.failures) human << line << "\n";
   print_check_summary(m, human);
   const std::string json = check_json(m).dump(2) + "\n";
-  if (to_stdout)
-    std::cout << json;
-  else
-    write_output_file(a.out, json);
+  out.write(json);
   return m.ok() ? 0 : 1;
 }
 

@@ -16,7 +16,7 @@
 #include "grid.hpp"
 #include "interrupt.hpp"
 #include "list_option.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
@@ -103,11 +103,15 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
     }
 }
 
+// The videos of the flow pictures, and each one's picture file.
+constexpr const char* kPictureVideos[] = {"vtest.avi", "tree.avi"};
+std::string picture_file(const std::string& video) { return "flow-" + video + ".png"; }
+
 // Flow pictures of the real sequences: first two frames of each video at full size.
-void add_pictures(ReportInputs& in, const ReportArgs& a) {
+void add_pictures(ReportInputs& in, const ReportArgs& a, ReportOutputs& out) {
   const std::string backend = a.picture_backend();
   Params p = profile("px4flow-64");
-  for (const char* video : {"vtest.avi", "tree.avi"}) {
+  for (const char* video : kPictureVideos) {
     const auto pairs = accuracy::video_pairs(a.data_dir + "/" + video, 1);
     if (pairs.empty()) continue;
     const auto& vp = pairs.front();
@@ -118,9 +122,9 @@ void add_pictures(ReportInputs& in, const ReportArgs& a) {
     std::vector<PoiRecord> records(poi_count(p));
     OpCounts counts;
     b->run({&pair, 1}, p, records, counts);
-    const std::string file = std::string("flow-") + video + ".png";
-    draw_flow(a.out_dir + "/" + file, pair.prev, p, records, estimate_flow(records, p),
-              {vp.name, backend, "px4flow-64 S=7 B=32"});
+    const std::string file = picture_file(video);
+    out.pictures.at(file)->write(flow_png(pair.prev, p, records, estimate_flow(records, p),
+                                          {vp.name, backend, "px4flow-64 S=7 B=32"}));
     in.pictures.push_back(
         {vp.name + ": POIs and vectors by status (" + backend + ", S=7, B=32), frame flow in cyan",
          file});
@@ -218,12 +222,13 @@ int run_report(const ReportArgs& a) {
                      "runs): leave it out (see pxflow report --help)");
   if (!a.check_json.empty()) in.check = read_json("--check-json", a.check_json, "check");
   if (!a.bench_json.empty()) in.bench = read_json("--bench-json", a.bench_json, "bench");
-  std::vector<std::string> inputs;
-  for (const std::string* f : {&a.check_json, &a.bench_json})
-    if (!f->empty()) inputs.push_back(*f);
-  for (const std::string& name : report_file_names())
-    check_not_an_input("--out", a.out_dir + "/" + name, inputs);
-  prepare_report_dir(a.out_dir);  // before any work: a folder that cannot be made fails first
+  OutputPlan plan;
+  plan.read_all({a.check_json, a.bench_json});
+  if (a.check_json.empty() || !a.no_accuracy) plan.read_folder("--data", a.data_dir);
+  std::vector<std::string> pictures;  // planned even with --no-accuracy: a previous report's go
+  for (const char* video : kPictureVideos) pictures.push_back(picture_file(video));
+  ReportOutputs out = plan_report(plan, a.out_dir, pictures);
+  plan.prepare();  // before any work: a folder or file that cannot be made fails first
   if (!a.check_json.empty()) {
     in.check_command = recorded_command(in.check, "check", a.check_json);
   } else {
@@ -271,9 +276,8 @@ int run_report(const ReportArgs& a) {
   if (!a.no_accuracy) add_accuracy(in, a);
   add_family_sections(in, a);
   stop_if_interrupted("the report's measurements, before any file was written");
-  remove_previous_report(a.out_dir);
-  if (!a.no_accuracy) add_pictures(in, a);
-  write_report(a.out_dir, in);
+  if (!a.no_accuracy) add_pictures(in, a, out);
+  write_report(out, in);
   std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json and CSV files\n";
   // As `pxflow check`: a failure, or a check that compared nothing, is not green.
   const bool green = in.check.value("failed", 0) == 0 && in.check.value("compared", 0) > 0;

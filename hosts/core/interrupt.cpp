@@ -24,8 +24,7 @@ int interrupt_signal() { return g_signal.load(); }
 
 void stop_if_interrupted(const std::string& done) {
   if (const int sig = interrupt_signal())
-    throw Interrupted(sig, std::string(sig == SIGINT ? "SIGINT" : "SIGTERM") + " after " + done +
-                               "; no output file was changed");
+    throw Interrupted(sig, std::string(sig == SIGINT ? "SIGINT" : "SIGTERM") + " after " + done);
 }
 
 }  // namespace pxflow

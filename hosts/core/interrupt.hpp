@@ -1,7 +1,7 @@
 // SIGINT and SIGTERM: the first one asks the run to stop at the next point where nothing is
 // half done (between check cases, bench points, report steps); a second one ends the process at
-// once. Outputs are written only when complete (io/output_file), so an interrupted run leaves the
-// previous files as they were. The CLI exits 128 + the signal (130, 143).
+// once. Whole files are written only when complete and streams keep their completed records
+// (io/output_plan); the CLI says whether any file changed, and exits 128 + the signal (130, 143).
 #pragma once
 #include <stdexcept>
 #include <string>

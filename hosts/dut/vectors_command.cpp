@@ -5,7 +5,9 @@
 // elsewhere with check's mismatch lines and exit codes.
 #include <bit>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -17,8 +19,9 @@
 #include "frame_io.hpp"
 #include "frame_sequence.hpp"
 #include "grid.hpp"
+#include "interrupt.hpp"
 #include "list_option.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 #include "synthetic.hpp"
 
 namespace pxflow::cli {
@@ -81,12 +84,20 @@ Vectors make_vectors(const VectorsArgs& a) {
       throw InputError(
           "--size applies to the raw frames of --from only (see pxflow vectors --help)");
     v.p = a.problem.resolve(std::nullopt);
-    for (int i = 0; i < a.cases; ++i)
+    for (int i = 0; i < a.cases; ++i) {
+      stop_if_interrupted(std::to_string(i) + " of " + std::to_string(a.cases) + " pairs made");
       v.pairs.push_back(random_pair(v.p.width, v.p.height, v.p.search_radius, a.seed + i));
+    }
   }
-  std::vector<FramePair> views;
-  for (const auto& op : v.pairs) views.push_back(op.view());
-  v.answer = reference_answer(views, v.p);
+  // Pair by pair, so that Ctrl-C stops within one pair.
+  for (std::size_t i = 0; i < v.pairs.size(); ++i) {
+    stop_if_interrupted(std::to_string(i) + " of " + std::to_string(v.pairs.size()) +
+                        " pairs computed");
+    const FramePair view = v.pairs[i].view();
+    ReferenceAnswer one = reference_answer({&view, 1}, v.p);
+    v.answer.records.insert(v.answer.records.end(), one.records.begin(), one.records.end());
+    v.answer.results.push_back(one.results.at(0));
+  }
   return v;
 }
 
@@ -173,7 +184,23 @@ int pxv_check_flow(uint32_t pair, uint32_t flow_x_bits, uint32_t flow_y_bits, in
 }
 )";
 
+// The files of each --format, in the order they are written.
+std::vector<std::string> vector_files(const std::string& format) {
+  if (format == "bin") return {"manifest.json", "frames.bin", "records.bin", "flow.bin"};
+  return {"manifest.json", "pxflow_vectors.h", "pxflow_vectors.c", "pxflow_vectors_check.c"};
+}
+
 int write_vectors(const VectorsArgs& a) {
+  OutputPlan plan;
+  if (!a.from.empty()) {
+    plan.read(a.from);
+    for (const auto& [prev, next] : read_pair_list(a.from)) plan.read_all({prev, next});
+  }
+  plan.make_folder("--out", a.out);
+  std::map<std::string, OutputFile*> out;
+  for (const std::string& name : vector_files(a.format))
+    out[name] = &plan.file("--out", (std::filesystem::path(a.out) / name).string());
+  plan.prepare();
   const Vectors v = make_vectors(a);
   std::string frames, flow;
   for (const auto& op : v.pairs) {
@@ -187,12 +214,11 @@ int write_vectors(const VectorsArgs& a) {
     put32(flow, static_cast<std::uint32_t>(r.meancount));
   }
   const std::string records = records_bytes(v.answer.records);
-  const std::string dir = a.out + "/";
-  write_output_file(dir + "manifest.json", manifest(v, a).dump(2) + "\n");
+  out["manifest.json"]->write(manifest(v, a).dump(2) + "\n");
   if (a.format == "bin") {
-    write_output_file(dir + "frames.bin", frames);
-    write_output_file(dir + "records.bin", records);
-    write_output_file(dir + "flow.bin", flow);
+    out["frames.bin"]->write(frames);
+    out["records.bin"]->write(records);
+    out["flow.bin"]->write(flow);
   } else {
     std::ostringstream h;
     h << "/* pxflow test vectors (pxflow vectors --format c): " << v.pairs.size() << " pairs of "
@@ -208,11 +234,11 @@ int write_vectors(const VectorsArgs& a) {
       << "long pxv_check_records(uint32_t pair, const uint8_t *records);\n"
       << "int pxv_check_flow(uint32_t pair, uint32_t flow_x_bits, uint32_t flow_y_bits, "
          "int32_t quality);\n#endif\n";
-    write_output_file(dir + "pxflow_vectors.h", h.str());
-    write_output_file(dir + "pxflow_vectors.c",
-                      "#include \"pxflow_vectors.h\"\n" + c_array("pxv_frames", frames) +
-                          c_array("pxv_records", records) + c_array("pxv_flow", flow));
-    write_output_file(dir + "pxflow_vectors_check.c", kCChecker);
+    out["pxflow_vectors.h"]->write(h.str());
+    out["pxflow_vectors.c"]->write("#include \"pxflow_vectors.h\"\n" +
+                                   c_array("pxv_frames", frames) + c_array("pxv_records", records) +
+                                   c_array("pxv_flow", flow));
+    out["pxflow_vectors_check.c"]->write(kCChecker);
   }
   std::printf("wrote %zu pairs (%dx%d, %s) to %s\n", v.pairs.size(), v.p.width, v.p.height,
               source_text(a).c_str(), a.out.c_str());
@@ -285,7 +311,7 @@ Command add_vectors_command(CLI::App& app) {
       "vectors",
       "Write test vectors (inputs, parameters, expected records and flow bits) for "
       "on-target tests; `vectors verify DIR RECORDS` checks records made elsewhere");
-  sub->add_option("--out", a->out, "Folder to write the vectors into (must exist)");
+  sub->add_option("--out", a->out, "Folder to write the vectors into (created if missing)");
   a->problem.add_to(*sub);
   CLI::Option* cases =
       sub->add_option("--cases", a->cases, "Random pairs (seeded)")->check(CLI::Range(1, 100000));
@@ -310,8 +336,6 @@ Command add_vectors_command(CLI::App& app) {
               throw InputError(
                   "vectors: --out DIR is required: the folder to write into (see "
                   "pxflow vectors --help)");
-            for (const char* f : {"manifest.json", "frames.bin"})
-              check_output_path("--out", a->out + "/" + f);
             return write_vectors(*a);
           }};
 }

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "errors.hpp"
-#include "output_file.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
 #include "report_sections.hpp"
@@ -226,8 +225,19 @@ Json section_json(const Section& s) {
           {"rows", s.rows}, {"charts", charts}, {"pictures", pictures}};
 }
 
-void write_file(const std::filesystem::path& p, const std::string& text) {
-  write_output_file(p.string(), text);
+// The files write_report() writes (the pictures aside).
+const std::vector<std::string>& report_file_names() {
+  static const std::vector<std::string> names{"report.md",   "report.html",     "results.json",
+                                              "results.csv", "conformance.csv", "accuracy.csv"};
+  return names;
+}
+
+bool is_report_folder(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) return true;
+  if (fs::is_regular_file(dir / kManifest, ec)) return true;
+  return fs::is_directory(dir, ec) && fs::is_empty(dir, ec);
 }
 
 }  // namespace
@@ -239,37 +249,45 @@ std::size_t registry_rank(const std::string& backend) {
   return rows.size();
 }
 
-const std::vector<std::string>& report_file_names() {
-  static const std::vector<std::string> names{"report.md",   "report.html",     "results.json",
-                                              "results.csv", "conformance.csv", "accuracy.csv"};
-  return names;
-}
-
-void prepare_report_dir(const std::string& out_dir) {
+ReportOutputs plan_report(OutputPlan& plan, const std::string& out_dir,
+                          const std::vector<std::string>& pictures) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec || !fs::is_directory(out_dir))
-    throw InputError("--out " + out_dir + ": cannot create the folder");
-}
-
-void remove_previous_report(const std::string& out_dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
+  if (!out_dir.empty() && !is_report_folder(out_dir))
+    throw InputError("--out " + out_dir + ": holds files and no previous pxflow report (" +
+                     kManifest +
+                     "); give a new or empty folder, so that no file of yours is replaced");
+  plan.make_folder("--out", out_dir);
+  ReportOutputs out;
+  out.dir = out_dir;
+  for (const std::string& name : report_file_names())
+    out.files[name] = &plan.file("--out", (fs::path(out_dir) / name).string());
+  out.files[kManifest] = &plan.file("--out", (fs::path(out_dir) / kManifest).string());
+  for (const std::string& name : pictures)
+    out.pictures[name] = &plan.file("--out", (fs::path(out_dir) / name).string());
   std::ifstream manifest(fs::path(out_dir) / kManifest);
+  out.previous_manifest.assign(std::istreambuf_iterator<char>(manifest), {});
+  return out;
+}
+
+namespace {
+
+// The files the previous report listed, that this one can write but did not this time (a picture
+// of a run with --no-accuracy): only names in `out`, never anything else a manifest names.
+void remove_stale_files(const ReportOutputs& out, const std::vector<std::string>& written) {
+  namespace fs = std::filesystem;
+  std::istringstream manifest(out.previous_manifest);
   for (std::string name; std::getline(manifest, name);) {
-    // Only plain file names the report itself writes: never a path, never anything else.
-    if (name.empty() || name.find('/') != std::string::npos || name == "." || name == "..")
-      continue;
-    const fs::path f = fs::path(out_dir) / name;
+    const bool ours = out.files.contains(name) || out.pictures.contains(name);
+    if (!ours || std::find(written.begin(), written.end(), name) != written.end()) continue;
+    std::error_code ec;
+    const fs::path f = fs::path(out.dir) / name;
     if (fs::is_regular_file(fs::symlink_status(f, ec))) fs::remove(f, ec);
   }
 }
 
-void write_report(const std::string& out_dir, const ReportInputs& in) {
-  std::error_code ec;
-  if (!std::filesystem::is_directory(out_dir, ec))
-    throw InputError("--out " + out_dir + ": no such folder (prepare_report_dir first)");
+}  // namespace
+
+void write_report(ReportOutputs& out, const ReportInputs& in) {
   const Json build = build_provenance();
   const Json machine = machine_provenance();
   std::vector<Section> secs{report::provenance(in, build, machine), report::backends_section(in)};
@@ -312,26 +330,27 @@ void write_report(const std::string& out_dir, const ReportInputs& in) {
   results["commands"] = commands;
   results["sections"] = Json::array();
   for (const auto& s : secs) results["sections"].push_back(section_json(s));
-  const std::filesystem::path dir(out_dir);
-  write_file(dir / "report.md", render_md(secs));
-  write_file(dir / "report.html", render_html(secs, dir));
-  write_file(dir / "results.json", results.dump(2) + "\n");
-  write_file(dir / "results.csv", bench_csv(in.bench));
-  write_file(
-      dir / "conformance.csv",
+  const std::filesystem::path dir(out.dir);
+  out.files["report.md"]->write(render_md(secs));
+  out.files["report.html"]->write(render_html(secs, dir));
+  out.files["results.json"]->write(results.dump(2) + "\n");
+  out.files["results.csv"]->write(bench_csv(in.bench));
+  out.files["conformance.csv"]->write(
       csv({"name", "state", "passed", "failed", "not_applicable", "pairs", "seconds", "reason"},
           in.check.is_null() ? std::vector<const Json*>{}
                              : sorted_by_rank(in.check["backends"], "name")));
   std::vector<const Json*> accuracy_rows;
   for (const auto& r : in.accuracy_rows) accuracy_rows.push_back(&r);
-  write_file(dir / "accuracy.csv",
-             csv({"set", "setting", "against", "method", "frames", "with_flow", "mean_error_px",
-                  "p95_error_px", "median_us_per_frame"},
-                 accuracy_rows));
+  out.files["accuracy.csv"]->write(
+      csv({"set", "setting", "against", "method", "frames", "with_flow", "mean_error_px",
+           "p95_error_px", "median_us_per_frame"},
+          accuracy_rows));
+  std::vector<std::string> written = report_file_names();
+  for (const auto& p : in.pictures) written.push_back(p.file);
   std::string manifest;
-  for (const auto& name : report_file_names()) manifest += name + "\n";
-  for (const auto& p : in.pictures) manifest += p.file + "\n";
-  write_file(dir / kManifest, manifest);
+  for (const auto& name : written) manifest += name + "\n";
+  out.files[kManifest]->write(manifest);
+  remove_stale_files(out, written);
 }
 
 }  // namespace pxflow

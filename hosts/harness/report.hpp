@@ -2,9 +2,11 @@
 // report.html (inline SVG charts), results.json (docs/report-schema.md: everything the page
 // shows) and CSV files. Provenance comes first; every figure names its command and clock.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
+#include "output_plan.hpp"
 #include "result_json.hpp"
 #include "svg_chart.hpp"
 
@@ -46,19 +48,24 @@ struct ReportInputs {
   std::vector<Section> sections;
 };
 
-// Creates out_dir if needed (InputError when it cannot): called before any work.
-void prepare_report_dir(const std::string& out_dir);
+// The report's files in its folder, planned before any work.
+struct ReportOutputs {
+  std::string dir;
+  std::map<std::string, OutputFile*> files;     // by file name: report_file_names() and more
+  std::map<std::string, OutputFile*> pictures;  // by file name, written by the caller
+  std::string previous_manifest;                // of the report the folder holds, if any
+};
 
-// Removes the files a previous report wrote into out_dir, as its manifest (.pxflow-report) lists
-// them, and nothing else: called after all the work, just before the new files are written, so
-// that an interrupted or failed run leaves the previous report intact.
-void remove_previous_report(const std::string& out_dir);
+// Plans the report's folder `out_dir` in `plan`: it must be missing (it is created), empty, or
+// a previous pxflow report (it holds a .pxflow-report manifest); anything else is refused, so
+// that a user's own files are never touched. `pictures`: the file names the caller may write.
+ReportOutputs plan_report(OutputPlan& plan, const std::string& out_dir,
+                          const std::vector<std::string>& pictures);
 
-// The files write_report() writes (the pictures aside), for the manifest and the --out checks.
-const std::vector<std::string>& report_file_names();
-
-// Writes the report's files into out_dir, then the manifest listing them and the pictures.
-void write_report(const std::string& out_dir, const ReportInputs& in);
+// Writes the report's files, then the manifest listing them and the pictures written; last, it
+// removes the files the previous report listed that this one did not write, and only names this
+// report can write (a hand-edited manifest cannot delete anything else).
+void write_report(ReportOutputs& out, const ReportInputs& in);
 
 // Position of a backend in the registry (backend_rows()); names this build does not have (a
 // results file of another build) come after every row. Every table and chart sorts by it.

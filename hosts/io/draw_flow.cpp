@@ -9,7 +9,7 @@
 #include "errors.hpp"
 #include "grid.hpp"
 #include "opencv_module.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 
 namespace pxflow {
 namespace {
@@ -45,19 +45,17 @@ Layout layout(const Params& p, std::span<const PoiRecord> records) {
 
 }  // namespace
 
-void check_draw_path(const std::string& path, std::span<const std::string> inputs) {
-  if (path.empty()) check_output_path("--draw", path);  // "needs a file name"
+void check_png_name(const std::string& option, const std::string& path) {
+  if (path.empty()) throw InputError(option + " needs a file name (got an empty one)");
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char ch) { return std::tolower(ch); });
   if (ext != ".png")
-    throw InputError("--draw " + path + ": the picture is written as PNG; name it *.png");
-  check_output_path("--draw", path, inputs);
+    throw InputError(option + " " + path + ": the picture is written as PNG; name it *.png");
 }
 
-void draw_flow(const std::string& path, const FrameView& prev, const Params& p,
-               std::span<const PoiRecord> records, const FrameResult& result,
-               const DrawCaption& caption) {
+std::string flow_png(const FrameView& prev, const Params& p, std::span<const PoiRecord> records,
+                     const FrameResult& result, const DrawCaption& caption) {
   const Layout l = layout(p, records);
   const opencv::FlowPicture picture{prev,           records,         result,
                                     l.scale,        l.gain,          l.flow_gain,
@@ -65,8 +63,8 @@ void draw_flow(const std::string& path, const FrameView& prev, const Params& p,
   std::vector<std::uint8_t> png;
   std::string error;
   opencv_api().draw_flow_png(picture, png, error);
-  if (!error.empty()) throw OutputError("--draw " + path + ": " + error);
-  write_output_file(path, {reinterpret_cast<const char*>(png.data()), png.size()});
+  if (!error.empty()) throw OutputError("cannot draw the picture: " + error);
+  return {reinterpret_cast<const char*>(png.data()), png.size()};
 }
 
 }  // namespace pxflow

@@ -10,8 +10,8 @@
 
 namespace pxflow {
 
-// Throws InputError unless `path` ends in .png and its folder exists: checked before any work.
-void check_draw_path(const std::string& path, std::span<const std::string> inputs = {});
+// Throws InputError unless `path` ends in .png: checked before any work.
+void check_png_name(const std::string& option, const std::string& path);
 
 struct DrawCaption {
   std::string frames;   // e.g. "rubberwhale1.png -> rubberwhale2.png"
@@ -19,9 +19,8 @@ struct DrawCaption {
   std::string profile;  // e.g. "px4flow-64"
 };
 
-// Writes the picture as PNG; throws InputError when it cannot be written.
-void draw_flow(const std::string& path, const FrameView& prev, const Params& p,
-               std::span<const PoiRecord> records, const FrameResult& result,
-               const DrawCaption& caption);
+// The picture as PNG bytes, for an OutputFile or OutputFolder to write.
+std::string flow_png(const FrameView& prev, const Params& p, std::span<const PoiRecord> records,
+                     const FrameResult& result, const DrawCaption& caption);
 
 }  // namespace pxflow

@@ -244,16 +244,3 @@ TEST_CASE("commands that decode nothing run without the OpenCV module", "[cli][s
   CHECK(fake.err_lines() == 1);
   CHECK(fake.err.find("fake.so cannot be loaded") != std::string::npos);
 }
-
-TEST_CASE("SIGINT during a sequence leaves the previous --jsonl file intact", "[cli][sequence]") {
-  TempDir dir;
-  dir.write("out.jsonl", "previous\n");
-  // The whole of vtest.avi (795 frames) takes seconds; the signal comes after half a second.
-  const auto r = run_program(
-      "/bin/sh",
-      {"-c", std::string(PXFLOW_BINARY) + " flow --jsonl " + dir.path("out.jsonl") + " " + kData +
-                 "/vtest.avi > /dev/null & sleep 0.5; kill -INT $!; wait $!"});
-  CHECK(r.exit_code == 130);
-  CHECK(r.err.find("pairs done; no output file was changed") != std::string::npos);
-  CHECK(pxflow::test::slurp(dir.path("out.jsonl")) == "previous\n");
-}

@@ -11,7 +11,7 @@
 #include "gap8_cli.hpp"
 #include "gap8_flow_runner.hpp"
 #include "gap8_study.hpp"
-#include "output_file.hpp"
+#include "output_plan.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -65,7 +65,10 @@ std::vector<Gap8Variant> parse_variants(const std::string& v) {
 }
 
 int run_gap8(const Gap8Options& o) {
-  if (!o.json_path.empty()) check_output_path("--json", o.json_path, o.frames);
+  OutputPlan plan;
+  plan.read_all(o.frames);
+  OutputFile* const json_file = o.json_path.empty() ? nullptr : &plan.file("--json", o.json_path);
+  plan.prepare();
   gap8_study::Options options;
   options.variants = parse_variants(o.variant);
   options.cores = parse_cores(o.cores);
@@ -108,8 +111,7 @@ int run_gap8(const Gap8Options& o) {
   const gap8_study::Study study = gap8_study::run_study(pair, frames.name, p, options);
   // `--json -` puts the JSON alone on standard output, so that it can be piped.
   if (o.json_path != kStdoutPath) gap8_study::print_tables(study);
-  if (!o.json_path.empty())
-    write_output_file(o.json_path, gap8_study::to_json(study).dump(2) + "\n");
+  if (json_file) json_file->write(gap8_study::to_json(study).dump(2) + "\n");
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include "frame_ops.hpp"
 #include "gap8_backend.hpp"
 #include "grid.hpp"
+#include "interrupt.hpp"
 #include "kernel.hpp"
 #include "sample_data.hpp"
 
@@ -74,8 +75,13 @@ Study run_study(const FramePair& pair, const std::string& pair_name, const Param
     options.cores.insert(options.cores.begin(), 1);
   std::sort(options.cores.begin(), options.cores.end());
   Study s{options, pair_name, {}};
+  std::size_t done = 0;
+  const std::size_t runs = options.variants.size() * options.cores.size();
   for (Gap8Variant v : options.variants)
-    for (int c : options.cores) s.results[v][c] = measure(v, c, pair, p, options);
+    for (int c : options.cores) {
+      stop_if_interrupted(std::to_string(done++) + " of " + std::to_string(runs) + " model runs");
+      s.results[v][c] = measure(v, c, pair, p, options);
+    }
   return s;
 }
 
