@@ -1,7 +1,6 @@
 #include "dut_test_util.hpp"
 
 #include <dirent.h>
-#include <fcntl.h>
 #include <limits.h>
 #include <poll.h>
 #include <signal.h>
@@ -127,20 +126,7 @@ bool process_ended(pid_t pid) {
 }
 
 pid_t spawn_quiet_pxflow(const std::vector<std::string>& args) {
-  std::vector<std::string> copy = {PXFLOW_BINARY};
-  copy.insert(copy.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : copy) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) throw std::runtime_error("cannot start " + copy[0]);
-  return pid;
+  return start_program(PXFLOW_BINARY, args, "/dev/null", "/dev/null");
 }
 
 }  // namespace pxflow::test
