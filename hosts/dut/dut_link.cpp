@@ -10,14 +10,11 @@
 #include <sys/wait.h>
 #include <termios.h>
 #include <unistd.h>
-#ifdef __linux__
-#include <sys/prctl.h>
-#endif
 
 #include <cerrno>
 #include <cstring>
-#include <thread>
 
+#include "guarded_child.hpp"
 #include "interrupt.hpp"
 
 namespace pxflow::dut {
@@ -98,91 +95,54 @@ class FdLink : public Link {
 
 class ExecLink : public FdLink {
  public:
-  ExecLink(int in, int out, pid_t pid, std::string command)
+  // `in` and `out` are pxflow's ends of the pipes whose other ends `child` got.
+  ExecLink(int in, int out, std::unique_ptr<GuardedChild> child, std::string command)
       : FdLink(in, out,
                "does the program write only protocol frames to its stdout? (anything else goes "
                "to stderr)"),
-        pid_(pid),
+        child_(std::move(child)),
         command_(std::move(command)) {}
   ~ExecLink() override {
     close_fds();  // the device sees the end of its input and may exit by itself
-    for (int i = 0; i < 20 && !reaped_; ++i) {
-      reap(WNOHANG);
-      if (!reaped_) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    kill(-pid_, SIGKILL);  // the group: whatever the command started goes too
-    if (!reaped_) reap(0);
+    child_->exited(std::chrono::milliseconds(1000));
+    child_->stop();  // the group: whatever the command started goes too
   }
 
  protected:
   std::string closed_reason(const std::string& what) override {
-    for (int i = 0; i < 10 && !reaped_; ++i) {  // it usually exits right after closing
-      reap(WNOHANG);
-      if (!reaped_) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    if (!reaped_) return what + " (" + command_ + " still runs)";
-    if (WIFEXITED(status_))
-      return command_ + " exited with status " + std::to_string(WEXITSTATUS(status_));
-    return command_ + " was killed by signal " + std::to_string(WTERMSIG(status_));
+    // It usually exits right after closing.
+    if (!child_->exited(std::chrono::milliseconds(200)))
+      return what + " (" + command_ + " still runs)";
+    const int status = child_->status();
+    if (WIFEXITED(status))
+      return command_ + " exited with status " + std::to_string(WEXITSTATUS(status));
+    return command_ + " was killed by signal " + std::to_string(WTERMSIG(status));
   }
 
  private:
-  void reap(int flags) {
-    int st = 0;
-    pid_t r;
-    do r = waitpid(pid_, &st, flags);
-    while (r < 0 && errno == EINTR);
-    if (r == pid_ || (r < 0 && errno == ECHILD)) reaped_ = true, status_ = st;
-  }
-  pid_t pid_;
+  std::unique_ptr<GuardedChild> child_;
   std::string command_;
-  bool reaped_ = false;
-  int status_ = 0;
 };
 
 }  // namespace
 
 std::unique_ptr<Link> open_exec_link(const std::vector<std::string>& args) {
-  signal(SIGPIPE, SIG_IGN);  // a device that exits is a write error, not the end of pxflow
-  int to_child[2], from_child[2], exec_errno[2];
+  int to_child[2], from_child[2];
   if (pipe2(to_child, O_CLOEXEC) != 0) throw LinkError(os_error("pipe"));
-  if (pipe2(from_child, O_CLOEXEC) != 0 || pipe2(exec_errno, O_CLOEXEC) != 0) {
+  if (pipe2(from_child, O_CLOEXEC) != 0) {
     ::close(to_child[0]), ::close(to_child[1]);
     throw LinkError(os_error("pipe"));
   }
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  const pid_t parent = getpid();
-  const pid_t pid = fork();
-  if (pid < 0) throw LinkError(os_error("fork"));
-  if (pid == 0) {
-    setpgid(0, 0);  // Ctrl-C goes to pxflow, which stops the device itself
-#ifdef __linux__
-    prctl(PR_SET_PDEATHSIG, SIGKILL);  // no orphan even when pxflow is killed
-    if (getppid() != parent) _exit(127);
-#endif
-    dup2(to_child[0], 0);
-    dup2(from_child[1], 1);
-    signal(SIGPIPE, SIG_DFL);
-    execvp(argv[0], argv.data());
-    const int e = errno;
-    (void)!::write(exec_errno[1], &e, sizeof e);
-    _exit(127);
+  std::unique_ptr<GuardedChild> child;
+  try {
+    child = std::make_unique<GuardedChild>(args, to_child[0], from_child[1]);
+  } catch (const SpawnError& e) {
+    for (const int fd : {to_child[0], to_child[1], from_child[0], from_child[1]}) ::close(fd);
+    throw LinkError(e.what());
   }
-  setpgid(pid, pid);
   ::close(to_child[0]);
   ::close(from_child[1]);
-  ::close(exec_errno[1]);
-  int e = 0;
-  ssize_t n;
-  do n = ::read(exec_errno[0], &e, sizeof e);  // closed by a successful exec
-  while (n < 0 && errno == EINTR);
-  ::close(exec_errno[0]);
-  auto link = std::make_unique<ExecLink>(from_child[0], to_child[1], pid, args[0]);
-  if (n == static_cast<ssize_t>(sizeof e))
-    throw LinkError("cannot start " + args[0] + ": " + std::strerror(e));
-  return link;
+  return std::make_unique<ExecLink>(from_child[0], to_child[1], std::move(child), args[0]);
 }
 
 std::unique_ptr<Link> open_tcp_link(const std::string& host, const std::string& port,

@@ -32,8 +32,9 @@ class Link {
   virtual std::string garbage_hint() const = 0;
 };
 
-// exec: COMMAND split at blanks, no shell; its own process group; stopped and reaped by the
-// destructor (stdin closed, SIGKILL to the group after `grace`).
+// exec: COMMAND split at blanks, no shell, started as a GuardedChild (hosts/core/guarded_child.hpp:
+// its whole process group ends with pxflow, however pxflow ends); stopped and reaped by the
+// destructor (stdin closed, a second to exit by itself, then SIGKILL to the group).
 std::unique_ptr<Link> open_exec_link(const std::vector<std::string>& argv);
 std::unique_ptr<Link> open_tcp_link(const std::string& host, const std::string& port,
                                     Clock::time_point deadline);

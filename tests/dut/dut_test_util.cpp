@@ -1,6 +1,7 @@
 #include "dut_test_util.hpp"
 
 #include <dirent.h>
+#include <limits.h>
 #include <poll.h>
 #include <signal.h>
 #include <spawn.h>
@@ -81,17 +82,51 @@ std::string unique_word() {
   return "dut-test-" + std::to_string(getpid()) + "-" + std::to_string(n++);
 }
 
-bool process_with_word(const std::string& word, pid_t except) {
+namespace {
+
+// Whether a process other than `except` has `word` in its command line and is accepted by
+// `wanted` (given its /proc folder).
+template <typename Wanted>
+bool process_with_word_where(const std::string& word, pid_t except, Wanted wanted) {
   DIR* d = opendir("/proc");
   if (!d) return false;
   bool found = false;
   while (dirent* e = readdir(d)) {
     if (e->d_name[0] < '0' || e->d_name[0] > '9' || std::atoi(e->d_name) == except) continue;
-    const std::string cmd = slurp(std::string("/proc/") + e->d_name + "/cmdline");
-    if (cmd.find(word) != std::string::npos) found = true;
+    const std::string dir = std::string("/proc/") + e->d_name;
+    if (slurp(dir + "/cmdline").find(word) != std::string::npos && wanted(dir)) found = true;
   }
   closedir(d);
   return found;
+}
+
+std::string exe_of(const std::string& proc_dir) {
+  char buf[4096];
+  const ssize_t n = readlink((proc_dir + "/exe").c_str(), buf, sizeof buf);
+  return n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : std::string();
+}
+
+}  // namespace
+
+bool process_with_word(const std::string& word, pid_t except) {
+  return process_with_word_where(word, except, [](const std::string&) { return true; });
+}
+
+bool device_with_word(const std::string& word) {
+  char pxflow[PATH_MAX];
+  const std::string self = realpath(PXFLOW_BINARY, pxflow) ? pxflow : PXFLOW_BINARY;
+  return process_with_word_where(word, -1,
+                                 [&](const std::string& dir) { return exe_of(dir) != self; });
+}
+
+bool process_ended(pid_t pid) {
+  const std::string stat = slurp("/proc/" + std::to_string(pid) + "/stat");
+  const auto paren = stat.rfind(')');  // "PID (COMM) STATE ...": COMM may hold anything
+  return paren == std::string::npos || stat.compare(paren + 1, 2, " Z") == 0;
+}
+
+pid_t spawn_quiet_pxflow(const std::vector<std::string>& args) {
+  return start_program(PXFLOW_BINARY, args, "/dev/null", "/dev/null");
 }
 
 }  // namespace pxflow::test

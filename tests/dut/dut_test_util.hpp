@@ -38,5 +38,12 @@ std::string unique_word();
 // Whether a process whose command line contains `word` exists (an orphan of a finished run),
 // other than `except` (pxflow itself, whose --dut argument holds the word too).
 bool process_with_word(const std::string& word, pid_t except = -1);
+// Whether a process whose command line contains `word` runs another program than pxflow: the
+// device, not pxflow or its guardian (a fork of pxflow: hosts/core/guarded_child.hpp).
+bool device_with_word(const std::string& word);
+// Whether process `pid` has ended (gone, or a zombie nobody reaped yet).
+bool process_ended(pid_t pid);
+// pxflow started with `args`, its output thrown away; its pid, for the caller to signal and reap.
+pid_t spawn_quiet_pxflow(const std::vector<std::string>& args);
 
 }  // namespace pxflow::test

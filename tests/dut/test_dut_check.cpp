@@ -1,9 +1,11 @@
-// The reference device through every transport, the small (20 KiB) device, the --dut spec's
-// errors, and a report of a --dut row, by running pxflow as a user does.
+// The reference device through every transport and across two runs, the small (20 KiB) device,
+// the --dut spec's errors, and a report of a --dut row, by running pxflow as a user does.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "dut_session.hpp"
 #include "dut_test_util.hpp"
+#include "params.hpp"
 
 using namespace pxflow::test;
 
@@ -38,6 +40,29 @@ TEST_CASE("the reference device passes over serial: on a pseudo-terminal", "[dut
   BesideDevice dev({DUT_REF, "--pty"});
   REQUIRE_THAT(dev.first_line(), Catch::StartsWith("/dev/"));
   const auto t = timed_pxflow(check_args("d=serial:" + dev.first_line() + ",115200"));
+  INFO(t.r.out << t.r.err);
+  CHECK(t.r.exit_code == 0);
+  CHECK_THAT(t.r.out, Catch::Contains("1 passed, 0 failed"));
+}
+
+TEST_CASE("a device that keeps its last request passes a second run after one ending on seq 0",
+          "[dut]") {
+  // A board on a serial line outlives pxflow's runs and remembers its last request (section 2's
+  // resend rule). The first run here ends on seq 0: HELLO and 256 PARAMS, the last with seq
+  // 256 mod 256. The second run starts with HELLO at seq 0 too: a device that took a request
+  // with the last one's seq for a resend (neither the rule's "same bytes" nor its "HELLO is
+  // never a repeat") sends the stored ACK again, and the second run fails ("HELLO: answered
+  // with ACK"; checked by hand with the engine's test cut down to the seq).
+  BesideDevice dev({DUT_REF, "--pty"});
+  REQUIRE_THAT(dev.first_line(), Catch::StartsWith("/dev/"));
+  {
+    pxflow::dut::Session first("first run", pxflow::dut::open_serial_link(dev.first_line(), 115200),
+                               std::chrono::seconds(30));
+    first.hello();
+    const auto params = pxflow::dut::params_body(pxflow::profile("px4flow-64"));
+    for (int i = 0; i < 256; ++i) first.exchange(pxflow::dut::kParams, params, pxflow::dut::kAck);
+  }
+  const auto t = timed_pxflow(check_args("d=serial:" + dev.first_line() + ",115200", "8"));
   INFO(t.r.out << t.r.err);
   CHECK(t.r.exit_code == 0);
   CHECK_THAT(t.r.out, Catch::Contains("1 passed, 0 failed"));

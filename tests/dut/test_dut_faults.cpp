@@ -2,9 +2,7 @@
 // absorbs (resend) passes; every other one is a failure line naming the device and the message,
 // exit 1, after the allowance --device-timeout sets; no device process outlives the run. A slow
 // device that keeps sending keepalives is not hung.
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,8 +11,6 @@
 #include <thread>
 
 #include "dut_test_util.hpp"
-
-extern char** environ;
 
 using namespace pxflow::test;
 
@@ -174,34 +170,28 @@ TEST_CASE("a wrong field is the usual mismatch line, a wrong estimate names both
   expect_failed(run_fault("wrong-estimate"), "the device's estimate of pair 0");
 }
 
+namespace {
+
+// pxflow checking the device `exec` (a --dut value, holding `word`), which answers its first RUN
+// ten minutes late, with 300 s allowed per attempt: its pid once the device runs and pxflow is
+// waiting in that RUN.
+pid_t pxflow_waiting_on(const std::string& exec, const std::string& word) {
+  const pid_t pid = spawn_quiet_pxflow({"check", "--dut", "f=exec:" + exec, "--device-timeout",
+                                        "300", "--backends", "ref-original,f", "--cases",
+                                        "300"});  // two cases: the second sees the signal
+  // Until the device runs (pxflow starts slowly on a loaded machine), then into its RUN.
+  for (int i = 0; i < 6000 && !device_with_word(word); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  REQUIRE(device_with_word(word));
+  std::this_thread::sleep_for(std::chrono::milliseconds(800));
+  return pid;
+}
+
+}  // namespace
+
 TEST_CASE("Ctrl-C stops pxflow and its device at once", "[dut][faults]") {
   const std::string word = unique_word();
-  std::vector<std::string> args = {PXFLOW_BINARY,
-                                   "check",
-                                   "--dut",
-                                   std::string("f=exec:") + DUT_FAULTY + " late 600000 " + word,
-                                   "--device-timeout",
-                                   "300",
-                                   "--backends",
-                                   "ref-original,f",
-                                   "--cases",
-                                   "300"};  // two cases: the second sees the signal
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  REQUIRE(posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ) == 0);
-  posix_spawn_file_actions_destroy(&fa);
-  // Until the device runs (pxflow starts slowly on a loaded machine), then into the RUN it
-  // answers ten minutes late, with 300 s allowed per attempt.
-  for (int i = 0; i < 6000 && !process_with_word(word, pid); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  REQUIRE(process_with_word(word, pid));
-  std::this_thread::sleep_for(std::chrono::milliseconds(800));
+  const pid_t pid = pxflow_waiting_on(std::string(DUT_FAULTY) + " late 600000 " + word, word);
   const auto t0 = std::chrono::steady_clock::now();
   kill(pid, SIGINT);
   int status = 0;
@@ -212,5 +202,47 @@ TEST_CASE("Ctrl-C stops pxflow and its device at once", "[dut][faults]") {
   CHECK(s < 60.0);
   CHECK(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 130);
+  CHECK_FALSE(process_with_word(word));
+}
+
+TEST_CASE("no device is left behind a wrapper when pxflow is killed with SIGKILL",
+          "[dut][faults]") {
+  // The wrapper a porter may write: the device runs as a child of a subshell (not exec), two
+  // levels below the process pxflow started; each level writes its pid into a file.
+  const TempDir dir;
+  dir.write("wrapper.sh",
+            "#!/bin/sh\n"
+            "dir=$1; shift\n"
+            "echo $$ > \"$dir/wrapper\"\n"
+            "exec 3<&0\n"  // a background job's stdin would be /dev/null
+            "(\n"
+            "  \"$@\" <&3 3<&- &\n"
+            "  echo $! > \"$dir/device\"\n"
+            "  wait\n"
+            ") &\n"
+            "echo $! > \"$dir/subshell\"\n"
+            "wait\n");
+  const std::string word = unique_word();
+  const pid_t pid = pxflow_waiting_on("/bin/sh " + dir.path("wrapper.sh") + " " + dir.path(".") +
+                                          " " + DUT_FAULTY + " late 600000 " + word,
+                                      word);
+  std::vector<pid_t> started;
+  for (const char* level : {"wrapper", "subshell", "device"}) {
+    for (int i = 0; i < 600 && slurp(dir.path(level)).empty(); ++i)  // written as it started
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    started.push_back(std::stoi(slurp(dir.path(level))));
+  }
+  for (const pid_t p : started) REQUIRE_FALSE(process_ended(p));
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  // A hang guard, not a speed bound: everything is gone within moments; a survivor would never go.
+  const auto all_ended = [&] {
+    for (const pid_t p : started)
+      if (!process_ended(p)) return false;
+    return !process_with_word(word);  // pxflow's guardian too
+  };
+  for (int i = 0; i < 600 && !all_ended(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  for (const pid_t p : started) CHECK(process_ended(p));
   CHECK_FALSE(process_with_word(word));
 }

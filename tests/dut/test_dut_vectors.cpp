@@ -1,7 +1,10 @@
 // pxflow vectors: the same bytes for a seed on every run, and `vectors verify` catching a
 // one-bit flip with check's mismatch line (exit 1), a file of the wrong size (exit 2); --from a
-// list of real pairs.
+// list of real pairs; the protocol page lists manifest.json's keys as they are.
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
 
 #include "run_program.hpp"
 
@@ -22,6 +25,36 @@ TEST_CASE("pxflow vectors writes the same bytes for a seed", "[dut][vectors]") {
   }
   CHECK(slurp(a.path("records.bin")).size() == 6u * 25u * 32u);  // px4flow-head: 25 POIs
   CHECK(slurp(a.path("frames.bin")).size() == 6u * 2u * 64u * 64u);
+}
+
+namespace {
+
+// Every key of every object in `j`, at any depth.
+void collect_keys(const nlohmann::json& j, std::set<std::string>& keys) {
+  if (j.is_object())
+    for (const auto& [key, value] : j.items()) keys.insert(key), collect_keys(value, keys);
+  else if (j.is_array())
+    for (const auto& value : j) collect_keys(value, keys);
+}
+
+}  // namespace
+
+TEST_CASE("the protocol page names every key of manifest.json", "[dut][vectors]") {
+  TempDir d;
+  REQUIRE(run_pxflow({"vectors", "--out", d.path(""), "--cases", "2"}).exit_code == 0);
+  std::set<std::string> written;
+  collect_keys(nlohmann::json::parse(slurp(d.path("manifest.json"))), written);
+  written.insert("from");  // in place of `seed` with --from (the last test case)
+  // Section 9's bullet on manifest.json: every `word` of lower-case letters and '_' is a key.
+  const std::string page = slurp(PROTOCOL_PAGE);
+  const auto at = page.find("- `manifest.json`:");
+  REQUIRE(at != std::string::npos);
+  const std::string bullet = page.substr(at, page.find("\n- `", at + 1) - at);
+  std::set<std::string> named;
+  const std::regex word("`([a-z_]+)`");
+  for (std::sregex_iterator m(bullet.begin(), bullet.end(), word), end; m != end; ++m)
+    named.insert((*m)[1]);
+  CHECK(named == written);
 }
 
 TEST_CASE("pxflow vectors verify catches a one-bit flip and a wrong size", "[dut][vectors]") {

@@ -1,5 +1,7 @@
 // Runs a program as a user would and captures its exit code, stdout and stderr.
 #pragma once
+#include <sys/types.h>
+
 #include <string>
 #include <vector>
 
@@ -17,6 +19,12 @@ RunResult run_program(const std::string& binary, const std::vector<std::string>&
 // and its exit_code is -2. `seconds` receives how long it ran.
 RunResult run_program_within(const std::string& binary, const std::vector<std::string>& args,
                              double limit_seconds, double& seconds);
+
+// Starts a program with stdin from /dev/null and stdout, stderr into the files `out`, `err`
+// (created or truncated; "/dev/null" to drop them), without waiting: its pid, for the caller to
+// signal and reap.
+pid_t start_program(const std::string& binary, const std::vector<std::string>& args,
+                    const std::string& out, const std::string& err);
 
 // The whole file (empty when it cannot be read).
 std::string slurp(const std::string& path);

@@ -1,0 +1,49 @@
+// The one way pxflow starts a child process (an exec: device, QEMU for m4-qemu): the child runs
+// in a process group of its own, watched by a guardian process that kills that whole group when
+// pxflow ends, however it ends (SIGKILL included). So nothing a wrapper script or a forked child
+// started outlives pxflow; only a program that leaves the group itself (setsid, setpgid) escapes
+// (docs/dut-protocol.md, "exec:").
+#pragma once
+#include <sys/types.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pxflow {
+
+// The child could not be started: "cannot start PROGRAM: why".
+struct SpawnError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class GuardedChild {
+ public:
+  // Starts argv (argv[0] searched in PATH, no shell) with `stdin_fd` as its standard input and
+  // `stdout_fd` as its standard output; its standard error is pxflow's. The caller keeps (and
+  // closes) both descriptors. pxflow ignores SIGPIPE from then on: writing to a child that ended
+  // is an error to report, not the end of pxflow.
+  GuardedChild(const std::vector<std::string>& argv, int stdin_fd, int stdout_fd);
+  ~GuardedChild() { stop(); }
+  GuardedChild(const GuardedChild&) = delete;
+  GuardedChild& operator=(const GuardedChild&) = delete;
+
+  // Whether the child has exited, waiting up to `wait` for it; reaps it when it has.
+  bool exited(std::chrono::milliseconds wait);
+  // Its wait status (waitpid's), once exited() said true.
+  int status() const { return status_; }
+  // Kills the child's process group (SIGKILL), reaps the child, releases the guardian. Safe to
+  // call twice.
+  void stop();
+
+ private:
+  void reap(int flags);
+  pid_t pid_ = -1;
+  pid_t guardian_ = -1;
+  int lifeline_ = -1;  // the one write end of the guardian's pipe: its EOF means pxflow is gone
+  bool reaped_ = false;
+  int status_ = 0;
+};
+
+}  // namespace pxflow
