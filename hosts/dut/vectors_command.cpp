@@ -17,6 +17,7 @@
 #include "frame_io.hpp"
 #include "frame_sequence.hpp"
 #include "grid.hpp"
+#include "input_file.hpp"
 #include "list_option.hpp"
 #include "output_file.hpp"
 #include "synthetic.hpp"
@@ -50,7 +51,7 @@ struct Vectors {
 
 // The pairs of a --from list (frames a user chose: real frames, a regression), all one size.
 std::vector<OwnedPair> pairs_from_list(const VectorsArgs& a) {
-  const auto list = read_pair_list(a.from);
+  const auto list = read_pair_list("--from", a.from);
   if (list.empty()) throw InputError("--from " + a.from + ": no pairs in the list");
   std::optional<FrameSize> raw;
   if (!a.size.empty()) raw = parse_frame_size(a.size);
@@ -220,11 +221,7 @@ int write_vectors(const VectorsArgs& a) {
 }
 
 std::string read_file(const std::string& path, const char* what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(std::string(what) + ": " + path + ": cannot be read");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return read_input_text(std::string(what) + ": " + path, path);
 }
 
 int verify_vectors(const VectorsArgs& a) {
