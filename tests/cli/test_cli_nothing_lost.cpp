@@ -109,7 +109,7 @@ TEST_CASE("report: wrong or malformed results files are refused before any work"
                      dir.path("b.json")},
                     "malformed check file");
   require_bad_input({"report", "--out", dir.path(""), "--check-json", dir.path("results.json")},
-                    "cannot open");
+                    "results.json: no such file");
   CHECK(test::run_program("/bin/ls", {out}).exit_code != 0);  // nothing was made
 }
 
