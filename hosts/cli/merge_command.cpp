@@ -17,7 +17,12 @@ struct MergeArgs {
 };
 
 ShardFile read_shard(const std::string& path) {
-  const std::string text = read_input_text(path, path);
+  std::string text;
+  try {
+    text = read_input_text(path, path);
+  } catch (const InputError& e) {  // every refusal points at the help, as the ones below
+    throw InputError(std::string(e.what()) + " (see pxflow merge --help)");
+  }
   Json j;
   try {
     j = Json::parse(text);
