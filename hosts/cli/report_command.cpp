@@ -1,7 +1,6 @@
 // pxflow report: runs (or reads) check and bench results and writes the report files.
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <set>
 

@@ -5,7 +5,6 @@
 // elsewhere with check's mismatch lines and exit codes.
 #include <bit>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 

@@ -172,7 +172,8 @@ std::vector<std::pair<std::string, std::string>> read_pair_list(const std::strin
                                                                 const std::string& path) {
   const std::string label = option + " " + path;
   std::istringstream in(read_input_text(label, path));
-  const fs::path dir = fs::path(path).parent_path();
+  // A list through a pipe (--pairs <(...)) has no folder of its own: its paths are the shell's.
+  const fs::path dir = is_stream(path) ? fs::path() : fs::path(path).parent_path();
   auto resolve = [&](const std::string& p) {
     return fs::path(p).is_absolute() || dir.empty() ? p : (dir / p).string();
   };

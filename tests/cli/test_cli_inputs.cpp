@@ -80,6 +80,12 @@ TEST_CASE("a pipe is an input like the file it carries", "[cli][inputs]") {
   INFO(seq.err);
   CHECK(seq.exit_code == 0);
   CHECK(std::count(seq.out.begin(), seq.out.end(), '\n') == 2);
+  // A list of pairs through a pipe: its relative paths are the shell's, from the working folder.
+  const auto list = bash("cd " + shell_quoted(f.dir.path("")) + " && " + pxflow +
+                         " flow --size 32x32 --jsonl - --pairs <(echo a.raw b.raw)");
+  INFO(list.err);
+  REQUIRE(list.exit_code == 0);
+  CHECK(estimate(list.out) == estimate(files.out));
   const auto stdin_seq = bash("cat " + shell_quoted(f.a) + " " + shell_quoted(f.b) + " | " +
                               pxflow + " flow --size 32x32 --jsonl - /dev/stdin");
   INFO(stdin_seq.err);
