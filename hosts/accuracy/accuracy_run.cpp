@@ -184,10 +184,10 @@ void require_backend_runs(const AccuracyOptions& o) {
 }
 
 AccuracyReport run_accuracy(const AccuracyOptions& o) {
-  require_backend_runs(o);
   opencv_api().set_threads(o.threads);
   AccuracyReport r;
-  const auto images = load_source_images(o.data_dir);
+  const auto images = load_source_images(o.data_dir);  // missing data is named first
+  require_backend_runs(o);
   for (const auto& img : images) r.images.push_back(img.name);
   auto add = [&](std::vector<SetRows> sets) {
     for (auto& s : sets) r.sets.push_back(std::move(s));

@@ -120,7 +120,7 @@ TEST_CASE("a folder where a file belongs is a directory, whatever the option", "
                     "--bench-json " + dir + ": is a directory");
 }
 
-TEST_CASE("--pairs: each pair is its own problem, of its own size", "[cli][inputs]") {
+TEST_CASE("flow --pairs: each pair is its own problem, of its own size", "[cli][inputs]") {
   Frames f;
   cv::Mat big(48, 40, CV_8UC1);
   cv::randu(big, 0, 255);
