@@ -6,10 +6,12 @@
 #include <map>
 
 #include "check_corpus.hpp"
+#include "errors.hpp"
 #include "estimators.hpp"
 #include "interrupt.hpp"
 #include "opencv_module.hpp"
 #include "params.hpp"
+#include "registry.hpp"
 #include "truth_pairs.hpp"
 
 namespace pxflow::accuracy {
@@ -126,10 +128,7 @@ std::vector<SetRows> truth_sets(const std::string& set, const std::string& setti
 // Real consecutive frames: agreement of pxflow and LK with DIS; DIS's own row has no error.
 SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
   const auto pairs = video_pairs(o.data_dir + "/" + video, o.video_pairs);
-  Params p = profile("px4flow-64");
-  p.width = pairs.front().prev.width, p.height = pairs.front().prev.height;
-  p.search_radius = 7, p.blocks = 32;  // the full-size setting of pxflow check's real frames
-  validate(p);
+  const Params p = video_setting(pairs.front().prev.width, pairs.front().prev.height);
   Methods m(o, p);
   Samples s[3];
   for (const VideoPair& v : pairs) {
@@ -149,12 +148,51 @@ SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
            summarise("DIS", s[2], false)}};
 }
 
+// The setting of each set of pairs run_accuracy makes, with its name ("320x240 S=7 B=16").
+std::vector<std::pair<std::string, Params>> problems(const AccuracyOptions& o) {
+  auto named = [](const Params& p) {
+    return std::pair{std::to_string(p.width) + "x" + std::to_string(p.height) +
+                         " S=" + std::to_string(p.search_radius) + " B=" + std::to_string(p.blocks),
+                     p};
+  };
+  std::vector<std::pair<std::string, Params>> out{named(profile("px4flow-64")),
+                                                  named(check_settings()[2].second)};
+  if (o.video_pairs > 0)
+    for (const char* video : kVideos) {
+      const auto first = video_pairs(o.data_dir + "/" + video, 1);
+      if (!first.empty())
+        out.push_back(named(video_setting(first.front().prev.width, first.front().prev.height)));
+    }
+  return out;
+}
+
 }  // namespace
+
+Params video_setting(int width, int height) {
+  Params p = profile("px4flow-64");
+  p.width = width, p.height = height;
+  p.search_radius = 7, p.blocks = 32;  // the full-size setting of pxflow check's real frames
+  validate(p);
+  return p;
+}
+
+void require_backend_runs(const AccuracyOptions& o) {
+  const BackendRow& row = find_backend(o.backend);
+  for (const auto& [name, p] : problems(o)) {
+    try {
+      (void)open_backend_for(row, o.backend_options, p);
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + " (the accuracy pairs at " + name +
+                       "); choose another --backend");
+    }
+  }
+}
 
 AccuracyReport run_accuracy(const AccuracyOptions& o) {
   opencv_api().set_threads(o.threads);
   AccuracyReport r;
-  const auto images = load_source_images(o.data_dir);
+  const auto images = load_source_images(o.data_dir);  // missing data is named first
+  require_backend_runs(o);
   for (const auto& img : images) r.images.push_back(img.name);
   auto add = [&](std::vector<SetRows> sets) {
     for (auto& s : sets) r.sets.push_back(std::move(s));
@@ -167,7 +205,7 @@ AccuracyReport run_accuracy(const AccuracyOptions& o) {
                                        o.seed * 100000 + 50000);
   add(truth_sets("synthetic, 320x240 window", window_setting, window_params, window, o));
   if (o.video_pairs > 0)
-    for (const char* video : {"vtest.avi", "tree.avi"}) r.sets.push_back(agreement_set(video, o));
+    for (const char* video : kVideos) r.sets.push_back(agreement_set(video, o));
   return r;
 }
 

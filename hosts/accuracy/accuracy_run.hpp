@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "backend.hpp"
+#include "params.hpp"
 #include "sample_data.hpp"
 
 namespace pxflow::accuracy {
@@ -44,6 +45,17 @@ struct AccuracyReport {
   std::vector<std::string> images;  // the source images of the synthetic pairs
   std::vector<SetRows> sets;
 };
+
+// The real videos of the agreement rows and the report's flow pictures, in opencv-doc's folder.
+inline constexpr const char* kVideos[] = {"vtest.avi", "tree.avi"};
+
+// pxflow's setting for a real video's frames: px4flow-64 at their size with S=7, B=32 (as
+// pxflow check's real frames); the agreement rows and the report's flow pictures use it.
+Params video_setting(int width, int height);
+
+// Throws InputError unless o.backend runs here and supports every set of pairs run_accuracy
+// makes (a backend with a small memory may not take the videos' frames): called before any work.
+void require_backend_runs(const AccuracyOptions& o);
 
 // Throws InputError for a missing data file, an unknown backend or one that cannot run here.
 AccuracyReport run_accuracy(const AccuracyOptions& o);

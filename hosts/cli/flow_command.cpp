@@ -55,21 +55,29 @@ std::unique_ptr<Backend> open_for(const BackendRow& row, const FlowOptions& o, c
 
 class FlowRunner {
  public:
-  FlowRunner(const FlowOptions& o, const BackendRow& row) : o_(o), row_(row) {}
+  // `sizes_may_change`: each pair is its own problem (--pairs), so a pair of another size
+  // resolves the parameters again and reopens the backend; in a sequence the first frame's size
+  // holds for every frame.
+  FlowRunner(const FlowOptions& o, const BackendRow& row, bool sizes_may_change)
+      : o_(o), row_(row), sizes_may_change_(sizes_may_change) {}
 
-  // Runs one pair; the first pair fixes the parameters and opens the backend.
+  // Runs one pair; the first pair (and, with sizes_may_change, a pair of a new size) fixes the
+  // parameters and opens the backend.
   PairRun run(const NamedFrame& prev, const NamedFrame& next) {
     if (prev.frame.width != next.frame.width || prev.frame.height != next.frame.height)
       throw InputError("frames differ in size: " + prev.name + " is " + size_text(prev.frame) +
                        ", " + next.name + " is " + size_text(next.frame));
-    if (!backend_) {
-      params_ = o_.problem.resolve(std::pair{prev.frame.width, prev.frame.height});
-      backend_ = open_for(row_, o_, params_);
-      records_.resize(poi_count(params_));
-    } else if (prev.frame.width != params_.width || prev.frame.height != params_.height) {
+    const bool new_size =
+        !backend_ || prev.frame.width != params_.width || prev.frame.height != params_.height;
+    if (new_size && backend_ && !sizes_may_change_)
       throw InputError("frames differ in size: " + prev.name + " is " + size_text(prev.frame) +
                        ", the sequence's first frame " + std::to_string(params_.width) + "x" +
                        std::to_string(params_.height));
+    if (new_size) {
+      params_ = o_.problem.resolve(std::pair{prev.frame.width, prev.frame.height});
+      backend_.reset();  // one backend open at a time (a device's memory)
+      backend_ = open_for(row_, o_, params_);
+      records_.resize(poi_count(params_));
     }
     const FramePair pair{prev.frame.view(), next.frame.view()};
     check_batch({&pair, 1}, params_, records_);
@@ -94,6 +102,7 @@ class FlowRunner {
   }
   const FlowOptions& o_;
   const BackendRow& row_;
+  bool sizes_may_change_;
   Params params_;
   std::unique_ptr<Backend> backend_;
   std::vector<PoiRecord> records_;
@@ -126,7 +135,7 @@ int run_single(const FlowOptions& o, const BackendRow& row, const FrameShaping& 
   plan.prepare();
   const NamedFrame prev = shaped({o.first, load_frame(o.first, raw_size)}, shaping);
   const NamedFrame next = shaped({o.second, load_frame(o.second, raw_size)}, shaping);
-  FlowRunner runner(o, row);
+  FlowRunner runner(o, row, false);
   const PairRun r = runner.run(prev, next);
   if (draw) draw->write(picture(prev, r));
   const std::string object = pair_json(r).dump() + "\n";
@@ -160,7 +169,7 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
   std::unique_ptr<FrameSequence> sequence;
   std::vector<std::string> inputs;
   if (o.pairs_given) {
-    list = read_pair_list(o.pairs);
+    list = read_pair_list("--pairs", o.pairs);
     for (const auto& [a, b] : list) inputs.push_back(a), inputs.push_back(b);
   } else {
     sequence = open_frame_sequence(o.first, raw_size);
@@ -177,7 +186,7 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
   const bool stdout_taken = (jsonl && jsonl->to_stdout()) || (csv && csv->to_stdout());
   // Lines per pair: on stdout when it is free, else on stderr on a terminal or with --progress.
   std::FILE* lines = !stdout_taken ? stdout : (o.progress || ::isatty(2) == 1) ? stderr : nullptr;
-  FlowRunner runner(o, row);
+  FlowRunner runner(o, row, o.pairs_given);
   const auto t0 = Clock::now();
   double backend_seconds = 0;
   int pairs = 0;
@@ -273,7 +282,10 @@ Command add_flow_command(CLI::App& app) {
       "                                      glob ('f/*.png'), both sorted by name, a file of raw\n"
       "                                      frames back to back (--size), or - (raw frames on\n"
       "                                      standard input, --size)\n"
-      "  pxflow flow [OPTIONS] --pairs LIST  each line of LIST: PREV NEXT (relative to LIST)\n"
+      "  pxflow flow [OPTIONS] --pairs LIST  each line of LIST: PREV NEXT (relative to LIST's\n"
+      "                                      folder; a pipe's to the working directory);\n"
+      "                                      pairs may differ in size, each is its own problem\n"
+      "Every input may be a file or a pipe (a FIFO, /dev/stdin, bash's <(cat a.raw)).\n"
       "A sequence prints a line per pair and a summary (pairs, frames, pairs/s); --jsonl and\n"
       "--csv write one object or row per pair (- = stdout, the lines then go to stderr with\n"
       "--progress or on a terminal).");

@@ -1,11 +1,11 @@
 // pxflow merge: the results files of a campaign's shards (pxflow check --shard K/M --json F)
 // combined into one verdict and one check file (docs/harness.md, "Campaigns over a CI matrix").
-#include <fstream>
 #include <iostream>
 
 #include "check_merge.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
+#include "input_file.hpp"
 #include "output_plan.hpp"
 
 namespace pxflow::cli {
@@ -17,11 +17,15 @@ struct MergeArgs {
 };
 
 ShardFile read_shard(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open (see pxflow merge --help)");
+  std::string text;
+  try {
+    text = read_input_text(path, path);
+  } catch (const InputError& e) {  // every refusal points at the help, as the ones below
+    throw InputError(std::string(e.what()) + " (see pxflow merge --help)");
+  }
   Json j;
   try {
-    j = Json::parse(in);
+    j = Json::parse(text);
   } catch (const std::exception&) {
     throw InputError(path +
                      ": not valid JSON: expected a file of pxflow check --json (see pxflow merge "

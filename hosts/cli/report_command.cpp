@@ -1,8 +1,8 @@
 // pxflow report: runs (or reads) check and bench results and writes the report files.
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <set>
 
 #include "accuracy_run.hpp"
 #include "bench.hpp"
@@ -14,6 +14,7 @@
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "grid.hpp"
+#include "input_file.hpp"
 #include "interrupt.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
@@ -36,7 +37,8 @@ struct ReportArgs {
   bool quick = false, no_accuracy = false;
   std::vector<std::pair<CliExtension, bool>> extensions;  // each with its skip flag's value
   std::string command;                                    // as run (command_line.hpp)
-  std::string globals;  // the global options given (--dut, --disable-isa ...), as typed
+  std::string globals;          // the global options given (--dut, --disable-isa ...), as typed
+  std::set<std::string> given;  // the report's own options given ("--seed", "--quick")
 
   // "pxflow --dut ... check": a command this report runs, with the global options that shape it.
   std::string pxflow(const std::string& subcommand) const {
@@ -65,12 +67,17 @@ void add_family_sections(ReportInputs& in, const ReportArgs& a) {
   }
 }
 
-void add_accuracy(ReportInputs& in, const ReportArgs& a) {
+accuracy::AccuracyOptions accuracy_options(const ReportArgs& a) {
   accuracy::AccuracyOptions o;
   o.backend = a.picture_backend();
   o.backend_options.device = a.device;
   o.data_dir = a.data_dir;
   if (a.quick) o.pairs = 40, o.video_pairs = 2;
+  return o;
+}
+
+void add_accuracy(ReportInputs& in, const ReportArgs& a) {
+  const accuracy::AccuracyOptions o = accuracy_options(a);
   in.accuracy_command =
       a.pxflow("accuracy") + " --backend " + o.backend +
       (a.quick ? " --pairs 40 --video-pairs 2" : "") +
@@ -103,20 +110,17 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
     }
 }
 
-// The videos of the flow pictures, and each one's picture file.
-constexpr const char* kPictureVideos[] = {"vtest.avi", "tree.avi"};
+// The flow picture of each of accuracy::kVideos.
 std::string picture_file(const std::string& video) { return "flow-" + video + ".png"; }
 
 // Flow pictures of the real sequences: first two frames of each video at full size.
 void add_pictures(ReportInputs& in, const ReportArgs& a, ReportOutputs& out) {
   const std::string backend = a.picture_backend();
-  Params p = profile("px4flow-64");
-  for (const char* video : kPictureVideos) {
+  for (const char* video : accuracy::kVideos) {
     const auto pairs = accuracy::video_pairs(a.data_dir + "/" + video, 1);
     if (pairs.empty()) continue;
     const auto& vp = pairs.front();
-    p.width = vp.prev.width, p.height = vp.prev.height, p.search_radius = 7, p.blocks = 32;
-    validate(p);
+    const Params p = accuracy::video_setting(vp.prev.width, vp.prev.height);
     auto b = open_backend_for(find_backend(backend), a.backend_options(), p);
     const FramePair pair{vp.prev.view(), vp.next.view()};
     std::vector<PoiRecord> records(poi_count(p));
@@ -135,11 +139,10 @@ void add_pictures(ReportInputs& in, const ReportArgs& a, ReportOutputs& out) {
 // checked for the keys the report reads before any work: the wrong or a malformed file is one
 // line and exit 2, never an internal error half-way through.
 Json read_json(const std::string& option, const std::string& path, const char* kind) {
-  std::ifstream in(path);
-  if (!in) throw InputError(option + " " + path + ": cannot open");
+  const std::string text = read_input_text(option + " " + path, path);
   Json j;
   try {
-    j = Json::parse(in);
+    j = Json::parse(text);
   } catch (const std::exception&) {
     throw InputError(option + " " + path + ": not valid JSON (expected the output of pxflow " +
                      kind + " --json)");
@@ -183,7 +186,7 @@ std::string recorded_command(const Json& j, const char* kind, const std::string&
 
 // What each backend of the report runs: the bench's own descriptions (what it opened), else the
 // rows of the check opened here for their description.
-void describe_backends(ReportInputs& in, const ReportArgs& a) {
+void describe_opened_backends(ReportInputs& in, const ReportArgs& a) {
   if (!in.bench.is_null() && in.bench.contains("backends") && in.bench["backends"].is_array() &&
       !in.bench["backends"].empty()) {
     in.backends = in.bench["backends"];
@@ -206,6 +209,68 @@ void describe_backends(ReportInputs& in, const ReportArgs& a) {
       "the rows it knows on this machine to describe them.";
 }
 
+// What the descriptions above leave out of the check's backends that ran (a --dut row the bench
+// did not run, or one this report was not given): as the check file records it.
+void describe_check_backends(ReportInputs& in) {
+  if (in.check.is_null()) return;
+  std::set<std::string> described;
+  for (const auto& b : in.backends) described.insert(b.value("name", ""));
+  bool added = false;
+  for (const auto& b : in.check["backends"]) {
+    const std::string name = b.value("name", "");
+    Json d{{"name", name}};
+    for (const char* key : {"implementation", "device"})
+      if (!b.value(key, "").empty()) d[key] = b[key];
+    if (described.contains(name) || d.size() == 1) continue;  // described, or never opened
+    in.backends.push_back(d);
+    added = true;
+  }
+  if (added)
+    in.backends_source +=
+        " Rows only the check ran are described as the check file records them (implementation "
+        "and device).";
+}
+
+void describe_backends(ReportInputs& in, const ReportArgs& a) {
+  describe_opened_backends(in, a);
+  describe_check_backends(in);
+}
+
+// The parts of the work a report may run; --check-json, --bench-json and --no-accuracy leave
+// some out.
+enum Part { kCheck = 1, kBench = 2, kAccuracy = 4 };
+
+// Each option that shapes only some parts: with none of them running it would do nothing, so it
+// is refused like a wrong value, before any work.
+struct Shaping {
+  const char* option;
+  int parts;
+  const char* what;
+};
+constexpr Shaping kShapings[] = {
+    {"--seed", kCheck, "the check's pairs"},  // the accuracy table keeps its own seed
+    {"--threads", kCheck | kBench, "the check and the bench"},
+    {"--device", kCheck | kBench | kAccuracy, "the check, the bench and the accuracy table"},
+    {"--backend", kAccuracy, "the accuracy table and the flow pictures"},
+    {"--quick", kBench | kAccuracy, "the bench and the accuracy table"},
+    {"--data", kCheck | kAccuracy, "the check, the accuracy table and the flow pictures"},
+};
+
+void refuse_options_without_effect(const ReportArgs& a) {
+  const int runs = (a.check_json.empty() ? kCheck : 0) | (a.bench_json.empty() ? kBench : 0) |
+                   (a.no_accuracy ? 0 : kAccuracy);
+  for (const Shaping& s : kShapings) {
+    if (!a.given.contains(s.option) || (s.parts & runs) != 0) continue;
+    std::string why;
+    for (auto [part, option] : {std::pair{kCheck, "--check-json"},
+                                {kBench, "--bench-json"},
+                                {kAccuracy, "--no-accuracy"}})
+      if (s.parts & part) why += (why.empty() ? "" : " and ") + std::string(option);
+    throw InputError(std::string(s.option) + ": has no effect with " + why + ": it shapes only " +
+                     s.what + "; leave it out (see pxflow report --help)");
+  }
+}
+
 int run_report(const ReportArgs& a) {
   ReportInputs in;
   in.report_command = a.command;
@@ -213,20 +278,16 @@ int run_report(const ReportArgs& a) {
   // Inputs first, so that a wrong file or name is refused before minutes of work.
   for (const std::string& name : split_list(a.backends)) (void)find_backend(name);
   if (!a.backend.empty()) (void)find_backend(a.backend);
-  // Given both results files and no accuracy run, nothing is run: --threads and --device would
-  // do nothing.
-  if (!a.check_json.empty() && !a.bench_json.empty() && a.no_accuracy &&
-      (a.threads || !a.device.empty()))
-    throw InputError(std::string(a.threads ? "--threads" : "--device") +
-                     ": has no effect with --check-json, --bench-json and --no-accuracy (nothing "
-                     "runs): leave it out (see pxflow report --help)");
+  refuse_options_without_effect(a);
   if (!a.check_json.empty()) in.check = read_json("--check-json", a.check_json, "check");
   if (!a.bench_json.empty()) in.bench = read_json("--bench-json", a.bench_json, "bench");
+  // The accuracy table's and the pictures' backend runs last: one it cannot run is refused now.
+  if (!a.no_accuracy) accuracy::require_backend_runs(accuracy_options(a));
   OutputPlan plan;
   plan.read_all({a.check_json, a.bench_json});
   if (a.check_json.empty() || !a.no_accuracy) plan.read_folder("--data", a.data_dir);
   std::vector<std::string> pictures;  // planned even with --no-accuracy: a previous report's go
-  for (const char* video : kPictureVideos) pictures.push_back(picture_file(video));
+  for (const char* video : accuracy::kVideos) pictures.push_back(picture_file(video));
   ReportOutputs out = plan_report(plan, a.out_dir, pictures);
   plan.prepare();  // before any work: a folder or file that cannot be made fails first
   if (!a.check_json.empty()) {
@@ -279,11 +340,18 @@ int run_report(const ReportArgs& a) {
   if (!a.no_accuracy) add_pictures(in, a, out);
   write_report(out, in);
   std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json and CSV files\n";
-  // As `pxflow check`: a failure, or a check that compared nothing, is not green.
-  const bool green = in.check.value("failed", 0) == 0 && in.check.value("compared", 0) > 0;
-  if (in.check.value("compared", 0) == 0)
+  // As `pxflow check` and `pxflow merge`: a failure, an incomplete merge or a check that compared
+  // nothing is not green (a check file older than its "verdict" key: the first and the last).
+  std::string verdict = in.check.value("verdict", "");
+  if (verdict.empty())
+    verdict = in.check.value("failed", 0) > 0      ? "failed"
+              : in.check.value("compared", 0) == 0 ? "nothing-checked"
+                                                   : "passed";
+  if (verdict == "nothing-checked")
     std::cout << "the check compared nothing but the reference: the report is not a pass\n";
-  return green ? 0 : 1;
+  if (verdict == "incomplete")
+    std::cout << "the check is an incomplete merge (see Conformance): the report is not a pass\n";
+  return verdict == "passed" ? 0 : 1;
 }
 
 }  // namespace
@@ -326,6 +394,8 @@ Command add_report_command(CLI::App& app) {
   return {sub, [a, sub] {
             a->command = given_command_line(*sub);
             a->globals = global_options(*sub);
+            for (const CLI::Option* o : sub->get_options())
+              if (o->count() > 0) a->given.insert(o->get_name());
             return run_report(*a);
           }};
 }

@@ -19,6 +19,7 @@
 #include "frame_io.hpp"
 #include "frame_sequence.hpp"
 #include "grid.hpp"
+#include "input_file.hpp"
 #include "interrupt.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
@@ -52,8 +53,9 @@ struct Vectors {
 };
 
 // The pairs of a --from list (frames a user chose: real frames, a regression), all one size.
-std::vector<OwnedPair> pairs_from_list(const VectorsArgs& a) {
-  const auto list = read_pair_list(a.from);
+using PairList = std::vector<std::pair<std::string, std::string>>;
+
+std::vector<OwnedPair> pairs_from_list(const VectorsArgs& a, const PairList& list) {
   if (list.empty()) throw InputError("--from " + a.from + ": no pairs in the list");
   std::optional<FrameSize> raw;
   if (!a.size.empty()) raw = parse_frame_size(a.size);
@@ -70,14 +72,14 @@ std::vector<OwnedPair> pairs_from_list(const VectorsArgs& a) {
   return pairs;
 }
 
-Vectors make_vectors(const VectorsArgs& a) {
+Vectors make_vectors(const VectorsArgs& a, const PairList& list) {
   Vectors v;
   if (!a.from.empty()) {
     if (a.random_options_given)
       throw InputError(
           "--cases and --seed choose random pairs; --from gives the pairs (see pxflow vectors "
           "--help)");
-    v.pairs = pairs_from_list(a);
+    v.pairs = pairs_from_list(a, list);
     v.p = a.problem.resolve(std::pair{v.pairs[0].width, v.pairs[0].height});
   } else {
     if (!a.size.empty())
@@ -192,16 +194,18 @@ std::vector<std::string> vector_files(const std::string& format) {
 
 int write_vectors(const VectorsArgs& a) {
   OutputPlan plan;
+  PairList list;  // read once: --from may be a pipe
   if (!a.from.empty()) {
+    list = read_pair_list("--from", a.from);
     plan.read(a.from);
-    for (const auto& [prev, next] : read_pair_list(a.from)) plan.read_all({prev, next});
+    for (const auto& [prev, next] : list) plan.read_all({prev, next});
   }
   plan.make_folder("--out", a.out);
   std::map<std::string, OutputFile*> out;
   for (const std::string& name : vector_files(a.format))
     out[name] = &plan.file("--out", (std::filesystem::path(a.out) / name).string());
   plan.prepare();
-  const Vectors v = make_vectors(a);
+  const Vectors v = make_vectors(a, list);
   std::string frames, flow;
   for (const auto& op : v.pairs) {
     frames.append(op.prev.begin(), op.prev.end());
@@ -246,11 +250,7 @@ int write_vectors(const VectorsArgs& a) {
 }
 
 std::string read_file(const std::string& path, const char* what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(std::string(what) + ": " + path + ": cannot be read");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return read_input_text(std::string(what) + ": " + path, path);
 }
 
 int verify_vectors(const VectorsArgs& a) {

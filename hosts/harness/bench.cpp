@@ -289,10 +289,14 @@ class Bench {
 
   void emit(BenchRow r, BenchReport& report) {
     derive(r, report);
+    // A clock that counts instructions (QEMU's -icount) has no time of its own: its virtual
+    // nanoseconds and the rates made of them (kept in the JSON) are no speed of anything.
+    const bool instructions = r.cycles_per_frame == 0 && r.instructions_per_frame > 0;
+    auto timing = [&](std::string cell) { return instructions ? std::string("-") : cell; };
     const std::string cells[] = {
-        r.source, fixed("%.0f", r.median_ns_per_frame),
-        fixed("%.0f", r.min_ns_per_frame) + ".." + fixed("%.0f", r.max_ns_per_frame),
-        fixed("%.1f", r.frames_per_s), fixed("%.1f", r.ns_per_poi),
+        r.source, timing(fixed("%.0f", r.median_ns_per_frame)),
+        timing(fixed("%.0f", r.min_ns_per_frame) + ".." + fixed("%.0f", r.max_ns_per_frame)),
+        timing(fixed("%.1f", r.frames_per_s)), timing(fixed("%.1f", r.ns_per_poi)),
         // A clock that counts instructions (QEMU's -icount) says so in its cell, never "cycles".
         r.cycles_per_frame > 0         ? fixed("%.0f", r.cycles_per_frame)
         : r.instructions_per_frame > 0 ? fixed("%.0f instr", r.instructions_per_frame)

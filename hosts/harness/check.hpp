@@ -102,4 +102,8 @@ CheckReport check_from_json(const Json& j);
 // and device that ran), the time taken, and the last line "N passed, M failed, K skipped".
 void print_check_summary(const CheckReport& r, std::ostream& out);
 
+// "shard 3/3 not given: its cases were not checked" (or "shards 2/3, 3/3 ... their"): what an
+// incomplete merge of `count` shards lacks, said the same in merge's summary and the report.
+std::string missing_shards_text(const std::vector<int>& missing, int count);
+
 }  // namespace pxflow

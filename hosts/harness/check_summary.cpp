@@ -33,18 +33,14 @@ std::string shard_list(const std::vector<Shard>& shards) {
 std::string scope(const CheckReport& r) {
   const std::string ran = std::to_string(r.cases) + " cases, " + std::to_string(r.pairs) + " pairs";
   if (!r.merged_from.empty()) {
-    std::vector<Shard> given, missing;
+    std::vector<Shard> given;
     for (const MergedShard& m : r.merged_from) given.push_back(m.shard);
-    for (int k : r.missing_shards) missing.push_back({k, given.front().count});
     std::string s = "merged shard" + std::string(given.size() > 1 ? "s " : " ") +
                     shard_list(given) + ": " + ran + " (the campaign has " +
                     std::to_string(r.campaign.cases) + " cases), " +
                     format("%.2f s summed over the shards", r.seconds);
-    if (missing.size() == 1)
-      s += "\nincomplete: shard " + shard_list(missing) + " not given: its cases were not checked";
-    else if (!missing.empty())
-      s += "\nincomplete: shards " + shard_list(missing) +
-           " not given: their cases were not checked";
+    if (!r.missing_shards.empty())
+      s += "\nincomplete: " + missing_shards_text(r.missing_shards, given.front().count);
     return s;
   }
   if (r.shard.count > 1)
@@ -55,6 +51,14 @@ std::string scope(const CheckReport& r) {
 }
 
 }  // namespace
+
+std::string missing_shards_text(const std::vector<int>& missing, int count) {
+  std::vector<Shard> shards;
+  for (int k : missing) shards.push_back({k, count});
+  return missing.size() == 1
+             ? "shard " + shard_list(shards) + " not given: its cases were not checked"
+             : "shards " + shard_list(shards) + " not given: their cases were not checked";
+}
 
 void print_check_summary(const CheckReport& r, std::ostream& out) {
   out << format("\n%-14s %-10s %7s %7s %5s %9s  %s\n", "backend", "result", "cases", "pairs", "n/a",

@@ -72,18 +72,22 @@ std::string render_md(const std::vector<Section>& secs) {
   return o.str();
 }
 
-// A section's text, escaped, its `code` spans (Markdown's, as report.md writes them) as <code>.
+// A section's text, escaped, its `code` spans (Markdown's, as report.md writes them) as <code>
+// and its line breaks (a list of failure lines) as <br>.
 std::string html_text(const std::string& text) {
   std::string out;
   bool code = false;
   std::size_t start = 0;
+  auto plain = [&](const std::string& t) {
+    for (char c : html_escape(t)) out += c == '\n' ? std::string("<br>") : std::string(1, c);
+  };
   for (std::size_t tick = text.find('`'); tick != std::string::npos;
        start = tick + 1, tick = text.find('`', start)) {
-    out += html_escape(text.substr(start, tick - start));
+    plain(text.substr(start, tick - start));
     out += code ? "</code>" : "<code>";
     code = !code;
   }
-  out += html_escape(text.substr(start));
+  plain(text.substr(start));
   if (code) out += "</code>";  // an unpaired backtick: the rest is code, the tag closed
   return out;
 }

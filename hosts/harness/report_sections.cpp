@@ -5,6 +5,8 @@
 #include <map>
 #include <set>
 
+#include "check.hpp"
+
 namespace pxflow::report {
 namespace {
 
@@ -25,13 +27,21 @@ bool exact_clock(const Json& r) { return r.value("exact_clock", false); }
 // An exact clock that counts instructions, not cycles (QEMU -icount: the m4-qemu row). Its
 // frames/s assume one instruction per tick of QEMU's virtual clock, a speed no core has: it is
 // tabled, labelled as such, and never charted beside the cycle models.
+// Such a backend shows its instructions per frame, never a time or a rate: its untimed rows (n/a,
+// not run) belong to the same one line.
 bool counts_instructions(const Json& r) { return r.contains("instructions_per_frame"); }
-std::string clock_label(const Json& r) {
-  return counts_instructions(r) ? " (instruction count)" : " (model clock)";
+bool counts_instructions(const Json& bench, const std::string& backend) {
+  return std::any_of(bench["rows"].begin(), bench["rows"].end(), [&](const Json& r) {
+    return str(r, "backend") == backend && counts_instructions(r);
+  });
+}
+std::string instructions_cell(const Json& r) {
+  return num(r["instructions_per_frame"].get<double>(), "%.0f") + " instr";
 }
 const char* const kInstructionNote =
-    " Rows labelled by an instruction count (QEMU -icount) are tabled, not charted: their "
-    "frames/s take one instruction per tick of QEMU's virtual clock, a speed no core has.";
+    " Rows labelled by an instruction count (QEMU -icount) show instructions per frame, tabled, "
+    "not charted: they are no time (QEMU's virtual clock ticks per instruction, a speed no core "
+    "has).";
 std::string threads_text(int n) { return std::to_string(n) + (n == 1 ? " thread" : " threads"); }
 
 ChartStyle style_of(const std::string& backend) { return backend_style(registry_rank(backend)); }
@@ -64,6 +74,9 @@ bool same_point(const Json& a, const Json& b) {
 
 std::vector<std::string> bench_cells(const Json& r) {
   if (!timed(r)) return {str(r, "backend"), "-", "-", "-", "-", "-", "-", "-", "-", str(r, "note")};
+  if (counts_instructions(r))
+    return {str(r, "backend"), str(r, "source"), "-", "-", "-", "-", instructions_cell(r), "-", "-",
+            str(r, "note")};
   return {str(r, "backend"),
           str(r, "source"),
           num(r["median_ns_per_frame"], "%.0f"),
@@ -179,6 +192,20 @@ Section backends_section(const ReportInputs& in) {
   return s;
 }
 
+// The lines the check printed for a backend's failures, as a list under the table's text (all of
+// them are in results.json's `check`).
+std::string failure_lines(const Json& backend) {
+  constexpr std::size_t kShown = 20;
+  const std::vector<std::string> lines = backend.value("failures", std::vector<std::string>{});
+  if (lines.empty()) return {};
+  std::string s = "\n\nFailures of " + str(backend, "name") + ", as the check printed them:\n";
+  for (std::size_t i = 0; i < lines.size() && i < kShown; ++i) s += "\n- `" + lines[i] + "`";
+  if (lines.size() > kShown)
+    s += "\n- ... and " + std::to_string(lines.size() - kShown) +
+         " more (every line is in results.json, `check`)";
+  return s;
+}
+
 Section conformance(const Json& check, const std::string& cmd) {
   Section s{
       "conformance",
@@ -205,6 +232,13 @@ Section conformance(const Json& check, const std::string& cmd) {
   s.text += " Totals: " + std::to_string(check.value("passed", 0)) + " passed, " +
             std::to_string(check.value("failed", 0)) + " failed, " +
             std::to_string(check.value("skipped", 0)) + " skipped.";
+  if (const std::vector<int> missing = check.value("missing_shards", std::vector<int>{});
+      !missing.empty()) {
+    const Json& from = check.value("merged_from", Json::array());
+    const int count = from.empty() ? 0 : from.front().value("count", 0);
+    s.text += " Incomplete: " + missing_shards_text(missing, count) + ".";
+  }
+  for (const Json* b : backends) s.text += failure_lines(*b);
   return s;
 }
 
@@ -333,17 +367,24 @@ Section scaling(const Json& bench, const std::string& sweep) {
     const std::string backend = str(*r, "backend");
     const double x = sweep_x(*info, *r);
     columns[x] = sweep_column(*info, *r);
-    const std::string label = backend + (model ? clock_label(*r) : "");
+    const bool instructions = counts_instructions(bench, backend);
+    const std::string label = backend + (instructions ? " (instruction count)"
+                                         : model      ? " (model clock)"
+                                                      : "");
     Line& l = lines[{registry_rank(backend), label}];
     l.label = label;
     l.model = model;
-    l.charted = !counts_instructions(*r);
+    l.charted = !instructions;
     l.series.name = backend;
     l.series.style = style_of(backend);
     if (!timed(*r)) {
       const std::string note = str(*r, "note");
       l.cells[x] = note.substr(0, note.find(':'));
       l.notes.insert(note);
+      continue;
+    }
+    if (instructions) {
+      l.cells[x] = instructions_cell(*r);
       continue;
     }
     const double y =

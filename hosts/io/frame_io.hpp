@@ -20,17 +20,13 @@ struct FrameSize {
 // Parses "WxH" (e.g. "64x64"); throws InputError for anything else or a size beyond the limits.
 FrameSize parse_frame_size(std::string_view text);
 
-// Throws InputError when `path` names nothing that can be opened, saying why: no such file, a
-// loop of symbolic links, a folder on the way that may not be searched.
-void require_existing(const std::string& path);
-
 // True for paths that name raw 8-bit files (extension .raw, any case).
 bool is_raw_path(const std::string& path);
 
 // Loads one frame. With `raw_size` the file is raw 8-bit, whatever its name, and must hold
-// exactly W*H bytes; without it a .raw file is an error and any other is decoded by OpenCV. Refuses
-// 16-bit and float images, empty files, directories, and images whose header declares more than
-// kMaxFramePixels.
+// exactly W*H bytes; without it a .raw file is an error and any other is decoded by OpenCV. A
+// pipe is read like a file (hosts/io/input_file.hpp). Refuses 16-bit and float images, empty
+// files, directories, devices, and images whose header declares more than kMaxFramePixels.
 Frame load_frame(const std::string& path, std::optional<FrameSize> raw_size);
 
 }  // namespace pxflow

@@ -9,10 +9,10 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "errors.hpp"
+#include "input_file.hpp"
 #include "video_file.hpp"
 
 namespace pxflow {
@@ -159,8 +159,7 @@ std::unique_ptr<FrameSequence> open_frame_sequence(const std::string& source,
     return std::make_unique<FileFrames>(folder_frames(source, raw_size.has_value()), raw_size);
   if (!fs::exists(st) && source.find_first_of("*?[") != std::string::npos)
     return std::make_unique<FileFrames>(glob_frames(source), raw_size);
-  require_existing(source);
-  if (!fs::is_regular_file(st)) throw InputError(source + ": not a regular file");
+  require_readable_input(source, source);
   if (raw_size) return std::make_unique<RawFrames>(source, *raw_size);
   if (is_image_name(source))
     throw InputError(source +
@@ -169,12 +168,12 @@ std::unique_ptr<FrameSequence> open_frame_sequence(const std::string& source,
   return std::make_unique<VideoFrames>(source);
 }
 
-std::vector<std::pair<std::string, std::string>> read_pair_list(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError("--pairs " + path + ": no such file");
-  std::ifstream in(path);
-  if (!in) throw InputError("--pairs " + path + ": cannot open for reading");
-  const fs::path dir = fs::path(path).parent_path();
+std::vector<std::pair<std::string, std::string>> read_pair_list(const std::string& option,
+                                                                const std::string& path) {
+  const std::string label = option + " " + path;
+  std::istringstream in(read_input_text(label, path));
+  // A list through a pipe (--pairs <(...)) has no folder of its own: its paths are the shell's.
+  const fs::path dir = is_stream(path) ? fs::path() : fs::path(path).parent_path();
   auto resolve = [&](const std::string& p) {
     return fs::path(p).is_absolute() || dir.empty() ? p : (dir / p).string();
   };
@@ -187,11 +186,11 @@ std::vector<std::pair<std::string, std::string>> read_pair_list(const std::strin
     std::string prev, next, extra;
     fields >> std::quoted(prev) >> std::quoted(next);
     if (!fields || (fields >> extra))
-      throw InputError("--pairs " + path + ":" + std::to_string(number) +
+      throw InputError(label + ":" + std::to_string(number) +
                        ": expected two paths, PREV NEXT (quote a path with spaces)");
     pairs.push_back({resolve(prev), resolve(next)});
   }
-  if (pairs.empty()) throw InputError("--pairs " + path + ": lists no pair");
+  if (pairs.empty()) throw InputError(label + ": lists no pair");
   return pairs;
 }
 

@@ -36,7 +36,9 @@ std::unique_ptr<FrameSequence> open_frame_sequence(const std::string& source,
 
 // The pairs of a list file: one pair per line, "PREV NEXT" separated by white space (a path with
 // spaces in double quotes); empty lines and lines starting with '#' are skipped; relative paths
-// are relative to the list file's folder.
-std::vector<std::pair<std::string, std::string>> read_pair_list(const std::string& path);
+// are relative to the list file's folder (to the working directory for a list through a pipe).
+// `option` (--pairs, --from) starts every error line.
+std::vector<std::pair<std::string, std::string>> read_pair_list(const std::string& option,
+                                                                const std::string& path);
 
 }  // namespace pxflow

@@ -2,13 +2,12 @@
 
 #include <cctype>
 #include <cstdint>
-#include <fstream>
 #include <vector>
 
 namespace pxflow {
 namespace {
 
-using Bytes = std::vector<unsigned char>;
+using Bytes = std::vector<std::uint8_t>;
 
 std::uint32_t be32(const Bytes& b, std::size_t at) {
   return std::uint32_t{b[at]} << 24 | std::uint32_t{b[at + 1]} << 16 |
@@ -46,39 +45,31 @@ std::optional<FrameSize> pnm_size(const Bytes& b) {
   return clamp_size(v[0], v[1]);
 }
 
-std::optional<FrameSize> jpeg_size(std::ifstream& in) {
+std::optional<FrameSize> jpeg_size(const Bytes& b) {
   // Walk the marker segments up to the first start-of-frame (SOF0..SOF15 except DHT/JPG/DAC).
-  in.seekg(2);
-  unsigned char m[4];
-  for (int guard = 0; guard < 10000 && in.read(reinterpret_cast<char*>(m), 4); ++guard) {
-    if (m[0] != 0xFF) return std::nullopt;
-    const unsigned marker = m[1];
-    const std::uint32_t len = std::uint32_t{m[2]} << 8 | m[3];
+  for (std::size_t at = 2; at + 4 <= b.size();) {
+    if (b[at] != 0xFF) return std::nullopt;
+    const unsigned marker = b[at + 1];
+    const std::uint32_t len = be16(b, at + 2);
     if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC) {
-      Bytes s(5);
-      if (!in.read(reinterpret_cast<char*>(s.data()), 5)) return std::nullopt;
-      return clamp_size(be16(s, 3), be16(s, 1));
+      if (at + 9 > b.size()) return std::nullopt;
+      return clamp_size(be16(b, at + 7), be16(b, at + 5));
     }
     if (len < 2) return std::nullopt;
-    in.seekg(len - 2, std::ios::cur);
+    at += 2 + len;
   }
   return std::nullopt;
 }
 
 }  // namespace
 
-std::optional<FrameSize> declared_image_size(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  Bytes b(64, 0);
-  in.read(reinterpret_cast<char*>(b.data()), static_cast<std::streamsize>(b.size()));
-  b.resize(static_cast<std::size_t>(in.gcount()));
-  in.clear();
+std::optional<FrameSize> declared_image_size(const Bytes& b) {
   if (b.size() >= 24 && b[0] == 0x89 && b[1] == 'P' && b[2] == 'N' && b[3] == 'G')
     return clamp_size(be32(b, 16), be32(b, 20));  // IHDR follows the 8-byte signature
   if (b.size() >= 26 && b[0] == 'B' && b[1] == 'M')
     return clamp_size(le32s(b, 18), le32s(b, 22));  // BITMAPINFOHEADER; height < 0 = top-down
   if (b.size() >= 3 && b[0] == 'P' && b[1] >= '1' && b[1] <= '6') return pnm_size(b);
-  if (b.size() >= 4 && b[0] == 0xFF && b[1] == 0xD8) return jpeg_size(in);
+  if (b.size() >= 4 && b[0] == 0xFF && b[1] == 0xD8) return jpeg_size(b);
   return std::nullopt;
 }
 

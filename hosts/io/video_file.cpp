@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "errors.hpp"
-#include "frame_io.hpp"
+#include "input_file.hpp"
 #include "opencv_module.hpp"
 
 namespace pxflow {
@@ -11,7 +11,7 @@ namespace pxflow {
 namespace {
 
 const opencv::Api& existing_video_api(const std::string& path) {
-  require_existing(path);
+  require_readable_input(path, path);
   return opencv_api();
 }
 

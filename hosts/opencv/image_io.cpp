@@ -61,11 +61,11 @@ std::string to_gray(const cv::Mat& img, cv::Mat& gray) {
   }
 }
 
-void decode_gray(const std::string& path, Frame& out, std::string& error) {
+void decode_gray(const std::vector<std::uint8_t>& bytes, Frame& out, std::string& error) {
   cv::Mat img, gray;
   try {
     StderrSilenced quiet;
-    img = cv::imread(path, cv::IMREAD_UNCHANGED);
+    img = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception&) {
     img.release();
   }

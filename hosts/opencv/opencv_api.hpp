@@ -21,7 +21,7 @@
 namespace pxflow::opencv {
 
 // Bumped whenever the table below changes; the loader refuses a module of another version.
-inline constexpr int kApiVersion = 1;
+inline constexpr int kApiVersion = 2;
 
 // The name of the one exported function: `const Api* pxflow_opencv_api()`.
 inline constexpr const char* kEntryPoint = "pxflow_opencv_api";
@@ -56,9 +56,10 @@ struct Api {
   // OpenCV's worker threads (cv::setNumThreads).
   void (*set_threads)(int threads);
 
-  // Any 8-bit image cv::imread reads, converted to gray the OpenCV way (BGR/BGRA weights).
-  // On failure `out` is untouched and the error says why (not naming the path).
-  void (*decode_gray)(const std::string& path, Frame& out, std::string& error);
+  // The bytes of any 8-bit image cv::imdecode reads (the whole file, so that a pipe decodes like a
+  // file), converted to gray the OpenCV way (BGR/BGRA weights). On failure `out` is untouched and
+  // the error says why (not naming the path).
+  void (*decode_gray)(const std::vector<std::uint8_t>& bytes, Frame& out, std::string& error);
   // PNG bytes of the flow picture; on failure the error says why.
   void (*draw_flow_png)(const FlowPicture& picture, std::vector<std::uint8_t>& png,
                         std::string& error);

@@ -25,7 +25,7 @@ inline Frame frame_of(const cv::Mat& gray) {
 std::string to_gray(const cv::Mat& img, cv::Mat& gray);
 
 // image_io.cpp
-void decode_gray(const std::string& path, Frame& out, std::string& error);
+void decode_gray(const std::vector<std::uint8_t>& bytes, Frame& out, std::string& error);
 VideoReader* open_video(const std::string& path, std::string& error);
 bool read_video_frame(VideoReader* video, Frame* out);
 void close_video(VideoReader* video);

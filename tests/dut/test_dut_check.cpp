@@ -116,6 +116,27 @@ TEST_CASE("a bad --dut spec is one line and exit 2", "[dut]") {
   }
 }
 
+TEST_CASE("a report names what a --dut row of the check file runs, bench or no bench", "[dut]") {
+  TempDir dir;
+  REQUIRE(timed_pxflow({"check", "--dut", std::string("d=exec:") + DUT_REF, "--backends",
+                        "ref-original,d", "--generated-only", "--json", dir.path("c.json")})
+              .r.exit_code == 0);
+  REQUIRE(timed_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
+                        "--json", dir.path("b.json")})
+              .r.exit_code == 0);
+  // Neither the bench file nor this report knows the row: the check file says what it ran.
+  const auto t = timed_pxflow({"report", "--out", dir.path("r"), "--check-json", dir.path("c.json"),
+                               "--bench-json", dir.path("b.json"), "--no-accuracy", "--backends",
+                               "ref-original"});
+  INFO(t.r.out << t.r.err);
+  REQUIRE(t.r.exit_code == 0);
+  const auto results = nlohmann::json::parse(slurp(dir.path("r/results.json")));
+  std::vector<std::string> names;
+  for (const auto& b : results["provenance"]["backends"]) names.push_back(b["name"]);
+  CHECK(names == std::vector<std::string>{"ref-original", "d"});
+  CHECK_THAT(slurp(dir.path("r/report.md")), Catch::Contains("| d | pxdut-portable-c"));
+}
+
 TEST_CASE("a report of a --dut row records check and bench commands that rerun it", "[dut]") {
   TempDir dir;
   // A spec with a space (the device's argument), so that the recorded command must quote it; the

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "bad_input.hpp"
 #include "results_files.hpp"
 #include "run_program.hpp"
 
@@ -144,6 +145,17 @@ TEST_CASE("bench times a GAP8 row by its exact model clock from the one checked 
   CHECK(row["repeats"] == 1);
   CHECK(row["cycles_per_frame"].get<double>() > 10000);
   CHECK(row["note"].get<std::string>().find("host simulation") != std::string::npos);
+}
+
+TEST_CASE("report: an accuracy backend that cannot take the accuracy pairs is refused first",
+          "[gap8][report]") {
+  TempDir dir;
+  // gap8-fast keeps a frame in the 64 KiB L1: the accuracy table's 320x240 pairs do not fit.
+  // Refused before the check and the bench run, and before the folder is made.
+  require_bad_input({"report", "--out", dir.path("r"), "--backends", "ref-original", "--backend",
+                     "gap8-fast", "--quick"},
+                    "backend gap8-fast does not support this problem");
+  CHECK(slurp(dir.path("r/report.md")).empty());
 }
 
 }  // namespace pxflow::test

@@ -250,6 +250,13 @@ TEST_CASE("report: options that would do nothing, and unknown backends, are refu
   CHECK(threads.exit_code == 2);
   CHECK(threads.err_lines() == 1);
   CHECK(threads.err.find("--threads: has no effect") != std::string::npos);
+  // --backend shapes the accuracy table and the pictures only: refused alike without them.
+  const RunResult backend =
+      report_from(dir, "r", {"--backends", "ref-original,ref-local", "--backend", "ref-local"});
+  CHECK(backend.exit_code == 2);
+  CHECK(backend.err_lines() == 1);
+  CHECK(backend.err.find("--backend: has no effect") != std::string::npos);
+  CHECK(backend.out.empty());
   const RunResult unknown =
       report_from(dir, "r", {"--backends", "ref-original,ref-local", "--backend", "no-such"});
   CHECK(unknown.exit_code == 2);

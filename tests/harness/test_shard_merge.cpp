@@ -210,7 +210,7 @@ TEST_CASE("merge: mismatched, repeated or merged files are refused with one line
   refused({dir.path("a1.json"), dir.path("a2.json"), dir.path("a2.json")}, "shard 2/2 again");
   refused({dir.path("broken.json")}, "not valid JSON");
   refused({dir.path("bench.json")}, "not a complete check file");
-  refused({dir.path("nope.json")}, "cannot open");
+  refused({dir.path("nope.json")}, "nope.json: no such file");
 
   // A merged file is no shard; OUT may not be one of the inputs.
   REQUIRE(pxflow_run({"merge", dir.path("m.json"), dir.path("a1.json"), dir.path("a2.json")})
@@ -261,6 +261,41 @@ TEST_CASE("merge: the merged file is a check file pxflow report accepts", "[shar
   CHECK(r.exit_code == 0);
   CHECK(slurp(dir.path("report/report.md")).find("16 cases (300 frame pairs)") !=
         std::string::npos);
+}
+
+TEST_CASE("report: a check's failure lines and an incomplete merge, named, and not a pass",
+          "[shard][report]") {
+  TempDir dir;
+  REQUIRE(pxflow_run({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
+                      "--json", dir.path("b.json")})
+              .exit_code == 0);
+  auto report = [&](const std::string& check, const std::string& out) {
+    const RunResult r = pxflow_run({"report", "--out", dir.path(out), "--check-json",
+                                    dir.path(check), "--bench-json", dir.path("b.json"),
+                                    "--no-accuracy", "--backends", "ref-original"});
+    INFO(r.out << r.err);
+    CHECK(r.exit_code == 1);
+    return slurp(dir.path(out + "/report.md"));
+  };
+  // test-bitflip fails on purpose: its lines, as check printed them, are in Conformance.
+  const RunResult failed = pxflow_run({"check", "--backends", "ref-original,test-bitflip",
+                                       "--generated-only", "--json", dir.path("f.json")});
+  REQUIRE(failed.exit_code == 1);
+  const std::string line = read(dir.path("f.json"))["backends"][1]["failures"][0];
+  REQUIRE(line.rfind("FAIL test-bitflip case=", 0) == 0);
+  const std::string md = report("f.json", "rf");
+  const auto conformance = md.find("## Conformance");
+  REQUIRE(conformance != std::string::npos);
+  CHECK(md.find("- `" + line + "`", conformance) < md.find("\n## ", conformance + 1));
+
+  // A merge of shard 1/2 alone: the report says which shard is missing and is not a pass.
+  REQUIRE(pxflow_run({"check", "--backends", "ref-original,ref-local", "--generated-only",
+                      "--shard", "1/2", "--json", dir.path("s1.json")})
+              .exit_code == 0);
+  REQUIRE(pxflow_run({"merge", dir.path("m.json"), dir.path("s1.json")}).exit_code == 1);
+  CHECK(
+      report("m.json", "rm").find("Incomplete: shard 2/2 not given: its cases were not checked") !=
+      std::string::npos);
 }
 
 TEST_CASE("check --shard, --backend and --json -: the options and their errors",

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -63,9 +64,21 @@ TEST_CASE("m4-qemu report: the Cortex-M4 section beside the paper's estimate", "
   REQUIRE(run_pxflow(
               {"check", "--backends", "m4-qemu", "--cases", "2", "--json", dir.path("check.json")})
               .exit_code == 0);
-  REQUIRE(
-      run_pxflow({"bench", "--backends", "m4-qemu", "--json", dir.path("bench.json")}).exit_code ==
-      0);
+  const auto bench =
+      run_pxflow({"bench", "--backends", "m4-qemu", "--json", dir.path("bench.json")});
+  REQUIRE(bench.exit_code == 0);
+  // An instruction count is no time: the bench's table gives no ns/frame or frames/s beside it.
+  const std::regex timed_row("m4-qemu +qemu-icount-instructions +- +- +- +- +[0-9]+ instr ");
+  const std::regex any_row("m4-qemu +qemu-icount-instructions ");
+  std::istringstream lines(bench.out);
+  int rows = 0;
+  for (std::string line; std::getline(lines, line);)
+    if (std::regex_search(line, any_row)) {
+      INFO(line);
+      CHECK(std::regex_search(line, timed_row));
+      ++rows;
+    }
+  CHECK(rows > 0);
   const auto r = run_pxflow({"report", "--out", dir.path("report"), "--check-json",
                              dir.path("check.json"), "--bench-json", dir.path("bench.json"),
                              "--backends", "m4-qemu", "--no-accuracy"});
@@ -76,4 +89,8 @@ TEST_CASE("m4-qemu report: the Cortex-M4 section beside the paper's estimate", "
   CHECK(md.find("| USAD8/USADA8 per frame | 91520 | 91520 |") != std::string::npos);
   CHECK(md.find("| cycles attributed to those SADs | - | 22880 |") != std::string::npos);
   CHECK(md.find("| 648560 |") != std::string::npos);
+  // One line per sweep table, labelled and filled with the instruction count, its n/a and
+  // not-run cells included.
+  CHECK(md.find("m4-qemu (model clock)") == std::string::npos);
+  CHECK(md.find("| m4-qemu (instruction count) | 583") != std::string::npos);
 }

@@ -1,0 +1,31 @@
+// Files pxflow reads, the one way, so that every input option answers alike: a regular file or a
+// stream (a pipe, a FIFO, /dev/stdin, bash's <(cat a.raw)) is read; a folder "is a directory";
+// a device is refused, since a character device such as /dev/zero or /dev/urandom never ends.
+// Every refusal is an InputError whose line starts with `label`: the path itself, or the option
+// and the path ("--pairs LIST").
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pxflow {
+
+// Throws InputError when `path` names nothing that can be opened, saying why: no such file, a
+// loop of symbolic links, a folder on the way that may not be searched.
+void require_existing(const std::string& label, const std::string& path);
+
+// True for a pipe or FIFO (read to its end once; its size is unknown until then).
+bool is_stream(const std::string& path);
+
+// Throws InputError unless `path` is a regular file or a stream.
+void require_readable_input(const std::string& label, const std::string& path);
+
+// The whole content of `path` (checked as above; empty is an error). More than `max_bytes` is an
+// InputError "LABEL: holds N bytes, WHY" (a stream: "more than N"), read no further than that.
+std::vector<std::uint8_t> read_input(const std::string& label, const std::string& path,
+                                     std::uint64_t max_bytes, const std::string& why);
+
+// A text input (JSON, a list of pairs): read_input with a bound no file pxflow writes comes near.
+std::string read_input_text(const std::string& label, const std::string& path);
+
+}  // namespace pxflow
