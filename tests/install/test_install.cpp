@@ -227,14 +227,23 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
       CAPTURE(name);
       std::string upper = name;
       for (auto& c : upper) c = static_cast<char>(std::toupper(c));
-      CHECK(slurp(man1 + "pxflow-" + name + ".1").find(".TH PXFLOW-" + upper + " \"1\"") !=
-            std::string::npos);
+      const std::string page = slurp(man1 + "pxflow-" + name + ".1");
+      CHECK(page.find(".TH PXFLOW-" + upper + " \"1\"") != std::string::npos);
+      // Each command's page lists the global options, then the sections every page has.
+      const auto globals = page.find(".SS \"Global options");
+      CHECK(page.find("\\-\\-device\\-timeout", globals) != std::string::npos);
+      CHECK(globals < page.find(".SH \"EXIT STATUS\""));
+      CHECK(page.find(".SH ENVIRONMENT\n") != std::string::npos);
+      CHECK(page.find("PXFLOW_OPENCV_MODULE") != std::string::npos);
+      CHECK(page.find(".SH EXAMPLES\n") != std::string::npos);
       CHECK(main_page.find(".BR pxflow\\-" + name + " (1)") != std::string::npos);
     }
     if (fs::exists("/usr/bin/man")) {
       const RunResult shown = must_run("/usr/bin/man", {"-P", "cat", "-l", man1 + "pxflow.1"});
       CHECK(shown.out.find("PXFLOW(1)") != std::string::npos);
       CHECK(shown.out.find("pxflow-flow(1)") != std::string::npos);
+      for (const char* section : {"\nEXIT STATUS\n", "\nENVIRONMENT\n", "\nEXAMPLES\n"})
+        CHECK(shown.out.find(section) != std::string::npos);
       CHECK(shown.out.find(version.out.substr(0, version.out.find(' ', 7))) !=
             std::string::npos);  // the footer: "pxflow 0.1"
     } else {
