@@ -1,10 +1,13 @@
 # Installing pxflow (`cmake --install build --prefix P`):
-#   bin/pxflow, bin/gap8-run                 the CLI and the GAP8 model's runner
+#   bin/pxflow, bin/gap8-run, bin/pxflow-dut-ref   the CLI, the GAP8 model's runner and the
+#                                            reference device (pxflow check --dut ref=exec:...)
 #   include/pxflow/*.hpp                     the contract types (reference/), the backend interface
 #                                            and the registry (hosts/core), included as <pxflow/...>
 #   lib/libpxflow_*.a                        the registry with every family of this build, and
 #                                            every library they link (found by walking the links)
 #   lib/pxflow/                              run-time modules (pxflow_install_module())
+#   share/pxflow/                            run-time data: the Cortex-M4 firmware
+#                                            (pxflow_install_data())
 #   lib/cmake/pxflow/                        find_package(pxflow) -> pxflow::pxflow
 #   lib/pkgconfig/pxflow.pc                  pkg-config --cflags --libs pxflow
 #   share/man/man1/pxflow.1, pxflow-<command>.1   generated from --help by help2man
@@ -20,10 +23,25 @@ set(PXFLOW_INSTALL_MODULEDIR ${CMAKE_INSTALL_LIBDIR}/pxflow)
 
 option(PXFLOW_MAN_PAGES "Generate the man pages from --help with help2man (Debian: help2man)" ON)
 
+# Files pxflow reads at run time that are no code for this host, relative to the prefix.
+set(PXFLOW_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/pxflow)
+
 # Installs MODULE or SHARED library targets into PXFLOW_INSTALL_MODULEDIR: the one place a
 # run-time module is installed from.
 function(pxflow_install_module)
   install(TARGETS ${ARGN} LIBRARY DESTINATION ${PXFLOW_INSTALL_MODULEDIR})
+endfunction()
+
+# Installs FILES into PXFLOW_INSTALL_DATADIR: the one place run-time data is installed from.
+function(pxflow_install_data)
+  install(FILES ${ARGN} DESTINATION ${PXFLOW_INSTALL_DATADIR})
+endfunction()
+
+# <out> = <dir> (relative to the prefix) relative to the installed binary's folder, the form the
+# run-time lookup takes (hosts/core/own_files.hpp): "../lib/pxflow", "../share/pxflow".
+function(pxflow_reldir_from_bindir out dir)
+  file(RELATIVE_PATH rel /prefix/${CMAKE_INSTALL_BINDIR} /prefix/${dir})
+  set(${out} ${rel} PARENT_SCOPE)
 endfunction()
 
 # The link closure of `root`: the project's own targets in link order (each before what it
@@ -248,10 +266,11 @@ function(pxflow_install)
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(EXPORT pxflowTargets NAMESPACE pxflow:: DESTINATION ${PXFLOW_INSTALL_CMAKEDIR})
-  install(TARGETS pxflow RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-  if(TARGET gap8-run)
-    install(TARGETS gap8-run RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-  endif()
+  foreach(program pxflow gap8-run pxflow-dut-ref)  # each one this build made
+    if(TARGET ${program})
+      install(TARGETS ${program} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+    endif()
+  endforeach()
   _pxflow_install_headers()
 
   # pxflowConfig.cmake: the dependencies first, then the targets.

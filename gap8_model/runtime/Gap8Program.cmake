@@ -5,12 +5,13 @@
 # Does nothing when the toolchain is missing (PXFLOW_GAP8_HAVE_CC is then OFF).
 include_guard(GLOBAL)
 find_program(PXFLOW_GAP8_CC riscv64-unknown-elf-gcc)
-if(PXFLOW_GAP8_CC AND EXISTS "${PXFLOW_GAP8_CC}")
+find_program(PXFLOW_GAP8_OBJCOPY riscv64-unknown-elf-objcopy)  # binutils-riscv64-unknown-elf
+if(PXFLOW_GAP8_CC AND EXISTS "${PXFLOW_GAP8_CC}" AND PXFLOW_GAP8_OBJCOPY)
   set(PXFLOW_GAP8_HAVE_CC ON CACHE INTERNAL "")
 else()
   set(PXFLOW_GAP8_HAVE_CC OFF CACHE INTERNAL "")
-  message(STATUS "gap8_model: riscv64-unknown-elf-gcc not found: GAP8 programs are not built, "
-                 "their tests report SKIPPED (install gcc-riscv64-unknown-elf)")
+  message(STATUS "gap8_model: riscv64-unknown-elf-gcc or -objcopy not found: GAP8 programs are "
+                 "not built, their tests report SKIPPED (install gcc-riscv64-unknown-elf)")
 endif()
 
 function(pxflow_gap8_program name)

@@ -25,6 +25,11 @@ int run_accuracy_command(accuracy::AccuracyOptions o) {
 
 }  // namespace
 
+// What --help and the man page show under Examples (the command line after "pxflow ").
+const std::vector<std::string> kAccuracyExamples = {
+    "accuracy  # error against true motion, beside OpenCV's LK and DIS",
+};
+
 Command add_accuracy_command(CLI::App& app) {
   auto o = std::make_shared<accuracy::AccuracyOptions>();
   o->backend = default_backend().name;
@@ -51,7 +56,7 @@ Command add_accuracy_command(CLI::App& app) {
   sub->add_option("--data,--data-dir", o->data_dir, "Where opencv-doc's images and videos are")
       ->capture_default_str();
   sub->add_flag("--by-kind", o->by_kind, "Also one block of rows per kind of motion");
-  return {sub, [o] { return run_accuracy_command(*o); }};
+  return {sub, [o] { return run_accuracy_command(*o); }, kAccuracyExamples};
 }
 
 }  // namespace pxflow::cli

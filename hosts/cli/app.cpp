@@ -8,6 +8,7 @@
 #include "device_wait.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
+#include "help_sections.hpp"
 #include "interrupt.hpp"
 #include "output_plan.hpp"
 #include "parse_errors.hpp"
@@ -62,10 +63,16 @@ int run_pxflow(int argc, char** argv) {
       cli::add_merge_command(app)};
   for (const cli::CliExtension& e : cli::registered_cli_extensions())
     if (e.add_command) commands.push_back(e.add_command(app));
-  // Every command's --help (and so its man page) lists the global options too.
+  // Every command's --help (and so its man page) ends with its own footer, the global options,
+  // the exit status, the environment and its examples; pxflow --help with the last three.
   std::string globals = "Global options (before or after the command; see pxflow --help):";
   for (const auto& [opt, values] : family_options) globals += "\n  " + opt->flag + "  " + opt->help;
-  for (const auto& c : commands) c.app->footer(globals);
+  for (const auto& c : commands) {
+    const std::string own = c.app->get_footer();
+    c.app->footer((own.empty() ? "" : own + "\n\n") + globals + "\n\n" +
+                  cli::help_sections(c.examples));
+  }
+  app.footer(cli::help_sections(cli::first_examples(commands)));
   std::string command;  // the subcommand being parsed, for "see pxflow CMD --help"
   if (argc > 1 && argv[1][0] != '-') {
     for (const auto& c : commands)

@@ -37,6 +37,12 @@ int run_backends(const std::string& json_path) {
 
 }  // namespace
 
+// What --help and the man page show under Examples (the command line after "pxflow ").
+const std::vector<std::string> kBackendsExamples = {
+    "backends  # what this build has, and what can run here",
+    "backends --json -  # the same as JSON",
+};
+
 Command add_backends_command(CLI::App& app) {
   auto json_path = std::make_shared<std::string>();
   CLI::App* sub =
@@ -44,7 +50,7 @@ Command add_backends_command(CLI::App& app) {
   sub->add_option("--json", *json_path,
                   "Also write the rows as JSON to FILE ('-': standard output, instead of the "
                   "table): name, family, available, reason, needs, has_devices, preferred");
-  return {sub, [json_path] { return run_backends(*json_path); }};
+  return {sub, [json_path] { return run_backends(*json_path); }, kBackendsExamples};
 }
 
 }  // namespace pxflow::cli

@@ -88,6 +88,12 @@ int run_bench_command(const BenchArgs& a) {
 
 }  // namespace
 
+// What --help and the man page show under Examples (the command line after "pxflow ").
+const std::vector<std::string> kBenchExamples = {
+    "bench --batch 1,256,4096  # throughput, each backend checked before it is timed",
+    "bench --backends cpu,opencl --json bench.json",
+};
+
 Command add_bench_command(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* sub = app.add_subcommand(
@@ -110,10 +116,12 @@ Command add_bench_command(CLI::App& app) {
   sub->add_option("--json", a->json_path,
                   "Write the rows as JSON to FILE ('-': standard output, the table to stderr)");
   add_progress_flag(*sub);
-  return {sub, [a, sub] {
+  return {sub,
+          [a, sub] {
             a->command = given_command_line(*sub);
             return run_bench_command(*a);
-          }};
+          },
+          kBenchExamples};
 }
 
 }  // namespace pxflow::cli

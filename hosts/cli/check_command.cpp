@@ -103,6 +103,14 @@ int run_check_command(const CheckArgs& a) {
 
 }  // namespace
 
+// What --help and the man page show under Examples (the command line after "pxflow ").
+const std::vector<std::string> kCheckExamples = {
+    "check  # every backend against ref-original, bit for bit",
+    "check --dut ref=exec:pxflow-dut-ref --require ref  # a kernel outside pxflow",
+    "check --backends m4-qemu --require m4-qemu  # the Cortex-M4 firmware under QEMU",
+    "check --cases 10000 --seed 7 --shard 2/4 --json s2.json  # one quarter of a campaign",
+};
+
 Command add_check_command(CLI::App& app) {
   auto a = std::make_shared<CheckArgs>();
   CLI::App* sub =
@@ -134,10 +142,12 @@ Command add_check_command(CLI::App& app) {
       ->check(CLI::Range(0, 1024));
   sub->add_option("--device", a->backend_options.device,
                   "Device index or name substring (GPU backends)");
-  return {sub, [a, sub] {
+  return {sub,
+          [a, sub] {
             a->globals = global_options(*sub);
             return run_check_command(*a);
-          }};
+          },
+          kCheckExamples};
 }
 
 }  // namespace pxflow::cli

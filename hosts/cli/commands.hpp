@@ -15,6 +15,9 @@ namespace pxflow::cli {
 struct Command {
   CLI::App* app = nullptr;
   std::function<int()> run;
+  // Command lines that show it at work, after "pxflow ", each ending in "  # what it does":
+  // the Examples of its --help and man page (help_sections.hpp).
+  std::vector<std::string> examples{};
 };
 
 Command add_flow_command(CLI::App& app);

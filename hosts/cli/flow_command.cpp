@@ -269,6 +269,15 @@ int run_flow(const FlowOptions& o) {
 
 }  // namespace
 
+// What --help and the man page show under Examples (the command line after "pxflow ").
+const std::vector<std::string> kFlowExamples = {
+    "flow PREV.png NEXT.png  # the flow estimate, a human summary",
+    "flow --json - --backend ref-local A.png B.png  # JSON on standard output",
+    "flow --size 64x64 prev.raw next.raw  # raw 8-bit frames",
+    "flow --jsonl out.jsonl --csv out.csv frames/  # every consecutive pair of a folder",
+    "flow --backend gap8-fast --crop 64x64+200+150 A.png B.png  # a window that fits GAP8's L1",
+};
+
 Command add_flow_command(CLI::App& app) {
   auto o = std::make_shared<FlowOptions>();
   CLI::App* sub = app.add_subcommand(
@@ -321,14 +330,16 @@ Command add_flow_command(CLI::App& app) {
                 "A line per pair on stderr even when stdout is taken and stderr is no terminal");
   sub->add_option("PREV", o->first, "First frame (image file, or raw with --size), or SOURCE");
   sub->add_option("NEXT", o->second, "Second frame (same size)");
-  return {sub, [o, json, jsonl, csv, draw, pairs] {
+  return {sub,
+          [o, json, jsonl, csv, draw, pairs] {
             o->json_given = json->count() > 0;
             o->jsonl_given = jsonl->count() > 0;
             o->csv_given = csv->count() > 0;
             o->draw_given = draw->count() > 0;
             o->pairs_given = pairs->count() > 0;
             return run_flow(*o);
-          }};
+          },
+          kFlowExamples};
 }
 
 }  // namespace pxflow::cli

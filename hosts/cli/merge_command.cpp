@@ -69,6 +69,11 @@ int run_merge_command(const MergeArgs& a) {
 
 }  // namespace
 
+// What --help and the man page show under Examples (the command line after "pxflow ").
+const std::vector<std::string> kMergeExamples = {
+    "merge all.json s1.json s2.json s3.json s4.json  # one verdict from four shards",
+};
+
 Command add_merge_command(CLI::App& app) {
   auto a = std::make_shared<MergeArgs>();
   CLI::App* sub = app.add_subcommand(
@@ -82,7 +87,7 @@ Command add_merge_command(CLI::App& app) {
       "M; a shard twice; a merged file); nothing is written. See docs/harness.md.");
   sub->add_option("OUT", a->out, "The merged check file to write ('-': stdout)")->required();
   sub->add_option("FILES", a->files, "The shards' check files, every K of one M once")->required();
-  return {sub, [a] { return run_merge_command(*a); }};
+  return {sub, [a] { return run_merge_command(*a); }, kMergeExamples};
 }
 
 }  // namespace pxflow::cli

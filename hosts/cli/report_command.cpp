@@ -356,6 +356,11 @@ int run_report(const ReportArgs& a) {
 
 }  // namespace
 
+// What --help and the man page show under Examples (the command line after "pxflow ").
+const std::vector<std::string> kReportExamples = {
+    "report --out out/report  # report.md, report.html, results.json and results.csv",
+};
+
 Command add_report_command(CLI::App& app) {
   auto a = std::make_shared<ReportArgs>();
   CLI::App* sub =
@@ -391,13 +396,15 @@ Command add_report_command(CLI::App& app) {
   for (auto& [e, skipped] : a->extensions)
     if (e.add_report_section && !e.report_skip_flag.empty())
       sub->add_flag(e.report_skip_flag, skipped, e.report_skip_help);
-  return {sub, [a, sub] {
+  return {sub,
+          [a, sub] {
             a->command = given_command_line(*sub);
             a->globals = global_options(*sub);
             for (const CLI::Option* o : sub->get_options())
               if (o->count() > 0) a->given.insert(o->get_name());
             return run_report(*a);
-          }};
+          },
+          kReportExamples};
 }
 
 }  // namespace pxflow::cli

@@ -94,6 +94,12 @@ struct FamilyOption {
   bool repeatable = false;
 };
 
+// An environment variable a family reads: every --help and man page lists it (ENVIRONMENT).
+struct EnvironmentVariable {
+  std::string name;  // "PXFLOW_DISABLE"
+  std::string help;  // what it does, for the help text
+};
+
 // A bound the benchmark puts beside the rows timed by `clock` (the cpu family: the psadbw
 // ceiling in TSC cycles): how many times the bound each row's cycles per frame are.
 struct BenchBound {
@@ -114,6 +120,7 @@ struct BackendFamily {
   // Checks the environment variables the family reads (the cpu family: PXFLOW_DISABLE); throws
   // InputError for a bad value. The CLI calls it before every command. Empty: nothing to check.
   std::function<void()> check_environment{};
+  std::vector<EnvironmentVariable> environment{};  // the variables it reads, for --help
 };
 
 }  // namespace pxflow

@@ -133,6 +133,9 @@ BackendFamily cpu_family() {
                                 cpu::known_isas() + " (replaces PXFLOW_DISABLE)",
                             [](const std::string& list) { cpu::set_disabled_isas(list); }});
   family.check_environment = cpu::check_environment;
+  family.environment.push_back(
+      {cpu::kDisableEnvironment,
+       "CPU ISAs the cpu rows must not use, a comma-separated list as for --disable-isa"});
   return family;
 }
 

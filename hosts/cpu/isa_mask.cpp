@@ -10,7 +10,7 @@
 namespace pxflow::cpu {
 namespace {
 
-constexpr const char* kEnvironment = "PXFLOW_DISABLE";
+constexpr const char* kEnvironment = kDisableEnvironment;
 
 struct Mask {
   std::vector<std::string> names;

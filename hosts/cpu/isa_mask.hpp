@@ -9,6 +9,9 @@
 
 namespace pxflow::cpu {
 
+// The environment variable of the mask.
+inline constexpr const char* kDisableEnvironment = "PXFLOW_DISABLE";
+
 // The ISAs compiled into this build, weakest first (the table's rows of this architecture).
 const std::vector<std::string>& compiled_isas();
 

@@ -28,6 +28,7 @@ BackendFamily dut_family() {
     add_backend_row(dut::dut_row(spec));
   };
   f.options = {dut};
+  f.environment.push_back({"PATH", "Where --dut NAME=exec:COMMAND looks for COMMAND"});
   return f;
 }
 

@@ -305,6 +305,11 @@ int verify_vectors(const VectorsArgs& a) {
   return c.ok() ? 0 : 1;
 }
 
+// What --help and the man page show under Examples (the command line after "pxflow ").
+const std::vector<std::string> kVectorsExamples = {
+    "vectors --out vec/ --cases 100  # test vectors for on-target tests (vec/ exists)",
+};
+
 Command add_vectors_command(CLI::App& app) {
   auto a = std::make_shared<VectorsArgs>();
   CLI::App* sub = app.add_subcommand(
@@ -329,7 +334,8 @@ Command add_vectors_command(CLI::App& app) {
                                          "all pairs in order) with the vectors in DIR");
   verify->add_option("DIR", a->verify_dir, "The vectors' folder")->required();
   verify->add_option("RECORDS", a->verify_records, "The records to check")->required();
-  return {sub, [a, verify, cases, seed] {
+  return {sub,
+          [a, verify, cases, seed] {
             a->random_options_given = cases->count() + seed->count() > 0;
             if (verify->parsed()) return verify_vectors(*a);
             if (a->out.empty())
@@ -337,7 +343,8 @@ Command add_vectors_command(CLI::App& app) {
                   "vectors: --out DIR is required: the folder to write into (see "
                   "pxflow vectors --help)");
             return write_vectors(*a);
-          }};
+          },
+          kVectorsExamples};
 }
 
 }  // namespace

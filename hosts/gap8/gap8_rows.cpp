@@ -24,6 +24,9 @@ BackendRow gap8_row(const Gap8VariantInfo& v) {
 BackendFamily gap8_family() {
   BackendFamily family{"gap8", {}, {}, {}};
   for (const Gap8VariantInfo& v : gap8_variants()) family.rows.push_back(gap8_row(v));
+  family.environment.push_back({"TMPDIR",
+                                "Where the gap8 rows write the kernel ELF for libelf to read "
+                                "(removed at once); default /tmp"});
   return family;
 }
 

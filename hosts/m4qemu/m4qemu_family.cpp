@@ -12,12 +12,13 @@
 #include "errors.hpp"
 #include "m4qemu_backend.hpp"
 #include "m4qemu_row.hpp"
+#include "own_files.hpp"
 
 namespace pxflow {
 namespace m4qemu {
 
-std::string& firmware_path() {
-  static std::string path = PXFLOW_M4_FIRMWARE;
+std::string& firmware_option() {
+  static std::string path;
   return path;
 }
 
@@ -71,15 +72,24 @@ bool executable_in_path(const std::string& name) {
 
 }  // namespace
 
-std::string prerequisites_missing(const std::string& firmware) {
+std::string prerequisites_missing(std::string& firmware) {
   if (!executable_in_path("qemu-system-arm"))
     return "qemu-system-arm not found in PATH (install qemu-system-arm: bash ci/install-deps.sh)";
-  struct stat st {};
-  if (stat(firmware.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
-    return "firmware not built: " + firmware +
-           " is missing (build the pxflow target with gcc-arm-none-eabi installed, or give "
-           "--m4-firmware FILE)";
-  return "";
+  firmware = firmware_option();
+  if (!firmware.empty()) {
+    struct stat st {};
+    if (stat(firmware.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+      return "firmware not found: " + firmware + " (--m4-firmware) is missing";
+    return "";
+  }
+  const OwnFile own = find_own_file(PXFLOW_M4_FIRMWARE_FILE, {PXFLOW_M4_FIRMWARE_BUILD_RELDIR,
+                                                              PXFLOW_M4_FIRMWARE_INSTALL_RELDIR});
+  firmware = own.found.string();
+  if (!firmware.empty()) return "";
+  return std::string("firmware not built or not installed: no ") + PXFLOW_M4_FIRMWARE_FILE +
+         (own.tried.empty() ? "" : " at " + describe_tried(own.tried)) +
+         " (build the pxflow target with gcc-arm-none-eabi installed and install it again, or "
+         "give --m4-firmware FILE; docs/cortex-m4.md)";
 }
 
 namespace {
@@ -94,7 +104,7 @@ struct LazyDevice {
   std::string probe() {
     if (!opened) {
       opened = true;
-      const std::string fw = firmware_path();
+      std::string fw;
       why_not = prerequisites_missing(fw);
       if (why_not.empty()) {
         dut::DutSpec spec;
@@ -134,11 +144,12 @@ BackendFamily m4qemu_family() {
   FamilyOption firmware;
   firmware.flag = "--m4-firmware";
   firmware.help =
-      "The firmware ELF the m4-qemu row runs under QEMU (default: the one this build made)";
+      "The firmware ELF the m4-qemu row runs under QEMU (default: the one built or installed with "
+      "this pxflow)";
   firmware.apply = [](const std::string& file) {
     if (file.empty())
       throw InputError("--m4-firmware: empty path: give the firmware ELF (see pxflow --help)");
-    m4qemu::firmware_path() = file;
+    m4qemu::firmware_option() = file;
   };
   FamilyOption link;
   link.flag = "--m4-link";
@@ -154,6 +165,7 @@ BackendFamily m4qemu_family() {
     throw InputError("--m4-link: unknown link '" + name + "': allowed semihosting, uart");
   };
   f.options = {firmware, link};
+  f.environment.push_back({"PATH", "Where the m4-qemu row looks for qemu-system-arm"});
   return f;
 }
 

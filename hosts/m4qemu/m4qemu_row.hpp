@@ -13,8 +13,8 @@ namespace pxflow::m4qemu {
 // "qemu-icount-instructions".
 inline constexpr int kIcountShift = 3;
 
-// The firmware ELF the row runs: --m4-firmware FILE, else the one this build made.
-std::string& firmware_path();
+// --m4-firmware FILE, or empty: the row runs the firmware built or installed with this pxflow.
+std::string& firmware_option();
 
 // The firmware's two links to the host (boards/mps2-an386/link.c), chosen by the QEMU command
 // line: semihosting, the row's (one read(2) or write(2) of QEMU's stdin/stdout per call), or the
@@ -35,7 +35,9 @@ M4Link& link_choice();
 // The QEMU command line of the row (argv[0] is looked up in PATH by the exec link).
 std::vector<std::string> qemu_command(const std::string& firmware, M4Link link);
 
-// Empty when the row can start QEMU here, else why not (no qemu-system-arm in PATH, no firmware).
-std::string prerequisites_missing(const std::string& firmware);
+// Empty when the row can start QEMU here, with `firmware` set to the ELF it runs (--m4-firmware
+// FILE, else the build tree's or the installed one, found relative to the running pxflow:
+// hosts/core/own_files.hpp), else why not (no qemu-system-arm in PATH, no firmware).
+std::string prerequisites_missing(std::string& firmware);
 
 }  // namespace pxflow::m4qemu

@@ -45,7 +45,7 @@ bool layer_available(const char* name) {
 }  // namespace
 
 bool validation_requested_by_env() {
-  const char* value = std::getenv("PXFLOW_VULKAN_VALIDATION");
+  const char* value = std::getenv(kValidationEnvironment);
   return value && *value && std::strcmp(value, "0") != 0;
 }
 

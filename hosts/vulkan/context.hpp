@@ -21,6 +21,7 @@ struct ContextOptions {
 inline constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 // True when the environment asks for validation (PXFLOW_VULKAN_VALIDATION set and not "0").
+inline constexpr const char* kValidationEnvironment = "PXFLOW_VULKAN_VALIDATION";
 bool validation_requested_by_env();
 
 class Context {

@@ -39,7 +39,12 @@ BackendFamily vulkan_family() {
     return std::make_unique<VulkanBackend>(config);
   };
   row.has_devices = true;
-  return {"vulkan", {row}, {}, {}};
+  BackendFamily family{"vulkan", {row}, {}, {}};
+  family.environment.push_back(
+      {vk::kValidationEnvironment,
+       "Not empty and not 0: the vulkan row runs under VK_LAYER_KHRONOS_validation, and any "
+       "message of the layer fails the run"});
+  return family;
 }
 
 }  // namespace pxflow

@@ -1,6 +1,8 @@
-# cmake -DOUTPUT=<file.cpp> -DNAMES="a;b" -DFILES="a.elf;b.elf" -P embed_elf.cmake
-# Writes OUTPUT defining pxflow::gap8_kernel_elf() (gap8_kernel_elf.hpp) over the exact bytes of
-# each FILE, selected by the NAME at the same position.
+# cmake -DOUTPUT=<file.cpp> -DNAMES="a;b" -DFILES="a.elf;b.elf" -DOBJCOPY=<objcopy> -P embed_elf.cmake
+# Writes OUTPUT defining pxflow::gap8_kernel_elf() (gap8_kernel_elf.hpp) over the bytes of each
+# FILE without its debug sections (objcopy --strip-debug: the model loads the sections and reads
+# the symbols, never DWARF, whose paths would put the build tree into the installed binary),
+# selected by the NAME at the same position.
 set(arrays "")
 set(cases "")
 list(LENGTH NAMES count)
@@ -8,7 +10,13 @@ math(EXPR last "${count} - 1")
 foreach(i RANGE ${last})
   list(GET NAMES ${i} name)
   list(GET FILES ${i} file)
-  file(READ "${file}" hex HEX)
+  set(stripped "${OUTPUT}.${name}.elf")
+  execute_process(COMMAND "${OBJCOPY}" --strip-debug "${file}" "${stripped}" RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${OBJCOPY} --strip-debug ${file} failed (${rc})")
+  endif()
+  file(READ "${stripped}" hex HEX)
+  file(REMOVE "${stripped}")
   string(LENGTH "${hex}" hex_length)
   math(EXPR size "${hex_length} / 2")
   string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")

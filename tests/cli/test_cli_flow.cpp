@@ -129,13 +129,28 @@ TEST_CASE("text summary and the backend list", "[cli][all-probes]") {
   const auto help = run_pxflow({"flow", "--help"});
   CHECK(help.exit_code == 0);
   CHECK(help.out.find("--set") != std::string::npos);
-  // Every command's help lists the global options (the families' and --device-timeout).
-  for (const char* command : {"flow", "check", "bench", "report", "merge"}) {
+  // Every command's help keeps its own footer (flow's forms, merge's exit codes), lists the
+  // global options (the families' and --device-timeout), then the exit status, the environment
+  // and its examples (the man pages' EXIT STATUS, ENVIRONMENT and EXAMPLES).
+  CHECK(help.out.find("\nForms:\n") != std::string::npos);
+  CHECK(run_pxflow({"merge", "--help"}).out.find("Exit 0: every shard") != std::string::npos);
+  for (const std::string command : {"flow", "check", "bench", "report", "merge"}) {
     const auto h = run_pxflow({command, "--help"});
-    INFO(command);
-    CHECK(h.out.find("Global options") != std::string::npos);
-    CHECK(h.out.find("--device-timeout") != std::string::npos);
+    INFO(command << " --help:\n" << h.out);
+    const auto globals = h.out.find("Global options");
+    const auto exit_status = h.out.find("\nExit status:\n  0  ");
+    const auto environment = h.out.find("\nEnvironment:\n");
+    const auto examples = h.out.find("\nExamples:\n  $ pxflow " + command + " ");
+    CHECK(h.out.find("--device-timeout", globals) != std::string::npos);
+    CHECK(globals < exit_status);
+    CHECK(exit_status < environment);
+    CHECK(environment < examples);
+    CHECK(examples != std::string::npos);
+    CHECK(h.out.find("  PXFLOW_OPENCV_MODULE  ", environment) < examples);
   }
+  const auto top = run_pxflow({"--help"});
+  CHECK(top.out.find("\nExit status:\n") != std::string::npos);
+  CHECK(top.out.find("\nExamples:\n  $ pxflow flow ") != std::string::npos);
 }
 
 #ifdef PXFLOW_TEST_CPU_BUILT

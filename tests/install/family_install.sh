@@ -14,7 +14,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 cmake -S "$src" -B "$work" -DBUILD_TESTING=OFF -DPXFLOW_WITH_ALL=OFF -DPXFLOW_MAN_PAGES=OFF \
       -DPXFLOW_WITH_LIBRARY_FAMILY=ON "-DPXFLOW_EXTRA_FAMILY_DIRS=$src/tests/install/library_family" \
       >"$work.log" 2>&1 || { cat "$work.log"; fail "configure"; }
-grep -q "pxflow: installed libraries: pxflow_core pxflow_library_family_kernel pxflow_reference" \
+grep -q "pxflow: installed libraries: pxflow_core pxflow_library_family_kernel pxflow_own_files pxflow_reference" \
   "$work.log" || { grep "installed libraries" "$work.log"; fail "the family's library is not installed, or not in link order"; }
 
 targets=$(echo "$work"/CMakeFiles/Export/*/pxflowTargets.cmake)
@@ -27,6 +27,6 @@ grep -q "libpxflow_library_family_kernel.a" "$work/cmake_install.cmake" \
   || fail "cmake --install would not copy the family's library"
 grep -qx "find_dependency(FakeSdk)" "$work/pxflow-package/pxflowConfig.cmake" \
   || fail "pxflowConfig.cmake does not find the SDK"
-grep -q "^Libs: .*-lpxflow_core -lpxflow_library_family_kernel -lpxflow_reference .*-L/opt/fakesdk/lib -lfakesdk" \
+grep -q "^Libs: .*-lpxflow_core -lpxflow_library_family_kernel -lpxflow_own_files -lpxflow_reference .*-L/opt/fakesdk/lib -lfakesdk" \
   "$work/pxflow-package/pxflow.pc" || { grep Libs "$work/pxflow-package/pxflow.pc"; fail "pxflow.pc"; }
 echo "family install: ok"

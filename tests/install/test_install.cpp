@@ -93,6 +93,76 @@ void require_same_answer(const json& a, const json& b) {
     }
 }
 
+// The backends --json row NAME. `backends` probes every row, Vulkan included, whose lavapipe
+// driver leaks inside itself: the leak check is off for this command only
+// (tests/cli/CMakeLists.txt).
+json backend_row(const std::string& pxflow, const std::string& name) {
+  const json list =
+      json::parse(must_run("/usr/bin/env", {"ASAN_OPTIONS=detect_leaks=0:abort_on_error=1", pxflow,
+                                            "backends", "--json", "-"})
+                      .out);
+  for (const json& row : list.at("backends"))
+    if (row.at("name") == name) return row;
+  FAIL("no row " << name << " in pxflow backends");
+  return {};
+}
+
+// Does `file` contain `text` anywhere (a binary's bytes included)?
+bool file_contains(const std::string& file, const std::string& text) {
+  const std::string bytes = slurp(file);
+  REQUIRE(!bytes.empty());
+  return bytes.find(text) != std::string::npos;
+}
+
+// The installed tree with the build tree out of its reach: the prefix moved elsewhere, PATH
+// without the build folder. Everything pxflow runs or loads beside itself (the OpenCV module,
+// the Cortex-M4 firmware, the reference device) is found from the moved binary's own place.
+void check_moved_prefix(const std::string& moved, const json& expected_flow,
+                        const std::string& png1, const std::string& png2) {
+  const std::string pxflow = moved + "/bin/pxflow";
+  // The OpenCV module: decoding PNGs loads it from <moved>/lib/.../pxflow.
+  require_same_answer(flow_json(pxflow, {png1, png2}), expected_flow);
+  if (PXFLOW_HAS_DUT_REF) {
+    // The README's --dut example as an installed tree runs it, the device found in PATH; exit 0
+    // with --require ref: the row ran and every record matched.
+    must_run("/usr/bin/env", {"PATH=" + moved + "/bin:/usr/bin:/bin", pxflow, "check", "--backends",
+                              "ref-original,ref", "--dut", "ref=exec:pxflow-dut-ref", "--require",
+                              "ref", "--cases", "4"});
+  }
+  if (PXFLOW_HAS_M4_FIRMWARE) {
+    const json row = backend_row(pxflow, "m4-qemu");
+    CAPTURE(row.dump());
+    if (fs::exists("/usr/bin/qemu-system-arm")) {
+      CHECK(row.at("available") == true);  // the probe found the firmware and QEMU answered
+    } else {
+      WARN("no qemu-system-arm: only the firmware's lookup was checked");
+      CHECK(row.at("reason").get<std::string>().find("qemu-system-arm") != std::string::npos);
+    }
+  }
+}
+
+// The build's own pxflow copied alone into `dir`, as a build folder that was moved away leaves
+// it: what it cannot find is said by name and where it looked, never by a build-tree path.
+void check_binary_alone(const std::string& dir, const std::string& png1, const std::string& png2) {
+  fs::create_directories(dir);
+  const std::string alone = dir + "/pxflow";
+  const std::string real_dir = fs::canonical(dir);  // as /proc/self/exe names it
+  fs::copy_file(PXFLOW_BINARY, alone);
+  if (PXFLOW_HAS_M4_FIRMWARE && fs::exists("/usr/bin/qemu-system-arm")) {
+    const std::string reason = backend_row(alone, "m4-qemu").at("reason");
+    CAPTURE(reason);
+    CHECK(reason.find("firmware not built or not installed: no pxflow_m4_dut.elf at " + real_dir) !=
+          std::string::npos);
+    CHECK(reason.find(PXFLOW_BUILD_DIR) == std::string::npos);
+  }
+  const RunResult no_module = run_program(alone, {"flow", png1, png2});
+  CAPTURE(no_module.err);
+  CHECK(no_module.exit_code == 2);
+  CHECK(no_module.err_lines() == 1);
+  CHECK(no_module.err.find("the OpenCV module") != std::string::npos);
+  CHECK(no_module.err.find(PXFLOW_BUILD_DIR) == std::string::npos);
+}
+
 }  // namespace
 
 TEST_CASE("the installed tree runs, and a consumer built against it alone matches pxflow flow",
@@ -113,6 +183,9 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
     CAPTURE(file);
     CHECK(fs::is_regular_file(file));
   }
+  if (PXFLOW_HAS_DUT_REF) CHECK(fs::is_regular_file(prefix + "/bin/pxflow-dut-ref"));
+  if (PXFLOW_HAS_M4_FIRMWARE)
+    CHECK(fs::is_regular_file(prefix + "/" PXFLOW_DATADIR "/pxflow/pxflow_m4_dut.elf"));
   if (PXFLOW_HAS_GAP8_RUN) {
     CHECK(fs::is_regular_file(prefix + "/bin/gap8-run"));
     // It starts (its libelf resolves) and is the runner: no ELF is exit 2 with its usage.
@@ -133,6 +206,23 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
     CHECK(text.find(PXFLOW_BUILD_DIR) == std::string::npos);
     CHECK(text.find(source_dir + "/") == std::string::npos);
   }
+  // Nor does any program installed: no path of the build tree is compiled in, so none can be
+  // opened (what they load is found relative to the binary: hosts/core/own_files.hpp). A build
+  // with debug info or sanitizers records where its sources were compiled (DWARF, the
+  // sanitizers' reports), the build tree among them, with no lookup behind it: there the moved
+  // prefix below is the evidence.
+  if (PXFLOW_RECORDS_SOURCE_PATHS) {
+    WARN("debug info or sanitizers: the installed programs were not scanned for the build path");
+  } else {
+    for (const auto& entry : fs::recursive_directory_iterator(prefix)) {
+      const bool program =
+          (entry.status().permissions() & fs::perms::owner_exec) != fs::perms::none;
+      const bool module = entry.path().extension() == ".so";
+      if (!entry.is_regular_file() || !(program || module)) continue;
+      CAPTURE(entry.path());
+      CHECK_FALSE(file_contains(entry.path(), PXFLOW_BUILD_DIR));
+    }
+  }
 
   // The installed binary is this build's: the same --version line (commit, compiler, families).
   const RunResult version = must_run(pxflow, {"--version"});
@@ -150,14 +240,23 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
       CAPTURE(name);
       std::string upper = name;
       for (auto& c : upper) c = static_cast<char>(std::toupper(c));
-      CHECK(slurp(man1 + "pxflow-" + name + ".1").find(".TH PXFLOW-" + upper + " \"1\"") !=
-            std::string::npos);
+      const std::string page = slurp(man1 + "pxflow-" + name + ".1");
+      CHECK(page.find(".TH PXFLOW-" + upper + " \"1\"") != std::string::npos);
+      // Each command's page lists the global options, then the sections every page has.
+      const auto globals = page.find(".SS \"Global options");
+      CHECK(page.find("\\-\\-device\\-timeout", globals) != std::string::npos);
+      CHECK(globals < page.find(".SH \"EXIT STATUS\""));
+      CHECK(page.find(".SH ENVIRONMENT\n") != std::string::npos);
+      CHECK(page.find("PXFLOW_OPENCV_MODULE") != std::string::npos);
+      CHECK(page.find(".SH EXAMPLES\n") != std::string::npos);
       CHECK(main_page.find(".BR pxflow\\-" + name + " (1)") != std::string::npos);
     }
     if (fs::exists("/usr/bin/man")) {
       const RunResult shown = must_run("/usr/bin/man", {"-P", "cat", "-l", man1 + "pxflow.1"});
       CHECK(shown.out.find("PXFLOW(1)") != std::string::npos);
       CHECK(shown.out.find("pxflow-flow(1)") != std::string::npos);
+      for (const char* section : {"\nEXIT STATUS\n", "\nENVIRONMENT\n", "\nEXAMPLES\n"})
+        CHECK(shown.out.find(section) != std::string::npos);
       CHECK(shown.out.find(version.out.substr(0, version.out.find(' ', 7))) !=
             std::string::npos);  // the footer: "pxflow 0.1"
     } else {
@@ -211,4 +310,9 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
     require_same_answer(mine, flow_json(pxflow, {"--backend", backend, png1, png2}));
     require_same_answer(mine, from_png_ref);
   }
+
+  const std::string moved = tmp.path("moved");
+  fs::rename(prefix, moved);
+  check_moved_prefix(moved, from_png_ref, png1, png2);
+  check_binary_alone(tmp.path("alone"), png1, png2);
 }

@@ -235,7 +235,7 @@ TEST_CASE("m4-qemu: the probe says why the row cannot run", "[m4][fault]") {
   const RunResult no_fw =
       pxflow::test::run_pxflow({"backends", "--m4-firmware", "/nonexistent/pxflow_m4_dut.elf"});
   INFO(no_fw.out << no_fw.err);
-  CHECK(no_fw.out.find("firmware not built: /nonexistent/pxflow_m4_dut.elf") != std::string::npos);
+  CHECK(no_fw.out.find("firmware not found: /nonexistent/pxflow_m4_dut.elf") != std::string::npos);
   const RunResult no_qemu =
       run_program("/usr/bin/env", {"PATH=/nonexistent", PXFLOW_BINARY, "check", "--backends",
                                    "m4-qemu", "--require", "m4-qemu", "--generated-only"});

@@ -117,6 +117,11 @@ int run_gap8(const Gap8Options& o) {
 
 }  // namespace
 
+// What --help and the man page show under Examples (the command line after "pxflow ").
+const std::vector<std::string> kGap8Examples = {
+    "gap8 --variant all --cores 1-8  # the GAP8 model beside the paper's tables",
+};
+
 Command add_gap8_command(CLI::App& app) {
   auto o = std::make_shared<Gap8Options>();
   CLI::App* sub = app.add_subcommand(
@@ -136,7 +141,7 @@ Command add_gap8_command(CLI::App& app) {
   sub->add_option("--bin", o->bin, "Average N x N pixels of PREV and NEXT into one (after --crop)")
       ->check(CLI::Range(1, 64));
   sub->add_option("frames", o->frames, "PREV NEXT (default: a real pair, all 64 POIs accepted)");
-  return {sub, [o] { return run_gap8(*o); }};
+  return {sub, [o] { return run_gap8(*o); }, kGap8Examples};
 }
 
 }  // namespace pxflow::cli

@@ -1,0 +1,95 @@
+#include "help_sections.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <utility>
+
+#include "registry.hpp"
+
+namespace pxflow::cli {
+
+namespace {
+
+// The variables read outside any family (hosts/io/opencv_module.cpp).
+const std::vector<EnvironmentVariable> kCoreEnvironment = {
+    {"PXFLOW_OPENCV_MODULE",
+     "The OpenCV module to load (libpxflow_opencv.so, needed to decode images and video) "
+     "instead of the one beside pxflow or in ../lib/pxflow"}};
+
+constexpr std::size_t kWidth = 100;
+
+// "  TERM  text..." with the text wrapped at kWidth, its lines aligned under the first one
+// (help2man reads the indented lines as one paragraph).
+std::string term_paragraph(const std::string& term, std::size_t term_width,
+                           const std::string& text) {
+  const std::size_t indent = 2 + term_width + 2;
+  std::string out = "  " + term + std::string(term_width - term.size() + 2, ' ');
+  std::size_t column = indent;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (column > indent && column + 1 + word.size() > kWidth) {
+      out += "\n" + std::string(indent, ' ');
+      column = indent;
+    } else if (column > indent) {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+    start = end + 1;
+  }
+  return out + "\n";
+}
+
+// Every variable once, in name order; a variable read by several families gets every use.
+std::vector<EnvironmentVariable> environment() {
+  std::vector<EnvironmentVariable> all = kCoreEnvironment;
+  for (const BackendFamily& f : backend_families())
+    for (const EnvironmentVariable& v : f.environment) {
+      auto same =
+          std::find_if(all.begin(), all.end(), [&](const auto& a) { return a.name == v.name; });
+      if (same == all.end())
+        all.push_back(v);
+      else  // "A; b": the second use continues the sentence
+        same->help +=
+            "; " + std::string(1, static_cast<char>(std::tolower(v.help[0]))) + v.help.substr(1);
+    }
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  return all;
+}
+
+}  // namespace
+
+std::string help_sections(const std::vector<std::string>& examples) {
+  std::string text =
+      "Exit status:\n" + term_paragraph("0", 3, "Success") +
+      term_paragraph("1", 3,
+                     "A check failed (or compared nothing but the reference), a backend or a "
+                     "device failed, or a result could not be written") +
+      term_paragraph("2", 3,
+                     "Bad input: one line on stderr names the file, option, key or backend; "
+                     "nothing else is written") +
+      term_paragraph("130", 3, "Interrupted by SIGINT (Ctrl-C); 143: by SIGTERM") + "\n";
+  const auto variables = environment();
+  std::size_t width = 0;
+  for (const auto& v : variables) width = std::max(width, v.name.size());
+  text += "Environment:\n";
+  for (const auto& v : variables) text += term_paragraph(v.name, width, v.help);
+  if (!examples.empty()) {
+    text += "\nExamples:\n";
+    for (const std::string& e : examples) text += "  $ pxflow " + e + "\n";
+  }
+  return text;
+}
+
+std::vector<std::string> first_examples(const std::vector<Command>& commands) {
+  std::vector<std::string> examples;
+  for (const Command& c : commands)
+    if (!c.examples.empty()) examples.push_back(c.examples.front());
+  return examples;
+}
+
+}  // namespace pxflow::cli
