@@ -2,9 +2,9 @@
 // as JSON with the family of each row.
 #include <cstdio>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "json_document.hpp"
 #include "output_file.hpp"
 #include "registry.hpp"
 
@@ -13,7 +13,7 @@ namespace {
 
 int run_backends(const std::string& json_path) {
   if (!json_path.empty()) check_output_path("--json", json_path);
-  nlohmann::json rows = nlohmann::json::array();
+  Json rows = Json::array();
   const bool table = json_path != kStdoutPath;
   if (table) std::printf("%-14s %-10s %s\n", "backend", "status", "needs / reason");
   for (const auto& row : backend_rows()) {
@@ -21,7 +21,7 @@ int run_backends(const std::string& json_path) {
     if (table)
       std::printf("%-14s %-10s %s\n", row.name.c_str(), why.empty() ? "available" : "skipped",
                   why.empty() ? row.needs.c_str() : why.c_str());
-    rows.push_back({{"name", row.name},
+    rows.push_back({{"backend", row.name},
                     {"family", row.family},
                     {"available", why.empty()},
                     {"reason", why},
@@ -29,8 +29,7 @@ int run_backends(const std::string& json_path) {
                     {"has_devices", row.has_devices},
                     {"preferred", row.preferred}});
   }
-  if (!json_path.empty())
-    write_output_file(json_path, nlohmann::json{{"backends", rows}}.dump(2) + "\n");
+  if (!json_path.empty()) write_output_file(json_path, json_document(Json{{"backends", rows}}));
   return 0;
 }
 

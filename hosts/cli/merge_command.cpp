@@ -6,6 +6,7 @@
 #include "check_merge.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
+#include "json_document.hpp"
 #include "output_file.hpp"
 
 namespace pxflow::cli {
@@ -55,7 +56,7 @@ int run_merge_command(const MergeArgs& a) {
   for (const BackendOutcome& b : m.backends)
     for (const std::string& line : b.failures) human << line << "\n";
   print_check_summary(m, human);
-  const std::string json = check_json(m).dump(2) + "\n";
+  const std::string json = json_document(check_json(m));
   if (to_stdout)
     std::cout << json;
   else

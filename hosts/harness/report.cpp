@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "errors.hpp"
+#include "json_document.hpp"
 #include "output_file.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
@@ -315,13 +316,13 @@ void write_report(const std::string& out_dir, const ReportInputs& in) {
   const std::filesystem::path dir(out_dir);
   write_file(dir / "report.md", render_md(secs));
   write_file(dir / "report.html", render_html(secs, dir));
-  write_file(dir / "results.json", results.dump(2) + "\n");
+  write_file(dir / "results.json", json_document(results));
   write_file(dir / "results.csv", bench_csv(in.bench));
   write_file(
       dir / "conformance.csv",
-      csv({"name", "state", "passed", "failed", "not_applicable", "pairs", "seconds", "reason"},
+      csv({"backend", "state", "passed", "failed", "not_applicable", "pairs", "seconds", "reason"},
           in.check.is_null() ? std::vector<const Json*>{}
-                             : sorted_by_rank(in.check["backends"], "name")));
+                             : sorted_by_rank(in.check["backends"], "backend")));
   std::vector<const Json*> accuracy_rows;
   for (const auto& r : in.accuracy_rows) accuracy_rows.push_back(&r);
   write_file(dir / "accuracy.csv",

@@ -111,7 +111,7 @@ TEST_CASE("pxflow report charts the GAP8 rows by the model's clock, apart from t
   // The model's version is in the provenance, from the backend itself.
   bool described = false;
   for (const auto& b : j["provenance"]["backends"])
-    if (b["name"] == "gap8-fast")
+    if (b["backend"] == "gap8-fast")
       described = b["driver"].get<std::string>().rfind("gap8_model ", 0) == 0;
   CHECK(described);
 }

@@ -11,6 +11,7 @@
 #include "gap8_cli.hpp"
 #include "gap8_flow_runner.hpp"
 #include "gap8_study.hpp"
+#include "json_document.hpp"
 #include "output_file.hpp"
 
 namespace pxflow::cli {
@@ -109,7 +110,7 @@ int run_gap8(const Gap8Options& o) {
   // `--json -` puts the JSON alone on standard output, so that it can be piped.
   if (o.json_path != kStdoutPath) gap8_study::print_tables(study);
   if (!o.json_path.empty())
-    write_output_file(o.json_path, gap8_study::to_json(study).dump(2) + "\n");
+    write_output_file(o.json_path, json_document(gap8_study::to_json(study)));
   return 0;
 }
 
