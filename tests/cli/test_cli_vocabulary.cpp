@@ -119,7 +119,7 @@ TEST_CASE("every JSON file pxflow writes starts with pxflow {version, commit}",
     CHECK(j["pxflow"]["version"].get<std::string>().rfind("0.", 0) == 0);
     const std::string c = j["pxflow"]["commit"];
     CHECK(!c.empty());
-    CHECK(commit.empty() || c == commit);  // one build wrote them all
+    CHECK((commit.empty() || c == commit));  // one build wrote them all
     commit = c;
   }
   // Whole counts are integers in gap8's JSON, where it was written.
@@ -130,4 +130,24 @@ TEST_CASE("every JSON file pxflow writes starts with pxflow {version, commit}",
       CHECK(one[key].is_number_integer());
     CHECK(one["phases"]["flow"].is_number_integer());
   }
+}
+
+TEST_CASE("a count of one is singular: 1 pair, 1 point, 1 case", "[cli]") {
+  pxflow::test::TempDir dir;
+  const std::string data = pxflow::kSampleDataDir;
+  dir.write("list.txt", data + "/rubberwhale1.png " + data + "/rubberwhale2.png\n");
+  const auto flow = run_pxflow({"flow", "--pairs", dir.path("list.txt")});
+  INFO(flow.err);
+  CHECK(flow.out.find(": 1 pair (2 frames) in ") != std::string::npos);
+  const auto bench =
+      run_pxflow({"bench", "--backend", "ref-local", "--batch", "1", "--min-time", "0"});
+  CHECK(bench.out.rfind("pxflow bench: 1 point; ", 0) == 0);
+  // The generated corpus has 16 cases: its last shard of 16 has one.
+  const auto check =
+      run_pxflow({"check", "--backends", "ref-local", "--generated-only", "--shard", "16/16"});
+  INFO(check.out);
+  CHECK(check.out.find("shard 16/16: 1 case, ") != std::string::npos);
+  for (const auto* r : {&flow, &bench, &check})
+    for (const char* plural : {" 1 pairs", " 1 points", " 1 cases", " 1 threads", " 1 frames"})
+      CHECK(r->out.find(plural) == std::string::npos);
 }

@@ -50,13 +50,16 @@ TEST_CASE("bench: one aligned table, the implementation cpu ran, the bound as a 
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   const auto lines = lines_of(r.out);
-  // What `cpu` dispatched to is named before the table: an ISA row's name and the threads.
+  // What `cpu` dispatched to is named before the table: an ISA row's name, and no thread count
+  // (each point's line says its threads: the thread sweep runs the same backend on one).
   bool cpu_named = false;
   for (const auto& l : lines)
     if (l.rfind("  cpu ", 0) == 0)
-      for (const char* isa : {"avx512bw, ", "avx2, ", "sse41, ", "sse2, ", "swar, ", "neon, "})
-        cpu_named |= l.find(isa) != std::string::npos && l.find(" threads") != std::string::npos;
+      for (const std::string isa : {"avx512bw", "avx2", "sse41", "sse2", "swar", "neon"})
+        cpu_named |= l.size() > isa.size() && l.ends_with(" " + isa);
   CHECK(cpu_named);
+  for (const auto& l : lines)
+    if (l.rfind("-- ", 0) == 0) CHECK(l.find(" threads=") != std::string::npos);
   // Registry order whatever order --backends named them in; every timed row's columns start
   // where the header's do.
   std::size_t header = 0;

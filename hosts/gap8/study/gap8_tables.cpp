@@ -144,9 +144,9 @@ void print_tables(const Study& s) {
       if (cores != 1 && cores != by.rbegin()->first) continue;
       // On several cores the saving is shared: core 0's SAD work is about 1/cores of the total.
       const double saved = 3.0 * m.sad_ops / cores;
-      std::printf("  %-9s %d core(s): %.1fk cycles -> about %.1fk with a one-cycle SAD (-%.1f%%)\n",
-                  gap8_variant(v).name, cores, m.cycles / 1000, (m.cycles - saved) / 1000,
-                  saved / m.cycles * 100);
+      std::printf("  %-9s %s: %.1fk cycles -> about %.1fk with a one-cycle SAD (-%.1f%%)\n",
+                  gap8_variant(v).name, counted(cores, "core").c_str(), m.cycles / 1000,
+                  (m.cycles - saved) / 1000, saved / m.cycles * 100);
     }
   std::printf(
       "\nPer core at the largest core count: IPC (instructions / active cycles), "
