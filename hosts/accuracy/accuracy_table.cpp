@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "accuracy_run.hpp"
+#include "counted.hpp"
 
 namespace pxflow::accuracy {
 namespace {
@@ -38,7 +39,7 @@ std::string format_accuracy(const AccuracyReport& r, const AccuracyOptions& o) {
   std::string images;
   for (const auto& name : r.images) images += (images.empty() ? "" : ", ") + name;
   std::string out = "pxflow accuracy: backend " + o.backend + ", seed " + std::to_string(o.seed) +
-                    ", " + std::to_string(o.threads) + " thread(s) for OpenCV and the backend\n";
+                    ", " + counted(o.threads, "thread") + " for OpenCV and the backend\n";
   out += "synthetic pairs from " + images + " (opencv-doc)\n";
   out +=
       "error = |estimated frame flow - reference| in pixels (Euclidean); time = median per frame, "

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "counted.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
 #include "frame_ops.hpp"
@@ -161,7 +162,7 @@ std::vector<VideoPair> video_pairs(const std::string& path, int count) {
   }
   if (out.size() < static_cast<std::size_t>(count))
     throw InputError(path + ": has fewer than " + std::to_string(count) + " frame pairs " +
-                     std::to_string(step) + " frames apart");
+                     counted(step, "frame") + " apart");
   return out;
 }
 

@@ -30,10 +30,6 @@ std::string version_text() {
 
 }  // namespace
 
-namespace cli {
-VersionInfo pxflow_version_info() { return {PXFLOW_VERSION, PXFLOW_COMMIT}; }
-}  // namespace cli
-
 int run_pxflow(int argc, char** argv) {
   install_interrupt_handlers();
   CLI::App app{

@@ -2,9 +2,9 @@
 // as JSON with the family of each row.
 #include <cstdio>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "json_document.hpp"
 #include "output_plan.hpp"
 #include "registry.hpp"
 
@@ -15,7 +15,7 @@ int run_backends(const std::string& json_path) {
   OutputPlan plan;
   OutputFile* const json_file = json_path.empty() ? nullptr : &plan.file("--json", json_path);
   plan.prepare();
-  nlohmann::json rows = nlohmann::json::array();
+  Json rows = Json::array();
   const bool table = json_path != kStdoutPath;
   if (table) std::printf("%-14s %-10s %s\n", "backend", "status", "needs / reason");
   for (const auto& row : backend_rows()) {
@@ -23,7 +23,7 @@ int run_backends(const std::string& json_path) {
     if (table)
       std::printf("%-14s %-10s %s\n", row.name.c_str(), why.empty() ? "available" : "skipped",
                   why.empty() ? row.needs.c_str() : why.c_str());
-    rows.push_back({{"name", row.name},
+    rows.push_back({{"backend", row.name},
                     {"family", row.family},
                     {"available", why.empty()},
                     {"reason", why},
@@ -31,7 +31,7 @@ int run_backends(const std::string& json_path) {
                     {"has_devices", row.has_devices},
                     {"preferred", row.preferred}});
   }
-  if (json_file) json_file->write(nlohmann::json{{"backends", rows}}.dump(2) + "\n");
+  if (json_file) json_file->write(json_document(Json{{"backends", rows}}));
   return 0;
 }
 

@@ -5,8 +5,10 @@
 #include "bench.hpp"
 #include "command_line.hpp"
 #include "commands.hpp"
+#include "counted.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
+#include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
 #include "progress.hpp"
@@ -19,6 +21,9 @@ struct BenchArgs {
   std::string backend, backends, batches, threads, sizes, radii, json_path;
   std::string command;  // the command line as run (command_line.hpp)
   double min_time = 0.25;
+  bool quick = false;
+  int sweep_threads = 0;  // the default sweeps' host threads (0 = all cores)
+  CLI::Option *min_time_opt = nullptr, *sweep_threads_opt = nullptr;
   BackendOptions backend_options;
 };
 
@@ -36,8 +41,18 @@ std::vector<BenchPoint> bench_points(const BenchArgs& a) {
   if (!a.sizes.empty() && (a.problem.sets_key("width") || a.problem.sets_key("height")))
     throw InputError("--size and --set width/height both set the frame size; give one");
   const Params base = a.problem.resolve(std::nullopt);
-  if (a.batches.empty() && a.threads.empty() && a.sizes.empty() && a.radii.empty())
-    return default_bench_points(base, a.problem.profile);
+  const bool custom =
+      !a.batches.empty() || !a.threads.empty() || !a.sizes.empty() || !a.radii.empty();
+  if (custom && (a.quick || a.sweep_threads_opt->count() > 0))
+    throw InputError(std::string(a.quick ? "--quick" : "--sweep-threads") +
+                     ": shapes the default sweeps; --batch, --threads, --size and --radius "
+                     "replace them: give one kind (see pxflow bench --help)");
+  if (!custom) {
+    std::vector<BenchPoint> pts = a.quick ? quick_bench_points(base, a.problem.profile)
+                                          : default_bench_points(base, a.problem.profile);
+    set_sweep_threads(pts, a.sweep_threads);
+    return pts;
+  }
   const auto batches =
       a.batches.empty() ? std::vector<int>{256} : int_list(a.batches, "--batch", 1, 1 << 20);
   const auto threads =
@@ -68,7 +83,7 @@ int run_bench_command(const BenchArgs& a) {
   o.backends = split_list(a.backend.empty() ? a.backends : a.backend);
   for (const std::string& name : o.backends) (void)find_backend(name);  // before any output
   o.points = bench_points(a);
-  o.min_seconds = a.min_time;
+  o.min_seconds = a.quick && a.min_time_opt->count() == 0 ? kQuickMinSeconds : a.min_time;
   o.backend_options = a.backend_options;
   // `--json -`: the JSON is standard output, so the table goes to standard error.
   const bool json_to_stdout = a.json_path == "-";
@@ -76,12 +91,13 @@ int run_bench_command(const BenchArgs& a) {
   OutputFile* const json_file = a.json_path.empty() ? nullptr : &plan.file("--json", a.json_path);
   plan.prepare();
   std::ostream& out = json_to_stdout ? std::cerr : std::cout;
-  out << "pxflow bench: " << o.points.size() << " points; each backend's records are checked "
+  out << "pxflow bench: " << counted(o.points.size(), "point")
+      << "; each backend's records are checked "
       << "against ref-original before it is timed; ns/frame is the median over repeats "
          "(min..max)\n";
   BenchReport r = run_bench(o, out);
   r.command = a.command;
-  const std::string json = bench_json(r).dump(2) + "\n";
+  const std::string json = json_document(bench_json(r));
   if (json_file) json_file->write(json);
   return 0;
 }
@@ -108,9 +124,18 @@ Command add_bench_command(CLI::App& app) {
       ->check(non_empty_list());
   sub->add_option("--size", a->sizes, "Frame sizes, WxH[,WxH...]")->check(non_empty_list());
   sub->add_option("--radius", a->radii, "Search radii, S[,S...]")->check(non_empty_list());
-  sub->add_option("--min-time", a->min_time, "Seconds of repeats per point and backend")
-      ->check(CLI::Range(0.0, 600.0))
-      ->capture_default_str();
+  a->min_time_opt =
+      sub->add_option("--min-time", a->min_time, "Seconds of repeats per point and backend")
+          ->check(CLI::Range(0.0, 600.0))
+          ->capture_default_str();
+  sub->add_flag("--quick", a->quick,
+                "The default sweeps' quick subset: batch <= 256 and the frame sizes, no radius or "
+                "thread sweep, --min-time 0.05 unless given (what report --quick runs)");
+  a->sweep_threads_opt =
+      sub->add_option("--sweep-threads", a->sweep_threads,
+                      "Host threads of every default-sweep point but the thread sweep's "
+                      "(0 = all cores; what report --threads N runs)")
+          ->check(CLI::Range(0, 1024));
   sub->add_option("--device", a->backend_options.device,
                   "Device index or name substring (GPU backends)");
   sub->add_option("--json", a->json_path,

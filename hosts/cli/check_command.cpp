@@ -5,6 +5,7 @@
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
+#include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
 #include "progress.hpp"
@@ -74,7 +75,7 @@ int run_check_command(const CheckArgs& a) {
   o.corpus.data_dir = a.data_dir;
   o.corpus.real = !a.generated_only;
   o.command = command_line(a);
-  const VersionInfo built = pxflow_version_info();
+  const BuildIdentity built = build_identity();
   o.pxflow_version = built.version;
   o.pxflow_commit = built.commit;
   const bool json_to_stdout = a.json_path == kStdoutPath;
@@ -96,7 +97,7 @@ int run_check_command(const CheckArgs& a) {
   if (merge_judges)
     human << "shard " << o.shard.text()
           << " compared nothing: exit 0, pxflow merge judges the whole campaign\n";
-  const std::string json = check_json(r).dump(2) + "\n";
+  const std::string json = json_document(check_json(r));
   if (json_file) json_file->write(json);
   return r.ok() || merge_judges ? 0 : 1;
 }

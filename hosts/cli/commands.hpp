@@ -28,12 +28,6 @@ Command add_bench_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_accuracy_command(CLI::App& app);
 
-// pxflow's version and the commit it was built from (what --version prints first).
-struct VersionInfo {
-  std::string version, commit;
-};
-VersionInfo pxflow_version_info();
-
 // --progress: progress lines on stderr even when it is not a terminal (CI logs).
 void add_progress_flag(CLI::App& sub);
 

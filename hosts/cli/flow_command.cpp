@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "counted.hpp"
 #include "draw_flow.hpp"
 #include "errors.hpp"
 #include "estimate.hpp"
@@ -18,6 +19,7 @@
 #include "frame_sequence.hpp"
 #include "grid.hpp"
 #include "interrupt.hpp"
+#include "json_document.hpp"
 #include "output_plan.hpp"
 #include "registry.hpp"
 
@@ -87,8 +89,10 @@ class FlowRunner {
     r.host_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     r.device_time = backend_->last_device_time();
     r.prev_name = prev.name, r.next_name = next.name;
+    if (!o_.crop.empty()) parse_crop(o_.crop, r.shaping);
+    r.shaping.bin = o_.bin;
     r.backend = row_.name, r.implementation = backend_->describe().implementation;
-    r.device = backend_->describe().device;
+    r.device = device_or_host(backend_->describe());
     r.profile = o_.problem.profile;
     r.params = &params_;
     r.result = estimate_flow(records_, params_);
@@ -108,11 +112,8 @@ class FlowRunner {
   std::vector<PoiRecord> records_;
 };
 
-std::string file_name(const std::string& name) { return fs::path(name).filename().string(); }
-
 std::string picture(const NamedFrame& prev, const PairRun& r) {
-  return flow_png(prev.frame.view(), *r.params, r.records, r.result,
-                  {file_name(r.prev_name) + " -> " + file_name(r.next_name), r.backend, r.profile});
+  return flow_png(prev.frame.view(), *r.params, r.records, r.result, draw_caption(r));
 }
 
 NamedFrame shaped(NamedFrame f, const FrameShaping& s) {
@@ -138,7 +139,7 @@ int run_single(const FlowOptions& o, const BackendRow& row, const FrameShaping& 
   FlowRunner runner(o, row, false);
   const PairRun r = runner.run(prev, next);
   if (draw) draw->write(picture(prev, r));
-  const std::string object = pair_json(r).dump() + "\n";
+  const std::string object = json_document(pair_json(r), -1);
   if (json) json->write(object);
   if (jsonl) jsonl->write(object);
   if (csv) csv->write(csv_header() + csv_row(0, r));
@@ -194,14 +195,14 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
   NamedFrame prev, next;
   bool have_prev = false;
   auto one_pair = [&](const NamedFrame& a, const NamedFrame& b) {
-    stop_if_interrupted(std::to_string(pairs) + " pairs done");
+    stop_if_interrupted(counted(pairs, "pair") + " done");
     const PairRun r = runner.run(a, b);
     if (draw) {
       char name[32];
       std::snprintf(name, sizeof name, "pair-%06d.png", pairs);
       draw->write(name, picture(a, r));
     }
-    if (jsonl) jsonl->add(pair_json(r).dump() + "\n");
+    if (jsonl) jsonl->add(json_document(pair_json(r), -1));
     if (csv) csv->add(csv_row(pairs, r));
     if (lines) std::fputs(pair_line(pairs, r).c_str(), lines);
     backend_seconds += r.host_seconds;
@@ -209,7 +210,7 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
         r.backend +
         (r.implementation.empty() || r.implementation == r.backend ? ""
                                                                    : " -> " + r.implementation) +
-        (r.device.empty() ? "" : " on " + r.device);
+        (r.device == "host" ? "" : " on " + r.device);
     ++pairs;
   };
   const auto more = [&] { return o.max_pairs == 0 || pairs < o.max_pairs; };
@@ -240,9 +241,10 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
   char buf[256];
   std::snprintf(buf, sizeof buf,
-                "%d pairs (%d frames) in %.3f s: %.1f pairs/s with decoding, %.1f pairs/s in the "
+                "%s (%s) in %.3f s: %.1f pairs/s with decoding, %.1f pairs/s in the "
                 "backend (%.3f s, host steady_clock)\n",
-                pairs, o.pairs_given ? 2 * pairs : pairs + 1, wall, pairs / wall,
+                counted(pairs, "pair").c_str(),
+                counted(o.pairs_given ? 2 * pairs : pairs + 1, "frame").c_str(), wall, pairs / wall,
                 backend_seconds > 0 ? pairs / backend_seconds : 0.0, backend_seconds);
   std::FILE* summary = stdout_taken ? stderr : stdout;
   std::fprintf(summary, "flow: %s, %s: %s", last_what.c_str(), o.problem.profile.c_str(), buf);

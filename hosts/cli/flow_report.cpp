@@ -1,6 +1,7 @@
 #include "flow_report.hpp"
 
 #include <cstdio>
+#include <filesystem>
 
 #include "commands.hpp"
 
@@ -56,7 +57,7 @@ std::string csv_field(const std::string& s) {
 std::string what_ran(const PairRun& r) {
   std::string s = r.backend;
   if (!r.implementation.empty() && r.implementation != r.backend) s += " -> " + r.implementation;
-  if (!r.device.empty()) s += " on " + r.device;
+  if (r.device != "host") s += " on " + r.device;
   return s;
 }
 
@@ -71,13 +72,15 @@ std::string mincount_note(const PairRun& run) {
 }
 
 Json pair_json(const PairRun& run) {
-  const VersionInfo v = pxflow_version_info();
   Json j;
-  j["pxflow"] = {{"version", v.version}, {"commit", v.commit}};
   j["backend"] = run.backend;
   j["implementation"] = run.implementation.empty() ? run.backend : run.implementation;
-  j["device"] = run.device.empty() ? "host" : run.device;
-  j["inputs"] = {{"prev", run.prev_name}, {"next", run.next_name}};
+  j["device"] = run.device;
+  const std::string crop = crop_text(run.shaping);
+  j["inputs"] = {{"prev", run.prev_name},
+                 {"next", run.next_name},
+                 {"crop", crop.empty() ? Json() : Json(crop)},
+                 {"bin", run.shaping.bin}};
   j["width"] = run.params->width;
   j["height"] = run.params->height;
   j["profile"] = run.profile;
@@ -90,9 +93,25 @@ Json pair_json(const PairRun& run) {
   return j;
 }
 
+std::string crop_text(const FrameShaping& s) {
+  if (!s.cropped) return {};
+  return std::to_string(s.crop_w) + "x" + std::to_string(s.crop_h) + "+" +
+         std::to_string(s.crop_x) + "+" + std::to_string(s.crop_y);
+}
+
+DrawCaption draw_caption(const PairRun& run) {
+  const auto file_name = [](const std::string& path) {
+    return std::filesystem::path(path).filename().string();
+  };
+  std::string frames = file_name(run.prev_name) + " -> " + file_name(run.next_name);
+  if (run.shaping.cropped) frames += ", crop " + crop_text(run.shaping);
+  if (run.shaping.bin > 1) frames += ", bin " + std::to_string(run.shaping.bin);
+  return {frames, run.backend, run.profile};
+}
+
 std::string csv_header() {
-  return "pair,prev,next,width,height,flow_x,flow_y,flow_x_bits,flow_y_bits,quality,meancount,"
-         "accepted,rejected,dropped\n";
+  return "pair,prev,next,crop,bin,backend,profile,width,height,flow_x,flow_y,flow_x_bits,"
+         "flow_y_bits,quality,meancount,accepted,rejected,dropped\n";
 }
 
 std::string csv_row(int index, const PairRun& run) {
@@ -101,8 +120,10 @@ std::string csv_row(int index, const PairRun& run) {
   char flow[64];
   std::snprintf(flow, sizeof flow, "%.9g,%.9g", r.flow_x, r.flow_y);
   return std::to_string(index) + "," + csv_field(run.prev_name) + "," + csv_field(run.next_name) +
-         "," + std::to_string(run.params->width) + "," + std::to_string(run.params->height) + "," +
-         flow + "," + float_bits_hex(r.flow_x) + "," + float_bits_hex(r.flow_y) + "," +
+         "," + crop_text(run.shaping) + "," + std::to_string(run.shaping.bin) + "," +
+         csv_field(run.backend) + "," + csv_field(run.profile) + "," +
+         std::to_string(run.params->width) + "," + std::to_string(run.params->height) + "," + flow +
+         "," + float_bits_hex(r.flow_x) + "," + float_bits_hex(r.flow_y) + "," +
          std::to_string(r.quality) + "," + std::to_string(r.meancount) + "," +
          std::to_string(c.accepted) + "," + std::to_string(c.rejected) + "," +
          std::to_string(c.dropped) + "\n";

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "backend.hpp"
+#include "draw_flow.hpp"
+#include "frame_ops.hpp"
 #include "result_json.hpp"
 
 namespace pxflow::cli {
@@ -13,6 +15,7 @@ namespace pxflow::cli {
 // Everything known about one pair once the backend ran.
 struct PairRun {
   std::string prev_name, next_name;
+  FrameShaping shaping;  // --crop and --bin: how each input became the frame the backend saw
   std::string backend, implementation, device, profile;
   const Params* params = nullptr;
   FrameResult result;
@@ -22,13 +25,20 @@ struct PairRun {
   std::optional<Backend::DeviceTime> device_time;
 };
 
-// The JSON object: pxflow's version and commit, what ran (backend, implementation, device), the
-// inputs, the frame size, profile and params, then the estimate as flow_result_json gives it
-// (the records with their status names). No times: the bytes depend on the inputs only.
+// The JSON object: what ran (backend, implementation, device), the inputs (prev, next, crop,
+// bin), the frame size, profile and params, then the estimate as flow_result_json gives it (the
+// records with their status names). No times, no thread count: the bytes depend on the inputs,
+// the options that shape the result and the build only (json_document adds the build).
 Json pair_json(const PairRun& run);
 
 // Why the flow is 0 when MINCOUNT decided it ("" otherwise).
 std::string mincount_note(const PairRun& run);
+
+// "WxH+X+Y" of --crop as the frames were cut ("" without --crop).
+std::string crop_text(const FrameShaping& s);
+
+// The picture's caption (--draw): the frame names with the crop and binning, backend, profile.
+DrawCaption draw_caption(const PairRun& run);
 
 std::string csv_header();
 std::string csv_row(int index, const PairRun& run);

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "errors.hpp"
 #include "input_file.hpp"
+#include "json_document.hpp"
 #include "output_plan.hpp"
 
 namespace pxflow::cli {
@@ -62,7 +63,7 @@ int run_merge_command(const MergeArgs& a) {
   for (const BackendOutcome& b : m.backends)
     for (const std::string& line : b.failures) human << line << "\n";
   print_check_summary(m, human);
-  const std::string json = check_json(m).dump(2) + "\n";
+  const std::string json = json_document(check_json(m));
   out.write(json);
   return m.ok() ? 0 : 1;
 }

@@ -158,7 +158,7 @@ Json read_json(const std::string& option, const std::string& path, const char* k
   try {  // every field the report reads, with its type
     if (is_check)
       for (const auto& b : j["backends"]) {
-        (void)b.at("name").get<std::string>(), (void)b.at("state").get<std::string>();
+        (void)b.at("backend").get<std::string>(), (void)b.at("state").get<std::string>();
         (void)b.at("passed").get<long>(), (void)b.at("failed").get<long>();
       }
     else
@@ -198,7 +198,7 @@ void describe_opened_backends(ReportInputs& in, const ReportArgs& a) {
   }
   std::vector<std::string> names = split_list(a.backends);
   if (names.empty() && !in.check.is_null())
-    for (const auto& b : in.check["backends"]) names.push_back(b.value("name", ""));
+    for (const auto& b : in.check["backends"]) names.push_back(b.value("backend", ""));
   for (const BackendRow& row : backend_rows()) {
     if (std::find(names.begin(), names.end(), row.name) == names.end()) continue;
     OpenedBackend opened = open_backend(row, a.backend_options());
@@ -312,22 +312,16 @@ int run_report(const ReportArgs& a) {
     BenchOptions o;
     o.backends = split_list(a.backends);
     o.backend_options = a.backend_options();
-    o.points = default_bench_points(profile("px4flow-64"), "px4flow-64");
-    for (BenchPoint& p : o.points)
-      if (p.sweep != "threads") p.threads = a.threads;
-    if (a.quick) {
-      std::erase_if(o.points, [](const BenchPoint& p) {
-        return p.batch > 256 || p.sweep == "radius" || p.sweep == "threads";
-      });
-      o.min_seconds = 0.05;
-    }
-    in.bench_command =
-        a.pxflow("bench") + backends +
-        (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
-        (a.threads ? " (default sweeps at --threads " + std::to_string(a.threads) + ")" : "") +
-        (a.quick ? " (quick subset: batch <= 256, no radius/thread sweep, "
-                   "--min-time 0.05)"
-                 : "");
+    // The bench's own default profile and sweeps, so that the recorded command reruns them.
+    const Params base = profile("px4flow-64");
+    o.points =
+        a.quick ? quick_bench_points(base, "px4flow-64") : default_bench_points(base, "px4flow-64");
+    set_sweep_threads(o.points, a.threads);
+    if (a.quick) o.min_seconds = kQuickMinSeconds;
+    in.bench_command = a.pxflow("bench") + backends +
+                       (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
+                       (a.threads ? " --sweep-threads " + std::to_string(a.threads) : "") +
+                       (a.quick ? " --quick" : "");
     std::cout << "== " << in.bench_command << "\n";
     BenchReport r = run_bench(o, std::cout);
     r.command = in.bench_command;

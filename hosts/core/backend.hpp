@@ -63,6 +63,12 @@ class Backend {
   virtual Description describe() const { return {}; }
 };
 
+// Where a backend runs, as every result says it: its device (OpenCL, Vulkan, a model, a board),
+// or "host" for code on the host CPU. A result whose backend did not run says "".
+inline std::string device_or_host(const Backend::Description& d) {
+  return d.device.empty() ? "host" : d.device;
+}
+
 // One row of the registry.
 struct BackendRow {
   std::string name;   // used everywhere: --backend, check lines, bench rows, reports

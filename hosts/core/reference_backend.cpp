@@ -18,7 +18,13 @@ class ReferenceBackend final : public Backend {
       reference_flow(variant_, pairs[n], p, out.subspan(n * per_pair, per_pair), counts);
   }
 
-  Description describe() const override { return {"reference/ scalar C++, 1 thread", {}, {}}; }
+  // The file that holds the variant's own step ("ref-original" -> reference/kernel_original.cpp);
+  // one thread always, so there is no thread count to say.
+  Description describe() const override {
+    std::string_view name = ref_variant_name(variant_);
+    name.remove_prefix(name.find('-') + 1);
+    return {"reference/kernel_" + std::string(name) + ".cpp (scalar C++)", {}, {}};
+  }
 
  private:
   RefVariant variant_;

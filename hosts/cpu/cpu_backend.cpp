@@ -47,10 +47,9 @@ class CpuBackend final : public Backend {
     for (const OpCounts& c : item_counts) counts += c;
   }
 
-  // The ISA row that runs (what `cpu` dispatched to) and how many host threads run it.
-  Description describe() const override {
-    return {std::string(kernel_.name) + ", " + std::to_string(pool_.size()) + " threads", {}, {}};
-  }
+  // The ISA row that runs (what `cpu` dispatched to). Not the thread count: the records do not
+  // depend on it (flow's JSON must not either), and bench names each point's threads itself.
+  Description describe() const override { return {std::string(kernel_.name), {}, {}}; }
 
  private:
   // Few large frames would leave cores idle (and one late-waking worker costs a whole frame):

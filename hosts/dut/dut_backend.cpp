@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstring>
 
+#include "counted.hpp"
 #include "estimate.hpp"
 #include "grid.hpp"
 
@@ -46,7 +47,7 @@ std::string DutBackend::unsupported(const Params& p) const {
            " frame is larger than the device's " + std::to_string(h.max_pixels) +
            " pixels (HELLO max_pixels)";
   if (poi_count(p) > h.max_pois)
-    return std::to_string(poi_count(p)) + " POIs are more than the device's " +
+    return counted(poi_count(p), "POI") + " are more than the device's " +
            std::to_string(h.max_pois) + " (HELLO max_pois)";
   return {};
 }

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cli_extension.hpp"
+#include "counted.hpp"
 #include "dut_wire.hpp"
 #include "errors.hpp"
 #include "estimate.hpp"
@@ -21,6 +22,7 @@
 #include "grid.hpp"
 #include "input_file.hpp"
 #include "interrupt.hpp"
+#include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
 #include "synthetic.hpp"
@@ -218,16 +220,17 @@ int write_vectors(const VectorsArgs& a) {
     put32(flow, static_cast<std::uint32_t>(r.meancount));
   }
   const std::string records = records_bytes(v.answer.records);
-  out["manifest.json"]->write(manifest(v, a).dump(2) + "\n");
+  out["manifest.json"]->write(json_document(manifest(v, a)));
   if (a.format == "bin") {
     out["frames.bin"]->write(frames);
     out["records.bin"]->write(records);
     out["flow.bin"]->write(flow);
   } else {
     std::ostringstream h;
-    h << "/* pxflow test vectors (pxflow vectors --format c): " << v.pairs.size() << " pairs of "
-      << v.p.width << "x" << v.p.height << ", S=" << v.p.search_radius << " B=" << v.p.blocks
-      << ", " << source_text(a) << ". Layout: manifest.json. */\n#ifndef PXFLOW_VECTORS_H\n"
+    h << "/* pxflow test vectors (pxflow vectors --format c): " << counted(v.pairs.size(), "pair")
+      << " of " << v.p.width << "x" << v.p.height << ", S=" << v.p.search_radius
+      << " B=" << v.p.blocks << ", " << source_text(a)
+      << ". Layout: manifest.json. */\n#ifndef PXFLOW_VECTORS_H\n"
       << "#define PXFLOW_VECTORS_H\n#include <stdint.h>\n#define PXV_PAIRS " << v.pairs.size()
       << "u\n#define PXV_WIDTH " << v.p.width << "u\n#define PXV_HEIGHT " << v.p.height
       << "u\n#define PXV_POIS " << poi_count(v.p) << "u\n#define PXV_S " << v.p.search_radius
@@ -244,8 +247,8 @@ int write_vectors(const VectorsArgs& a) {
                                    c_array("pxv_flow", flow));
     out["pxflow_vectors_check.c"]->write(kCChecker);
   }
-  std::printf("wrote %zu pairs (%dx%d, %s) to %s\n", v.pairs.size(), v.p.width, v.p.height,
-              source_text(a).c_str(), a.out.c_str());
+  std::printf("wrote %s (%dx%d, %s) to %s\n", counted(v.pairs.size(), "pair").c_str(), v.p.width,
+              v.p.height, source_text(a).c_str(), a.out.c_str());
   return 0;
 }
 
@@ -301,7 +304,8 @@ int verify_vectors(const VectorsArgs& a) {
   const Comparison c =
       compare_with_reference({a.verify_records, "vectors", a.verify_dir}, names, p, want, got, 20);
   for (const std::string& line : c.lines) std::printf("%s\n", line.c_str());
-  std::printf("%zu pairs: %s\n", pairs, c.ok() ? "all records and flow bits equal" : "MISMATCH");
+  std::printf("%s: %s\n", counted(pairs, "pair").c_str(),
+              c.ok() ? "all records and flow bits equal" : "MISMATCH");
   return c.ok() ? 0 : 1;
 }
 

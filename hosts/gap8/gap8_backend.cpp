@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstring>
 
+#include "counted.hpp"
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "grid.hpp"
@@ -50,7 +51,7 @@ void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p, std::sp
 
 Backend::Description Gap8Backend::describe() const {
   return {std::string("kernels/gap8 ") + gap8_variant(variant_).name + " on " +
-              std::to_string(options_.cores) + " cores, TCDM contention " +
+              counted(options_.cores, "core") + ", TCDM contention " +
               (options_.contention ? "on" : "off") + ", POIs " +
               (options_.chunked ? "in chunks" : "round robin"),
           "GAP8 cluster cycle model at " + std::to_string(static_cast<int>(kGap8ClockHz / 1e6)) +

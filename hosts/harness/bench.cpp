@@ -11,6 +11,7 @@
 #include <x86intrin.h>
 #endif
 
+#include "counted.hpp"
 #include "exactness.hpp"
 #include "grid.hpp"
 #include "interrupt.hpp"
@@ -141,17 +142,17 @@ class Bench {
         char why[240];
         if (pt.sweep == "batch" || pt.sweep == "custom") {  // the batch is what is asked for
           std::snprintf(why, sizeof why,
-                        "not run: simulating %d pairs would take about %.0f s (%.1f pairs/s); "
+                        "not run: simulating %s would take about %.0f s (%.1f pairs/s); "
                         "measure it with --backends %s --batch %d",
-                        pt.batch, estimate, it->second, row.name.c_str(), pt.batch);
+                        counted(pt.batch, "pair").c_str(), estimate, it->second, row.name.c_str(),
+                        pt.batch);
           return note(base, why, report);
         }
         batch = std::min(pt.batch, kReducedBatch);
-        std::snprintf(
-            why, sizeof why,
-            "device count of the first %d pairs (the point's %d would take about %.0f s to "
-            "simulate)",
-            batch, pt.batch, estimate);
+        std::snprintf(why, sizeof why,
+                      "device count of the first %s (the point's %d would take about %.0f s to "
+                      "simulate)",
+                      counted(batch, "pair").c_str(), pt.batch, estimate);
         reduced = why;
         base.batch = batch;
       }
@@ -365,6 +366,19 @@ std::vector<BenchPoint> default_bench_points(const Params& base, const std::stri
   }
   pts.push_back({"threads", name, base, 256, 1});
   return pts;
+}
+
+std::vector<BenchPoint> quick_bench_points(const Params& base, const std::string& name) {
+  std::vector<BenchPoint> pts = default_bench_points(base, name);
+  std::erase_if(pts, [](const BenchPoint& p) {
+    return p.batch > 256 || p.sweep == "radius" || p.sweep == "threads";
+  });
+  return pts;
+}
+
+void set_sweep_threads(std::vector<BenchPoint>& points, int threads) {
+  for (BenchPoint& p : points)
+    if (p.sweep != "threads") p.threads = threads;
 }
 
 BenchReport run_bench(const BenchOptions& o, std::ostream& out) {

@@ -57,6 +57,15 @@ struct BenchReport {
 // The default sweeps around `base` (the profile with any --set applied).
 std::vector<BenchPoint> default_bench_points(const Params& base, const std::string& profile_name);
 
+// The quick subset of the default sweeps (`bench --quick`, `report --quick`): batch <= 256 and
+// the frame sizes, no radius or thread sweep; with kQuickMinSeconds of repeats per point.
+std::vector<BenchPoint> quick_bench_points(const Params& base, const std::string& profile_name);
+constexpr double kQuickMinSeconds = 0.05;
+
+// Every point but the thread sweep's run on `threads` host threads (0 = all cores), as
+// `bench --sweep-threads N` and `report --threads N` ask.
+void set_sweep_threads(std::vector<BenchPoint>& points, int threads);
+
 // Runs every point: prints the backends with what each runs, then one aligned table (a group of
 // rows per point, the bound's ratio and the speed-up over ref-original as columns).
 BenchReport run_bench(const BenchOptions& o, std::ostream& out);

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "counted.hpp"
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "exactness.hpp"
@@ -56,7 +57,7 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
     if (c.backend) {  // what runs behind the row (Backend::describe())
       const std::string implementation = c.backend->describe().implementation;
       c.outcome.implementation = implementation.empty() ? c.row->name : implementation;
-      c.outcome.device = c.backend->describe().device;
+      c.outcome.device = device_or_host(c.backend->describe());
     }
     const std::string why = opened.why_not;
     if (!why.empty()) {
@@ -201,7 +202,7 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
   Campaign campaign({o.fuzz_pairs, o.corpus});
   if (o.shard.count > campaign.cases())
     throw InputError("--shard " + o.shard.text() + ": the campaign has " +
-                     std::to_string(campaign.cases()) + " cases (" +
+                     counted(campaign.cases(), "case") + " (" +
                      (o.fuzz_pairs > 0 ? "batches of 256 pairs" : "the fixed corpus") +
                      "): at most that many shards (see pxflow check --help)");
   report.range = shard_range(campaign.cases(), o.shard);
@@ -227,10 +228,10 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
   }
 
   // Totals on the live line for the fixed corpus as for a fuzz campaign: this run's share.
-  const std::string of_cases = " of " + std::to_string(report.range.size()) + " cases, ";
-  const std::string of_pairs = " of " + std::to_string(campaign.pairs_in(report.range)) + " pairs";
+  const std::string of_cases = " of " + counted(report.range.size(), "case") + ", ";
+  const std::string of_pairs = " of " + counted(campaign.pairs_in(report.range), "pair");
   for (long index = report.range.first; index < report.range.end; ++index) {
-    stop_if_interrupted(std::to_string(report.cases) + " finished cases");
+    stop_if_interrupted(counted(report.cases, "finished case"));
     const CheckCase c = campaign.take(index);
     ++report.cases;
     report.pairs += static_cast<long>(c.pairs.size());

@@ -39,8 +39,8 @@ BackendState state_from_name(const std::string& name);  // throws std::invalid_a
 struct BackendOutcome {
   std::string name;
   BackendState state = BackendState::kPassed;
-  std::string reason;                               // why skipped
-  std::string implementation, device;               // Backend::describe(); empty: not opened
+  std::string reason;                  // why skipped
+  std::string implementation, device;  // Backend::describe(), device_or_host(); empty: not opened
   long passed = 0, failed = 0, not_applicable = 0;  // cases
   long pairs = 0;
   double seconds = 0;                 // host time inside run()

@@ -11,7 +11,7 @@ namespace {
 Json range_json(const CaseRange& r) { return {{"first_case", r.first}, {"end_case", r.end}}; }
 
 Json backend_json(const BackendOutcome& b) {
-  return {{"name", b.name},        {"state", state_name(b.state)},
+  return {{"backend", b.name},     {"state", state_name(b.state)},
           {"reason", b.reason},    {"implementation", b.implementation},
           {"device", b.device},    {"passed", b.passed},
           {"failed", b.failed},    {"not_applicable", b.not_applicable},
@@ -21,7 +21,7 @@ Json backend_json(const BackendOutcome& b) {
 
 BackendOutcome backend_from_json(const Json& j) {
   BackendOutcome b;
-  b.name = j.at("name").get<std::string>();
+  b.name = j.at("backend").get<std::string>();
   b.state = state_from_name(j.at("state").get<std::string>());
   b.reason = j.at("reason").get<std::string>();
   b.implementation = j.at("implementation").get<std::string>();

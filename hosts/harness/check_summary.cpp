@@ -4,6 +4,7 @@
 #include <string>
 
 #include "check.hpp"
+#include "counted.hpp"
 
 namespace pxflow {
 namespace {
@@ -18,7 +19,7 @@ std::string format(const char* f, auto... args) {
 std::string note(const BackendOutcome& b) {
   std::string s;
   if (!b.implementation.empty() && b.implementation != b.name) s = b.implementation;
-  if (!b.device.empty()) s += (s.empty() ? "on " : " on ") + b.device;
+  if (!b.device.empty() && b.device != "host") s += (s.empty() ? "on " : " on ") + b.device;
   if (!b.reason.empty()) s += (s.empty() ? "" : "; ") + b.reason;
   return s;
 }
@@ -31,13 +32,13 @@ std::string shard_list(const std::vector<Shard>& shards) {
 
 // Where the figures come from: this shard, the whole campaign, or the shards merged.
 std::string scope(const CheckReport& r) {
-  const std::string ran = std::to_string(r.cases) + " cases, " + std::to_string(r.pairs) + " pairs";
+  const std::string ran = counted(r.cases, "case") + ", " + counted(r.pairs, "pair");
   if (!r.merged_from.empty()) {
     std::vector<Shard> given;
     for (const MergedShard& m : r.merged_from) given.push_back(m.shard);
     std::string s = "merged shard" + std::string(given.size() > 1 ? "s " : " ") +
                     shard_list(given) + ": " + ran + " (the campaign has " +
-                    std::to_string(r.campaign.cases) + " cases), " +
+                    counted(r.campaign.cases, "case") + "), " +
                     format("%.2f s summed over the shards", r.seconds);
     if (!r.missing_shards.empty())
       s += "\nincomplete: " + missing_shards_text(r.missing_shards, given.front().count);

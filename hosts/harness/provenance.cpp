@@ -59,7 +59,7 @@ Json machine_provenance() {
 
 Json describe_backend(const std::string& name, const Backend& backend) {
   const Backend::Description d = backend.describe();
-  Json j{{"name", name}};
+  Json j{{"backend", name}};
   if (!d.implementation.empty()) j["implementation"] = d.implementation;
   if (!d.device.empty()) j["device"] = d.device;
   if (!d.driver.empty()) j["driver"] = d.driver;

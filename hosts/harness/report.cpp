@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "errors.hpp"
+#include "json_document.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
 #include "report_sections.hpp"
@@ -337,12 +338,12 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
   const std::filesystem::path dir(out.dir);
   out.files["report.md"]->write(render_md(secs));
   out.files["report.html"]->write(render_html(secs, dir));
-  out.files["results.json"]->write(results.dump(2) + "\n");
+  out.files["results.json"]->write(json_document(results));
   out.files["results.csv"]->write(bench_csv(in.bench));
   out.files["conformance.csv"]->write(
-      csv({"name", "state", "passed", "failed", "not_applicable", "pairs", "seconds", "reason"},
+      csv({"backend", "state", "passed", "failed", "not_applicable", "pairs", "seconds", "reason"},
           in.check.is_null() ? std::vector<const Json*>{}
-                             : sorted_by_rank(in.check["backends"], "name")));
+                             : sorted_by_rank(in.check["backends"], "backend")));
   std::vector<const Json*> accuracy_rows;
   for (const auto& r : in.accuracy_rows) accuracy_rows.push_back(&r);
   out.files["accuracy.csv"]->write(

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "check.hpp"
+#include "counted.hpp"
 
 namespace pxflow::report {
 namespace {
@@ -42,7 +43,7 @@ const char* const kInstructionNote =
     " Rows labelled by an instruction count (QEMU -icount) show instructions per frame, tabled, "
     "not charted: they are no time (QEMU's virtual clock ticks per instruction, a speed no core "
     "has).";
-std::string threads_text(int n) { return std::to_string(n) + (n == 1 ? " thread" : " threads"); }
+std::string threads_text(int n) { return counted(n, "thread"); }
 
 ChartStyle style_of(const std::string& backend) { return backend_style(registry_rank(backend)); }
 
@@ -166,7 +167,7 @@ Section provenance(const ReportInputs& in, const Json& build, const Json& machin
   s.rows.push_back({"compiler", str(build, "compiler") + ", " + str(build, "build_type") + ": " +
                                     str(build, "cxx_flags")});
   s.rows.push_back(
-      {"CPU", str(machine, "cpu") + ", " + std::to_string(machine.value("cores", 0)) + " cores"});
+      {"CPU", str(machine, "cpu") + ", " + counted(machine.value("cores", 0), "core")});
   s.rows.push_back({"system", str(machine, "os") + ", " + str(machine, "kernel") + ", host " +
                                   str(machine, "host") + ", " + str(machine, "date")});
   s.rows.push_back({"report", in.report_command});
@@ -187,7 +188,7 @@ Section backends_section(const ReportInputs& in) {
             {}};
   for (const Json* b : in_registry_order(in.backends))
     s.rows.push_back(
-        {str(*b, "name"), str(*b, "implementation"), str(*b, "device"), str(*b, "driver")});
+        {str(*b, "backend"), str(*b, "implementation"), str(*b, "device"), str(*b, "driver")});
   if (s.rows.empty()) s.text += " No backend was opened.";
   return s;
 }
@@ -211,7 +212,7 @@ Section conformance(const Json& check, const std::string& cmd) {
       "conformance",
       "Conformance",
       "Every backend against `ref-original`, records byte for byte and flow by bits, on " +
-          std::to_string(check.value("cases", 0)) + " cases (" +
+          counted(check.value("cases", 0), "case") + " (" +
           std::to_string(check.value("pairs", 0)) + " frame pairs), seed " +
           std::to_string(check.value("seed", 0)) + ". Command: `" + cmd + "`.",
       {"backend", "result", "cases passed", "cases failed", "n/a", "pairs", "run time s", "note"},
@@ -221,10 +222,10 @@ Section conformance(const Json& check, const std::string& cmd) {
   std::vector<const Json*> backends;
   for (const auto& b : check["backends"]) backends.push_back(&b);
   std::stable_sort(backends.begin(), backends.end(), [](const Json* a, const Json* b) {
-    return registry_rank(str(*a, "name")) < registry_rank(str(*b, "name"));
+    return registry_rank(str(*a, "backend")) < registry_rank(str(*b, "backend"));
   });
   for (const Json* b : backends)
-    s.rows.push_back({str(*b, "name"), str(*b, "state"), std::to_string(b->value("passed", 0L)),
+    s.rows.push_back({str(*b, "backend"), str(*b, "state"), std::to_string(b->value("passed", 0L)),
                       std::to_string(b->value("failed", 0L)),
                       std::to_string(b->value("not_applicable", 0L)),
                       std::to_string(b->value("pairs", 0L)), num(b->value("seconds", 0.0), "%.2f"),

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "counted.hpp"
 #include "errors.hpp"
 #include "input_file.hpp"
 #include "video_file.hpp"
@@ -139,8 +140,8 @@ std::vector<std::string> glob_frames(const std::string& pattern) {
     for (std::size_t i = 0; i < g.gl_pathc; ++i) out.push_back(g.gl_pathv[i]);
   ::globfree(&g);
   if (out.size() < 2)
-    throw InputError(pattern + ": the pattern matches " + std::to_string(out.size()) +
-                     " file(s); a sequence needs at least 2 frames");
+    throw InputError(pattern + ": the pattern matches " + counted(out.size(), "file") +
+                     "; a sequence needs at least 2 frames");
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include "batch_plan.hpp"
 #include "command_runner.hpp"
 #include "context.hpp"
+#include "counted.hpp"
 #include "flow_pipeline.hpp"
 #include "grid.hpp"
 #include "host_buffer.hpp"
@@ -193,8 +194,8 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
 void VulkanBackend::fail_on_validation_messages() const {
   const auto messages = ctx_->messages();
   if (!messages.empty())
-    vk::fail("validation layer reported " + std::to_string(messages.size()) +
-             " message(s), first: " + messages.front());
+    vk::fail("validation layer reported " + counted(messages.size(), "message") +
+             ", first: " + messages.front());
 }
 
 }  // namespace pxflow

@@ -10,6 +10,8 @@
 #include <opencv2/videoio.hpp>
 #include <sstream>
 
+#include "flow_report.hpp"
+#include "frame_ops.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
 
@@ -53,9 +55,10 @@ std::vector<std::string> extract_frames(const std::string& video, int count, con
 // `single` (one pair's --json line) with its input names replaced by the sequence's.
 std::string renamed(std::string single, const std::string& prev_path, const std::string& next_path,
                     const std::string& prev_name, const std::string& next_name) {
-  using ordered = nlohmann::ordered_json;  // prev before next, as pxflow writes them
-  const std::string from = ordered{{"prev", prev_path}, {"next", next_path}}.dump();
-  const std::string to = ordered{{"prev", prev_name}, {"next", next_name}}.dump();
+  using ordered = nlohmann::ordered_json;  // prev before next, as pxflow writes them (crop follows)
+  std::string from = ordered{{"prev", prev_path}, {"next", next_path}}.dump();
+  std::string to = ordered{{"prev", prev_name}, {"next", next_name}}.dump();
+  from.pop_back(), to.pop_back();  // the closing brace: "crop" and "bin" follow
   const auto at = single.find("\"inputs\":" + from);
   REQUIRE(at != std::string::npos);
   return single.replace(at + 9, from.size(), to);
@@ -142,7 +145,9 @@ TEST_CASE("CSV rows, text lines, files and the sequence errors", "[cli][sequence
   CHECK(out[2].find("2 pairs (3 frames)") != std::string::npos);
   const auto csv = lines_of(pxflow::test::slurp(dir.path("out.csv")));
   REQUIRE(csv.size() == 3);
-  CHECK(csv[0].rfind("pair,prev,next,width,height,flow_x,flow_y,flow_x_bits", 0) == 0);
+  CHECK(csv[0].rfind("pair,prev,next,crop,bin,backend,profile,width,height,flow_x,flow_y,", 0) ==
+        0);
+  CHECK(csv[1].find(",,1,ref-original,px4flow-64,") != std::string::npos);  // no crop, bin 1
   const auto jsonl = lines_of(pxflow::test::slurp(dir.path("out.jsonl")));
   REQUIRE(jsonl.size() == 2);
   CHECK(csv[2].find(json::parse(jsonl[1])["flow_x_bits"].get<std::string>()) != std::string::npos);
@@ -182,6 +187,59 @@ TEST_CASE("flow --json names what ran, the inputs, params, status names and vers
   const auto zero = run_pxflow({"flow", "--set", "feature_threshold=6121", a, b});
   CHECK(zero.out.find("flow is 0 because only 0 POIs were accepted and MINCOUNT=10") !=
         std::string::npos);
+}
+
+TEST_CASE("flow records --crop and --bin in its JSON, JSON lines, CSV and picture caption",
+          "[cli][json]") {
+  const std::string a = kData + "/rubberwhale1.png", b = kData + "/rubberwhale2.png";
+  TempDir dir;
+  const auto r = run_pxflow({"flow", "--backend", "ref-local", "--crop", "128x128+200+100", "--bin",
+                             "2", "--json", dir.path("one.json"), "--jsonl", dir.path("one.jsonl"),
+                             "--csv", dir.path("one.csv"), a, b});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const char* file : {"one.json", "one.jsonl"}) {
+    CAPTURE(file);
+    const json j = json::parse(pxflow::test::slurp(dir.path(file)));
+    CHECK(j["inputs"]["prev"] == a);
+    CHECK(j["inputs"]["crop"] == "128x128+200+100");
+    CHECK(j["inputs"]["bin"] == 2);
+    CHECK(j["width"] == 64);
+  }
+  const auto csv = lines_of(pxflow::test::slurp(dir.path("one.csv")));
+  REQUIRE(csv.size() == 2);
+  CHECK(csv[1].find(",128x128+200+100,2,ref-local,px4flow-64,64,64,") != std::string::npos);
+  // Without them: crop null, bin 1 (the keys are always there).
+  const json plain = json::parse(run_pxflow({"flow", "--json", "-", a, b}).out);
+  CHECK(plain["inputs"]["crop"].is_null());
+  CHECK(plain["inputs"]["bin"] == 1);
+  // The caption of --draw, as flow_report.cpp makes it for the picture.
+  pxflow::cli::PairRun run;
+  run.prev_name = a, run.next_name = b, run.backend = "ref-local", run.profile = "px4flow-64";
+  pxflow::parse_crop("128x128+200+100", run.shaping);
+  run.shaping.bin = 2;
+  CHECK(pxflow::cli::draw_caption(run).frames ==
+        "rubberwhale1.png -> rubberwhale2.png, crop 128x128+200+100, bin 2");
+  run.shaping = {};
+  CHECK(pxflow::cli::draw_caption(run).frames == "rubberwhale1.png -> rubberwhale2.png");
+}
+
+TEST_CASE("flow's JSON is the same bytes for --threads 1 and --threads 2", "[cli][json]") {
+  const std::string a = kData + "/rubberwhale1.png", b = kData + "/rubberwhale2.png";
+  // Every multi-threaded row this build may have; the reference rows take --threads too.
+  for (const std::string backend : {"ref-local", "cpu", "swar"}) {
+    CAPTURE(backend);
+    std::string out[2];
+    for (int t = 1; t <= 2; ++t) {
+      const auto r = run_pxflow(
+          {"flow", "--json", "-", "--backend", backend, "--threads", std::to_string(t), a, b});
+      if (r.exit_code == 2 && r.err.find("unknown backend") != std::string::npos) break;
+      INFO(r.err);
+      REQUIRE(r.exit_code == 0);
+      out[t - 1] = r.out;
+    }
+    CHECK(out[0] == out[1]);
+  }
 }
 
 TEST_CASE("a frame too large for GAP8's L1 names --crop and --bin, which make it fit",

@@ -3,10 +3,12 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "bad_input.hpp"
 #include "run_program.hpp"
+#include "sample_data.hpp"
 
 using pxflow::test::require_bad_input;
 using pxflow::test::run_pxflow;
@@ -52,11 +54,11 @@ TEST_CASE("pxflow backends --json lists every row with its family", "[cli][all-p
   const auto j = nlohmann::json::parse(r.out);  // the JSON alone on stdout
   REQUIRE(j["backends"].is_array());
   REQUIRE(j["backends"].size() >= 4);
-  CHECK(j["backends"][0]["name"] == "ref-original");
+  CHECK(j["backends"][0]["backend"] == "ref-original");
   CHECK(j["backends"][0]["family"] == "reference");
   CHECK(j["backends"][0]["available"] == true);
   for (const auto& row : j["backends"]) {
-    const std::string name = row["name"];
+    const std::string name = row["backend"];
     // the table and the JSON agree on every row's status
     const auto at = table.out.find("\n" + name + " ");
     REQUIRE(at != std::string::npos);
@@ -76,4 +78,76 @@ TEST_CASE("a loop of symbolic links is named as such, not 'no such file'", "[cli
   require_bad_input({"flow", a, b}, "a.png: a loop of symbolic links");
   require_bad_input({"flow", a}, "a.png: a loop of symbolic links");
   require_bad_input({"flow", dir.path("none.png"), b}, "none.png: no such file");
+}
+
+TEST_CASE("every JSON file pxflow writes starts with pxflow {version, commit}",
+          "[cli][json][all-probes]") {
+  pxflow::test::TempDir dir;
+  const std::string a = pxflow::kSampleDataDir + std::string("/rubberwhale1.png");
+  const std::string b = pxflow::kSampleDataDir + std::string("/rubberwhale2.png");
+  const std::string check = "--generated-only";
+  // Each writer, then the file it wrote (the report's results.json: report_results_match_schema).
+  const std::vector<std::pair<std::vector<std::string>, std::string>> writers = {
+      {{"flow", "--json", dir.path("flow.json"), "--jsonl", dir.path("flow.jsonl"), a, b},
+       "flow.json"},
+      {{}, "flow.jsonl"},
+      {{"check", "--backends", "ref-local", check, "--shard", "1/2", "--json", dir.path("s1.json")},
+       "s1.json"},
+      {{"check", "--backends", "ref-local", check, "--shard", "2/2", "--json", dir.path("s2.json")},
+       "s2.json"},
+      {{"merge", dir.path("merged.json"), dir.path("s1.json"), dir.path("s2.json")}, "merged.json"},
+      {{"bench", "--backend", "ref-local", "--batch", "1", "--min-time", "0", "--json",
+        dir.path("bench.json")},
+       "bench.json"},
+      {{"backends", "--json", dir.path("backends.json")}, "backends.json"},
+      // The families' commands, where this build has them.
+      {{"gap8", "--cores", "1", "--variant", "local", "--json", dir.path("gap8.json")},
+       "gap8.json"},
+      {{"vectors", "--out", dir.path(""), "--cases", "2"}, "manifest.json"},
+  };
+  std::string commit;
+  for (const auto& [args, file] : writers) {
+    CAPTURE(file);
+    if (!args.empty()) {
+      const auto r = run_pxflow(args);
+      INFO(r.err);
+      if (r.exit_code == 2 && r.err.find("unknown") != std::string::npos) continue;  // not built
+      REQUIRE(r.exit_code == 0);
+    }
+    const auto j = nlohmann::ordered_json::parse(pxflow::test::slurp(dir.path(file)));
+    REQUIRE(j.begin().key() == "pxflow");
+    CHECK(j["pxflow"]["version"].get<std::string>().rfind("0.", 0) == 0);
+    const std::string c = j["pxflow"]["commit"];
+    CHECK(!c.empty());
+    CHECK((commit.empty() || c == commit));  // one build wrote them all
+    commit = c;
+  }
+  // Whole counts are integers in gap8's JSON, where it was written.
+  if (std::ifstream(dir.path("gap8.json"))) {
+    const auto g = nlohmann::json::parse(pxflow::test::slurp(dir.path("gap8.json")));
+    const auto& one = g["variants"]["local"]["1"];
+    for (const char* key : {"cycles", "instructions", "interpolations", "sad_ops"})
+      CHECK(one[key].is_number_integer());
+    CHECK(one["phases"]["flow"].is_number_integer());
+  }
+}
+
+TEST_CASE("a count of one is singular: 1 pair, 1 point, 1 case", "[cli]") {
+  pxflow::test::TempDir dir;
+  const std::string data = pxflow::kSampleDataDir;
+  dir.write("list.txt", data + "/rubberwhale1.png " + data + "/rubberwhale2.png\n");
+  const auto flow = run_pxflow({"flow", "--pairs", dir.path("list.txt")});
+  INFO(flow.err);
+  CHECK(flow.out.find(": 1 pair (2 frames) in ") != std::string::npos);
+  const auto bench =
+      run_pxflow({"bench", "--backend", "ref-local", "--batch", "1", "--min-time", "0"});
+  CHECK(bench.out.rfind("pxflow bench: 1 point; ", 0) == 0);
+  // The generated corpus has 16 cases: its last shard of 16 has one.
+  const auto check =
+      run_pxflow({"check", "--backends", "ref-local", "--generated-only", "--shard", "16/16"});
+  INFO(check.out);
+  CHECK(check.out.find("shard 16/16: 1 case, ") != std::string::npos);
+  for (const auto* r : {&flow, &bench, &check})
+    for (const char* plural : {" 1 pairs", " 1 points", " 1 cases", " 1 threads", " 1 frames"})
+      CHECK(r->out.find(plural) == std::string::npos);
 }

@@ -56,6 +56,11 @@ MUTATIONS = [
     ("gap8.variants entry without cycles",
      lambda j: next(iter(next(iter(j["gap8"]["variants"].values())).values())).pop("cycles")),
     ("schema_version 2", lambda j: j.__setitem__("schema_version", 2)),
+    ("pxflow.commit removed", lambda j: j["pxflow"].pop("commit")),
+    ("check.backends[0].backend removed", lambda j: j["check"]["backends"][0].pop("backend")),
+    ("gap8 cycles a fraction",
+     lambda j: next(iter(next(iter(j["gap8"]["variants"].values())).values())).__setitem__(
+         "cycles", 0.5)),
 ]
 
 

@@ -100,7 +100,7 @@ TEST_CASE("fuzz campaign, JSON file, and bad arguments", "[check]") {
   const auto j = nlohmann::json::parse(in);
   CHECK(j["seed"] == 7);
   CHECK(j["pairs"] == 600);
-  CHECK(j["backends"][0]["name"] == "ref-local");
+  CHECK(j["backends"][0]["backend"] == "ref-local");
   CHECK(j["backends"][0]["state"] == "passed");
 
   const auto bad = check({"--backends", "no-such-backend"});

@@ -50,13 +50,16 @@ TEST_CASE("bench: one aligned table, the implementation cpu ran, the bound as a 
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   const auto lines = lines_of(r.out);
-  // What `cpu` dispatched to is named before the table: an ISA row's name and the threads.
+  // What `cpu` dispatched to is named before the table: an ISA row's name, and no thread count
+  // (each point's line says its threads: the thread sweep runs the same backend on one).
   bool cpu_named = false;
   for (const auto& l : lines)
     if (l.rfind("  cpu ", 0) == 0)
-      for (const char* isa : {"avx512bw, ", "avx2, ", "sse41, ", "sse2, ", "swar, ", "neon, "})
-        cpu_named |= l.find(isa) != std::string::npos && l.find(" threads") != std::string::npos;
+      for (const std::string isa : {"avx512bw", "avx2", "sse41", "sse2", "swar", "neon"})
+        cpu_named |= l.size() > isa.size() && l.ends_with(" " + isa);
   CHECK(cpu_named);
+  for (const auto& l : lines)
+    if (l.rfind("-- ", 0) == 0) CHECK(l.find(" threads=") != std::string::npos);
   // Registry order whatever order --backends named them in; every timed row's columns start
   // where the header's do.
   std::size_t header = 0;
@@ -90,7 +93,7 @@ TEST_CASE("bench --json - writes the JSON to stdout and the table to stderr", "[
   const json j = json::parse(r.out);  // nothing but the JSON on stdout
   CHECK(j["command"] == "pxflow bench --backend ref-local --batch 1 --min-time 0 --json -");
   REQUIRE(j["backends"].size() == 1);
-  CHECK(j["backends"][0]["name"] == "ref-local");
+  CHECK(j["backends"][0]["backend"] == "ref-local");
   CHECK(j["rows"][0]["exact_clock"] == false);
   CHECK(r.err.find("host-steady-clock") != std::string::npos);
 
@@ -130,6 +133,39 @@ TEST_CASE("report: provenance first, in results.json, and the commands as run", 
   REQUIRE(conformance);
   CHECK(md.find("| " + (*conformance)["rows"][1][0].get<std::string>() + " | passed |") !=
         std::string::npos);
+}
+
+TEST_CASE("report --quick records the bench command that reruns its bench", "[report]") {
+  TempDir dir;
+  make_small_results(dir);
+  const RunResult r =
+      run_pxflow({"report", "--out", dir.path("r"), "--check-json", dir.path("c.json"),
+                  "--no-accuracy", "--quick", "--threads", "1", "--backends", "ref-local"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const json j = json::parse(slurp(dir.path("r/results.json")));
+  const std::string recorded = j["commands"]["bench"];
+  CHECK(recorded == "pxflow bench --backends ref-local --sweep-threads 1 --quick");
+  // Run as recorded (its words need no quoting), with its JSON kept: the same points.
+  std::vector<std::string> args;
+  std::istringstream words(recorded);
+  for (std::string w; words >> w;) args.push_back(w);
+  REQUIRE(args.front() == "pxflow");
+  args.erase(args.begin());
+  args.insert(args.end(), {"--json", dir.path("again.json")});
+  const RunResult again = run_pxflow(args);
+  INFO(again.err);
+  REQUIRE(again.exit_code == 0);
+  const auto points = [](const json& bench) {
+    std::set<std::string> out;
+    for (const auto& row : bench["rows"])
+      out.insert(row["sweep"].get<std::string>() + " " + row["width"].dump() + "x" +
+                 row["height"].dump() + " batch " + row["batch"].dump() + " threads " +
+                 row["threads"].dump());
+    return out;
+  };
+  CHECK(points(json::parse(slurp(dir.path("again.json")))) == points(j["bench"]));
+  CHECK(points(j["bench"]).size() == 6);  // batch 1, 16, 256 and the three frame sizes
 }
 
 TEST_CASE("report: registry order in every table, whatever order the files have", "[report]") {

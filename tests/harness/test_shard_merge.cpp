@@ -67,8 +67,8 @@ void require_same_results(const json& whole, const json& merged) {
   REQUIRE(whole["backends"].size() == merged["backends"].size());
   for (std::size_t b = 0; b < whole["backends"].size(); ++b) {
     const json &w = whole["backends"][b], &g = merged["backends"][b];
-    INFO(w["name"]);
-    for (const char* key : {"name", "state", "reason", "implementation", "device", "passed",
+    INFO(w["backend"]);
+    for (const char* key : {"backend", "state", "reason", "implementation", "device", "passed",
                             "failed", "not_applicable", "pairs", "failures"})
       CHECK(w[key] == g[key]);
   }
@@ -327,7 +327,7 @@ TEST_CASE("check --shard, --backend and --json -: the options and their errors",
   CHECK(r.exit_code == 1);
   const json j = json::parse(r.out);
   CHECK(j["backends"].size() == 1);
-  CHECK(j["backends"][0]["name"] == "test-bitflip");
+  CHECK(j["backends"][0]["backend"] == "test-bitflip");
   CHECK(j["command"] == "pxflow check --backend test-bitflip --seed 1 --generated-only --json -");
   CHECK(j["shard"] == json({{"index", 1}, {"count", 1}, {"first_case", 0}, {"end_case", 16}}));
   CHECK(r.err.find("FAIL test-bitflip case=") != std::string::npos);
@@ -358,7 +358,8 @@ TEST_CASE("check names the implementation the cpu row dispatched to", "[shard]")
   const json b = json::parse(r.out)["backends"][0];
   const std::string isa = b["implementation"];
   CHECK(!isa.empty());
-  CHECK(isa != "cpu");  // one of the ISA rows: swar, sse2, ..., avx512bw
+  CHECK(isa != "cpu");           // one of the ISA rows: swar, sse2, ..., avx512bw
+  CHECK(b["device"] == "host");  // as flow --json says it
   CHECK(r.err.find("passed          16     300     0") != std::string::npos);
   CHECK(r.err.find("s  " + isa + "\n") != std::string::npos);  // the summary's "runs as" column
 }

@@ -11,6 +11,7 @@
 #include "gap8_cli.hpp"
 #include "gap8_flow_runner.hpp"
 #include "gap8_study.hpp"
+#include "json_document.hpp"
 #include "output_plan.hpp"
 
 namespace pxflow::cli {
@@ -111,7 +112,7 @@ int run_gap8(const Gap8Options& o) {
   const gap8_study::Study study = gap8_study::run_study(pair, frames.name, p, options);
   // `--json -` puts the JSON alone on standard output, so that it can be piped.
   if (o.json_path != kStdoutPath) gap8_study::print_tables(study);
-  if (json_file) json_file->write(gap8_study::to_json(study).dump(2) + "\n");
+  if (json_file) json_file->write(json_document(gap8_study::to_json(study)));
   return 0;
 }
 

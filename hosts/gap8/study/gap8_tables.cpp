@@ -1,8 +1,11 @@
 // `pxflow gap8` output: the paper's Tables I-III with the model beside them, then the figures
 // the paper does not have (every core count, fps, latency, energy, counters per core), and JSON.
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "counted.hpp"
 #include "gap8_study.hpp"
 
 namespace pxflow::gap8_study {
@@ -69,12 +72,11 @@ std::vector<PaperTable> paper_tables(const Study& s) {
   for (const auto& [v, by] : in_order(s)) {
     for (const auto& [cores, m] : by) {
       const auto pp = paper_for(s, v, cores);
-      out[1].lines.push_back(line("cycles, " + std::to_string(cores) + " core(s)", v, m.cycles,
-                                  pp ? pp->cycles : std::nullopt));
+      out[1].lines.push_back(
+          line("cycles, " + counted(cores, "core"), v, m.cycles, pp ? pp->cycles : std::nullopt));
       if (cores == 1) continue;
-      out[1].lines.push_back(line("speed-up, " + std::to_string(cores) + " cores", v,
-                                  speedup(s, v, cores), pp ? pp->speedup : std::nullopt, "%.2fx",
-                                  1));
+      out[1].lines.push_back(line("speed-up, " + counted(cores, "core"), v, speedup(s, v, cores),
+                                  pp ? pp->speedup : std::nullopt, "%.2fx", 1));
     }
   }
   out[2].title = "Table III: cycles per phase (1 core), ideal 8-core flow, Amdahl's limit";
@@ -142,9 +144,9 @@ void print_tables(const Study& s) {
       if (cores != 1 && cores != by.rbegin()->first) continue;
       // On several cores the saving is shared: core 0's SAD work is about 1/cores of the total.
       const double saved = 3.0 * m.sad_ops / cores;
-      std::printf("  %-9s %d core(s): %.1fk cycles -> about %.1fk with a one-cycle SAD (-%.1f%%)\n",
-                  gap8_variant(v).name, cores, m.cycles / 1000, (m.cycles - saved) / 1000,
-                  saved / m.cycles * 100);
+      std::printf("  %-9s %s: %.1fk cycles -> about %.1fk with a one-cycle SAD (-%.1f%%)\n",
+                  gap8_variant(v).name, counted(cores, "core").c_str(), m.cycles / 1000,
+                  (m.cycles - saved) / 1000, saved / m.cycles * 100);
     }
   std::printf(
       "\nPer core at the largest core count: IPC (instructions / active cycles), "
@@ -162,6 +164,12 @@ void print_tables(const Study& s) {
   }
 }
 
+namespace {
+// Cycles, instructions and operations are whole counts, written as JSON integers; the Study keeps
+// them as double for its ratios (and the paper's are "k" figures, 624.2 * 1000).
+std::int64_t whole(double count) { return std::llround(count); }
+}  // namespace
+
 Json to_json(const Study& s) {
   using nlohmann::json;
   json variants = json::object();
@@ -169,16 +177,16 @@ Json to_json(const Study& s) {
     json per = json::object();
     for (const auto& [cores, m] : by) {
       auto phases = [](const Phases& p) {
-        return json{{"init", p.init},
-                    {"dma", p.dma},
-                    {"flow", p.flow},
-                    {"averaging", p.averaging},
-                    {"output", p.output}};
+        return json{{"init", whole(p.init)},
+                    {"dma", whole(p.dma)},
+                    {"flow", whole(p.flow)},
+                    {"averaging", whole(p.averaging)},
+                    {"output", whole(p.output)}};
       };
-      json e{{"cycles", m.cycles},
-             {"instructions", m.instructions},
-             {"interpolations", m.interpolations},
-             {"sad_ops", m.sad_ops},
+      json e{{"cycles", whole(m.cycles)},
+             {"instructions", whole(m.instructions)},
+             {"interpolations", whole(m.interpolations)},
+             {"sad_ops", whole(m.sad_ops)},
              {"phases", phases(m.phases)},
              {"speedup", speedup(s, v, cores)},
              {"amdahl_limit", amdahl_limit(s, v, cores)},
@@ -199,18 +207,21 @@ Json to_json(const Study& s) {
         auto put = [&](const char* key, std::optional<double> x) {
           if (x) pj[key] = *x;
         };
-        put("cycles", p->cycles);
-        put("instructions", p->instructions);
-        put("interpolations", p->interpolations);
-        put("sad_ops", p->sad_ops);
+        auto put_count = [&](const char* key, std::optional<double> x) {
+          if (x) pj[key] = whole(*x);
+        };
+        put_count("cycles", p->cycles);
+        put_count("instructions", p->instructions);
+        put_count("interpolations", p->interpolations);
+        put_count("sad_ops", p->sad_ops);
         put("speedup", p->speedup);
         put("amdahl_limit", p->amdahl_limit);
         put("fps", p->fps);
         if (p->phases) {
-          pj["phases"] = {{"init", p->phases->init},
-                          {"dma", p->phases->dma},
-                          {"flow", p->phases->flow},
-                          {"averaging", p->phases->averaging}};
+          pj["phases"] = {{"init", whole(p->phases->init)},
+                          {"dma", whole(p->phases->dma)},
+                          {"flow", whole(p->phases->flow)},
+                          {"averaging", whole(p->phases->averaging)}};
         }
         e["paper"] = pj;
       }
