@@ -214,11 +214,11 @@ void describe_opened_backends(ReportInputs& in, const ReportArgs& a) {
 void describe_check_backends(ReportInputs& in) {
   if (in.check.is_null()) return;
   std::set<std::string> described;
-  for (const auto& b : in.backends) described.insert(b.value("name", ""));
+  for (const auto& b : in.backends) described.insert(b.value("backend", ""));
   bool added = false;
   for (const auto& b : in.check["backends"]) {
-    const std::string name = b.value("name", "");
-    Json d{{"name", name}};
+    const std::string name = b.value("backend", "");
+    Json d{{"backend", name}};
     for (const char* key : {"implementation", "device"})
       if (!b.value(key, "").empty()) d[key] = b[key];
     if (described.contains(name) || d.size() == 1) continue;  // described, or never opened

@@ -199,7 +199,7 @@ std::string failure_lines(const Json& backend) {
   constexpr std::size_t kShown = 20;
   const std::vector<std::string> lines = backend.value("failures", std::vector<std::string>{});
   if (lines.empty()) return {};
-  std::string s = "\n\nFailures of " + str(backend, "name") + ", as the check printed them:\n";
+  std::string s = "\n\nFailures of " + str(backend, "backend") + ", as the check printed them:\n";
   for (std::size_t i = 0; i < lines.size() && i < kShown; ++i) s += "\n- `" + lines[i] + "`";
   if (lines.size() > kShown)
     s += "\n- ... and " + std::to_string(lines.size() - kShown) +

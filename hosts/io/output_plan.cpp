@@ -238,7 +238,7 @@ void OutputPlan::check_output(const std::string& option, const std::string& path
     if (fs::is_directory(p, ec)) throw InputError(option + " " + path + ": is a directory");
     const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
     if (!fs::is_directory(dir, ec))
-      throw InputError(option + " " + path + ": no such folder " + dir.string());
+      throw InputError(option + " " + path + ": no such directory " + dir.string());
     check_not_an_input(option, path);
   }
   check_not_in_input_folder(option, path);

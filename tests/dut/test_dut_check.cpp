@@ -132,7 +132,7 @@ TEST_CASE("a report names what a --dut row of the check file runs, bench or no b
   REQUIRE(t.r.exit_code == 0);
   const auto results = nlohmann::json::parse(slurp(dir.path("r/results.json")));
   std::vector<std::string> names;
-  for (const auto& b : results["provenance"]["backends"]) names.push_back(b["name"]);
+  for (const auto& b : results["provenance"]["backends"]) names.push_back(b["backend"]);
   CHECK(names == std::vector<std::string>{"ref-original", "d"});
   CHECK_THAT(slurp(dir.path("r/report.md")), Catch::Contains("| d | pxdut-portable-c"));
 }

@@ -9,7 +9,7 @@ if [ -z "$browser" ]; then
   exit 77
 fi
 rm -rf "$out" && mkdir -p "$out"
-"$pxflow" report --out "$out" --quick --backends ref-original,ref-local >"$out/report.log"
+"$pxflow" report --out "$out" --quick --backends ref-original,ref-local >"$out.log"
 for f in report.md report.html results.json results.csv; do
   [ -s "$out/$f" ] || { echo "FAIL: $f missing or empty"; exit 1; }
 done

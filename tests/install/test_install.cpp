@@ -102,7 +102,7 @@ json backend_row(const std::string& pxflow, const std::string& name) {
                                             "backends", "--json", "-"})
                       .out);
   for (const json& row : list.at("backends"))
-    if (row.at("name") == name) return row;
+    if (row.at("backend") == name) return row;
   FAIL("no row " << name << " in pxflow backends");
   return {};
 }
