@@ -6,7 +6,6 @@
 
 #include "accuracy_run.hpp"
 #include "commands.hpp"
-#include "list_option.hpp"
 #include "registry.hpp"
 
 namespace pxflow::cli {
@@ -36,26 +35,22 @@ Command add_accuracy_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "accuracy",
       "pxflow vs OpenCV's Lucas-Kanade and DIS flow: error against known motion, time per frame");
-  sub->add_option("--backend", o->backend, "Backend for pxflow's flow (see `pxflow backends`)")
-      ->capture_default_str();
-  sub->add_option("--pairs", o->pairs, "Synthetic pairs at 64x64 (a quarter as many at 320x240)")
+  add_backend_option(*sub, o->backend, "for pxflow's flow");
+  add_device_option(*sub, o->backend_options.device);
+  sub->add_option("--cases", o->pairs, "Synthetic pairs at 64x64 (a quarter as many at 320x240)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
   sub->add_option("--video-pairs", o->video_pairs,
                   "Real frame pairs per video (vtest.avi, tree.avi); 0 = none")
       ->capture_default_str()
       ->check(CLI::Range(0, 40));
-  sub->add_option("--seed", o->seed, "Seed of the synthetic motions")
-      ->check(seed_value())
-      ->capture_default_str();
-  sub->add_option("--threads", o->threads,
-                  "Threads for OpenCV and the backend alike (0 = all cores)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1024));
-  // --data as in check and report; --data-dir is its old name.
-  sub->add_option("--data,--data-dir", o->data_dir, "Where opencv-doc's images and videos are")
-      ->capture_default_str();
+  add_seed_option(*sub, o->seed, "of the synthetic motions");
+  add_threads_option(*sub, o->threads, "for OpenCV and the backend alike");
+  add_data_option(*sub, o->data_dir);
   sub->add_flag("--by-kind", o->by_kind, "Also one block of rows per kind of motion");
+  // Old spellings: --pairs is a list file of pairs in flow; --data is every command's folder.
+  add_renamed_option(*sub, "--pairs", "--cases N");
+  add_renamed_option(*sub, "--data-dir", "--data DIR");
   return {sub, [o] { return run_accuracy_command(*o); }, kAccuracyExamples};
 }
 

@@ -324,9 +324,7 @@ Command add_vectors_command(CLI::App& app) {
   a->problem.add_to(*sub);
   CLI::Option* cases =
       sub->add_option("--cases", a->cases, "Random pairs (seeded)")->check(CLI::Range(1, 100000));
-  CLI::Option* seed =
-      sub->add_option("--seed", a->seed, "Seed of the first pair; pair i has seed + i")
-          ->check(seed_value());
+  CLI::Option* seed = add_seed_option(*sub, a->seed, "of the first pair; pair i has seed + i");
   sub->add_option("--from", a->from,
                   "Vectors of these pairs instead of random ones: a list file, one 'PREV NEXT' per "
                   "line (paths relative to the list), every frame one size");

@@ -9,6 +9,7 @@
 #include "bad_input.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
+#include "shared_options.hpp"
 
 using pxflow::test::require_bad_input;
 using pxflow::test::run_pxflow;
@@ -36,7 +37,7 @@ TEST_CASE("no CLI11 sentence reaches the user", "[cli][errors]") {
   for (const std::vector<std::string>& args : {std::vector<std::string>{"check", "--cases", "0"},
                                                {"check", "--json"},
                                                {"flow", "a.png", "b.png", "c.png"},
-                                               {"accuracy", "--pairs", "0"},
+                                               {"accuracy", "--cases", "0"},
                                                {"check", "--threads", "-1"}}) {
     const auto r = run_pxflow(args);
     INFO(r.err);
@@ -150,4 +151,56 @@ TEST_CASE("a count of one is singular: 1 pair, 1 point, 1 case", "[cli]") {
   for (const auto* r : {&flow, &bench, &check})
     for (const char* plural : {" 1 pairs", " 1 points", " 1 cases", " 1 threads", " 1 frames"})
       CHECK(r->out.find(plural) == std::string::npos);
+}
+
+// One vocabulary: the README's table is the code's table (hosts/cli/shared_options.cpp), and
+// every command that takes a shared option shows its one help text.
+TEST_CASE("readme_shared_options: the README's table is the code's, every --help says the same",
+          "[cli][vocabulary]") {
+  const std::string readme = pxflow::test::slurp(PXFLOW_SOURCE_DIR "/README.md");
+  const std::string begin = "<!-- shared options: ", end = "<!-- end of shared options -->";
+  const auto from = readme.find('\n', readme.find(begin)) + 1;
+  REQUIRE(readme.find(begin) != std::string::npos);
+  REQUIRE(readme.find(end) != std::string::npos);
+  CHECK(readme.substr(from, readme.find(end) - from) == pxflow::cli::shared_options_markdown());
+  int declared = 0;
+  for (const char* command :
+       {"flow", "check", "bench", "report", "accuracy", "backends", "gap8", "vectors"}) {
+    const auto help = run_pxflow({command, "--help"});
+    if (help.exit_code == 2) continue;  // a family's command this build lacks
+    REQUIRE(help.exit_code == 0);
+    for (const auto& o : pxflow::cli::shared_options()) {
+      if (help.out.find("  " + o.name + " ") == std::string::npos) continue;
+      CAPTURE(command, o.name);
+      CHECK(help.out.find(o.meaning) != std::string::npos);
+      CHECK(help.out.find("Default: " + o.defaults) != std::string::npos);
+      ++declared;
+    }
+  }
+  CHECK(declared >= 25);  // each shared option in at least two commands
+  // accuracy takes --backend, so it takes --device too.
+  CHECK(run_pxflow({"accuracy", "--help"}).out.find("  --device D") != std::string::npos);
+  // gyro_comp is a key, but only 0 is taken (pxflow has no gyro rates).
+  CHECK(run_pxflow({"flow", "--help"}).out.find("gyro_comp (0 only)") != std::string::npos);
+}
+
+TEST_CASE("a misspelt option is named, with the nearest one", "[cli][errors][vocabulary]") {
+  // CLI11 alone said "unexpected argument '5'": the misspelt name ate no value.
+  require_bad_input({"check", "--case", "5"},
+                    "unknown option --case (did you mean --cases?) (see pxflow check --help)");
+  require_bad_input({"accuracy", "--thread", "2"},
+                    "unknown option --thread (did you mean --threads?)");
+  require_bad_input({"flow", "--bakend", "ref-local", "a.png", "b.png"},
+                    "unknown option --bakend (did you mean --backend?)");
+  require_bad_input({"bench", "--batch=1", "--min-tim", "0"},
+                    "unknown option --min-tim (did you mean --min-time?)");
+  require_bad_input({"--device-timout", "3", "check"},
+                    "unknown option --device-timout (did you mean --device-timeout?)");
+  // A name near none: no guess.
+  const auto far = run_pxflow({"check", "--bogus", "1"});
+  CHECK(far.err == "pxflow: error: unknown option --bogus (see pxflow check --help)\n");
+  // Old spellings whose meaning differed name the new one.
+  require_bad_input({"bench", "--size", "64x64"}, "--size: renamed: give --sizes WxH[,WxH...]");
+  require_bad_input({"bench", "--sweep-threads", "2"},
+                    "--sweep-threads: renamed: give --threads N");
 }
