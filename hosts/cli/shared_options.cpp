@@ -99,8 +99,13 @@ void add_progress_flag(CLI::App& sub, bool* given) {
 }
 
 void add_renamed_option(CLI::App& sub, const std::string& old_name, const std::string& new_name) {
-  sub.add_option(old_name)
-      ->check(CLI::Validator([new_name](std::string&) { return "renamed: give " + new_name; }, ""))
+  // Thrown from the callback with its own name: CLI11 names a hidden option's errors "".
+  sub.add_option_function<std::string>(old_name,
+                                       [old_name, new_name](const std::string&) {
+                                         throw CLI::ValidationError(old_name,
+                                                                    "renamed: give " + new_name);
+                                       })
+      ->expected(0, 1)  // alone too: CLI11's "needs a value" would name it ""
       ->group("");
 }
 
