@@ -204,3 +204,22 @@ TEST_CASE("a misspelt option is named, with the nearest one", "[cli][errors][voc
   require_bad_input({"bench", "--sweep-threads", "2"},
                     "--sweep-threads: renamed: give --threads N");
 }
+
+TEST_CASE("bench --threads N is one count, --thread-sweep LIST a sweep", "[cli][vocabulary]") {
+  auto threads_of_rows = [](const std::vector<std::string>& sweep) {
+    std::vector<std::string> args = {"bench",      "--backend", "ref-local", "--batch", "1",
+                                     "--min-time", "0",         "--json",    "-"};
+    args.insert(args.end(), sweep.begin(), sweep.end());
+    const auto r = run_pxflow(args);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    std::vector<int> threads;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const auto& row : j["rows"]) threads.push_back(row["threads"]);
+    return threads;
+  };
+  CHECK(threads_of_rows({"--threads", "1"}) == std::vector<int>{1});
+  CHECK(threads_of_rows({"--thread-sweep", "1,2"}) == std::vector<int>{1, 2});
+  require_bad_input({"bench", "--threads", "1", "--thread-sweep", "1,2"},
+                    "--threads 1: given with --thread-sweep 1,2: give one of them");
+}
