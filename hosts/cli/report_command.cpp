@@ -4,6 +4,7 @@
 #include <iostream>
 #include <set>
 
+#include "accuracy_json.hpp"
 #include "accuracy_run.hpp"
 #include "bench.hpp"
 #include "check.hpp"
@@ -97,16 +98,8 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
           {set.set, set.setting, set.against, r.method, std::to_string(r.frames),
            std::to_string(r.valid), r.has_error ? fixed(r.mean_error, "%.3f") : "(reference)",
            r.has_error ? fixed(r.p95_error, "%.3f") : "(reference)", fixed(r.median_us, "%.0f")});
-      in.accuracy_rows.push_back({{"set", set.set},
-                                  {"setting", set.setting},
-                                  {"against", set.against},
-                                  {"method", r.method},
-                                  {"frames", r.frames},
-                                  {"with_flow", r.valid},
-                                  {"mean_error_px", r.has_error ? Json(r.mean_error) : Json()},
-                                  {"p95_error_px", r.has_error ? Json(r.p95_error) : Json()},
-                                  {"median_us_per_frame", r.median_us}});
     }
+  in.accuracy_rows = accuracy::accuracy_rows_json(report);
 }
 
 // The flow picture of each of accuracy::kVideos.

@@ -105,6 +105,8 @@ TEST_CASE("every JSON file pxflow writes starts with pxflow {version, commit}",
       {{"gap8", "--cores", "1", "--variant", "local", "--json", dir.path("gap8.json")},
        "gap8.json"},
       {{"vectors", "--out", dir.path(""), "--cases", "2"}, "manifest.json"},
+      {{"accuracy", "--cases", "4", "--video-pairs", "0", "--json", dir.path("accuracy.json")},
+       "accuracy.json"},
   };
   std::string commit;
   for (const auto& [args, file] : writers) {
@@ -123,6 +125,11 @@ TEST_CASE("every JSON file pxflow writes starts with pxflow {version, commit}",
     CHECK((commit.empty() || c == commit));  // one build wrote them all
     commit = c;
   }
+  // accuracy's rows are the report's (accuracy_rows_json): pxflow, LK and DIS on 4 pairs.
+  const auto acc = nlohmann::json::parse(pxflow::test::slurp(dir.path("accuracy.json")));
+  CHECK(acc["command"].get<std::string>().rfind("pxflow accuracy --cases 4", 0) == 0);
+  REQUIRE(acc["rows"].size() >= 3);
+  CHECK(acc["rows"][0]["frames"] == 4);
   // Whole counts are integers in gap8's JSON, where it was written.
   if (std::ifstream(dir.path("gap8.json"))) {
     const auto g = nlohmann::json::parse(pxflow::test::slurp(dir.path("gap8.json")));
