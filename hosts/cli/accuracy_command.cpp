@@ -70,6 +70,7 @@ Command add_accuracy_command(CLI::App& app) {
                   "the rows, as in the report's results.json; with '-' the "
                   "table goes to stderr");
   sub->add_flag("--by-kind", o->by_kind, "Also one block of rows per kind of motion");
+  add_progress_flag(*sub);
   // Old spellings: --pairs is a list file of pairs in flow; --data is every command's folder.
   add_renamed_option(*sub, "--pairs", "--cases N");
   add_renamed_option(*sub, "--data-dir", "--data DIR");

@@ -230,3 +230,18 @@ TEST_CASE("bench --threads N is one count, --thread-sweep LIST a sweep", "[cli][
   require_bad_input({"bench", "--threads", "1", "--thread-sweep", "1,2"},
                     "--threads 1: given with --thread-sweep 1,2: give one of them");
 }
+
+TEST_CASE("--progress on the long runs: accuracy and vectors", "[cli][vocabulary]") {
+  pxflow::test::TempDir dir;
+  const auto accuracy =
+      run_pxflow({"accuracy", "--cases", "2", "--video-pairs", "0", "--progress"});
+  INFO(accuracy.err);
+  CHECK(accuracy.exit_code == 0);
+  CHECK(accuracy.err.find("accuracy: synthetic, camera 64x64") != std::string::npos);
+  const auto vectors =
+      run_pxflow({"vectors", "--out", dir.path("v"), "--cases", "2", "--progress"});
+  if (vectors.exit_code == 2 && vectors.err.find("unknown command") != std::string::npos) return;
+  INFO(vectors.err);
+  CHECK(vectors.exit_code == 0);
+  CHECK(vectors.err.find("vectors: 0 of 2 pairs made") != std::string::npos);
+}
