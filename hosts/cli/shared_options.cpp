@@ -14,8 +14,8 @@ const std::vector<SharedOption>& shared_options() {
        "flow: ref-original (the executable spec); accuracy and report's pictures: the preferred "
        "backend that runs here; check and bench: every backend (--backends)"},
       {"--backends", "LIST", "Comma-separated backends, by their names in `pxflow backends`",
-       "check: every backend compiled in (one that cannot run here is reported skipped); bench "
-       "and report: every backend that can run here"},
+       "check and report: every backend compiled in (one that cannot run here is reported "
+       "skipped); bench: every backend that can run here"},
       {"--threads", "N",
        "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)",
        "0 (all cores); accuracy: 1, for OpenCV and the backend alike (like for like)"},

@@ -231,7 +231,8 @@ TEST_CASE("bench --threads N is one count, --thread-sweep LIST a sweep", "[cli][
                     "--threads 1: given with --thread-sweep 1,2: give one of them");
 }
 
-TEST_CASE("--progress on the long runs: accuracy and vectors", "[cli][vocabulary]") {
+TEST_CASE("progress lines on the long runs: accuracy and vectors take --progress",
+          "[cli][vocabulary]") {
   pxflow::test::TempDir dir;
   const auto accuracy =
       run_pxflow({"accuracy", "--cases", "2", "--video-pairs", "0", "--progress"});
