@@ -11,6 +11,7 @@
 #include "interrupt.hpp"
 #include "opencv_module.hpp"
 #include "params.hpp"
+#include "progress.hpp"
 #include "registry.hpp"
 #include "truth_pairs.hpp"
 
@@ -96,8 +97,10 @@ std::vector<SetRows> truth_sets(const std::string& set, const std::string& setti
   const Point2d centre{(p.width - 1) / 2.0, (p.height - 1) / 2.0};
   std::map<std::string, Samples[3]> by_kind;  // "" = all pairs
   for (const TruthPair& t : pairs) {
-    stop_if_interrupted(set + ": " + std::to_string(by_kind[""][0].errors.size()) + " of " +
-                        std::to_string(pairs.size()) + " pairs");
+    const std::string done = set + ": " + std::to_string(by_kind[""][0].errors.size()) + " of " +
+                             std::to_string(pairs.size()) + " pairs";
+    stop_if_interrupted(done);
+    progress("accuracy: " + done);
     const Point2d at_pois = t.displacement_at(poi_mean.x, poi_mean.y);
     const Point2d at_centre = t.displacement_at(centre.x, centre.y);
     Samples* all = by_kind[""];
@@ -132,8 +135,10 @@ SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
   Methods m(o, p);
   Samples s[3];
   for (const VideoPair& v : pairs) {
-    stop_if_interrupted(video + ": " + std::to_string(s[0].errors.size()) + " of " +
-                        std::to_string(pairs.size()) + " pairs");
+    const std::string done = video + ": " + std::to_string(s[0].errors.size()) + " of " +
+                             std::to_string(pairs.size()) + " pairs";
+    stop_if_interrupted(done);
+    progress("accuracy: " + done);
     const FlowEstimate px = timed(m.px, v.prev, v.next, s[0]);
     const FlowEstimate lk = timed(m.lk, v.prev, v.next, s[1]);
     const FlowEstimate dis = timed(m.dis, v.prev, v.next, s[2]);
@@ -206,6 +211,7 @@ AccuracyReport run_accuracy(const AccuracyOptions& o) {
   add(truth_sets("synthetic, 320x240 window", window_setting, window_params, window, o));
   if (o.video_pairs > 0)
     for (const char* video : kVideos) r.sets.push_back(agreement_set(video, o));
+  progress("");  // clears the live line
   return r;
 }
 

@@ -4,22 +4,39 @@
 #include <iostream>
 #include <thread>
 
+#include "accuracy_json.hpp"
 #include "accuracy_run.hpp"
+#include "command_line.hpp"
 #include "commands.hpp"
-#include "list_option.hpp"
+#include "json_document.hpp"
+#include "output_plan.hpp"
 #include "registry.hpp"
 
 namespace pxflow::cli {
 namespace {
 
-int run_accuracy_command(accuracy::AccuracyOptions o) {
+struct AccuracyArgs {
+  accuracy::AccuracyOptions options;
+  std::string json_path;
+  std::string command;  // the command line as run (command_line.hpp)
+};
+
+int run_accuracy_command(const AccuracyArgs& a) {
+  accuracy::AccuracyOptions o = a.options;
   find_backend(o.backend);  // unknown names fail before any work
   // 0 = all cores, as everywhere in pxflow; OpenCV and the backend get the same count.
   if (o.threads == 0)
     o.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   o.backend_options.threads = o.threads;
+  OutputPlan plan;
+  OutputFile* const json_file = a.json_path.empty() ? nullptr : &plan.file("--json", a.json_path);
+  plan.prepare();
   const auto report = accuracy::run_accuracy(o);
-  std::cout << accuracy::format_accuracy(report, o);
+  // `--json -`: the JSON is standard output, so the table goes to standard error.
+  (a.json_path == kStdoutPath ? std::cerr : std::cout) << accuracy::format_accuracy(report, o);
+  if (json_file)
+    json_file->write(json_document(
+        Json{{"command", a.command}, {"rows", accuracy::accuracy_rows_json(report)}}));
   return 0;
 }
 
@@ -31,32 +48,38 @@ const std::vector<std::string> kAccuracyExamples = {
 };
 
 Command add_accuracy_command(CLI::App& app) {
-  auto o = std::make_shared<accuracy::AccuracyOptions>();
+  auto a = std::make_shared<AccuracyArgs>();
+  accuracy::AccuracyOptions* const o = &a->options;
   o->backend = default_backend().name;
   CLI::App* sub = app.add_subcommand(
       "accuracy",
       "pxflow vs OpenCV's Lucas-Kanade and DIS flow: error against known motion, time per frame");
-  sub->add_option("--backend", o->backend, "Backend for pxflow's flow (see `pxflow backends`)")
-      ->capture_default_str();
-  sub->add_option("--pairs", o->pairs, "Synthetic pairs at 64x64 (a quarter as many at 320x240)")
+  add_backend_option(*sub, o->backend, "for pxflow's flow");
+  add_device_option(*sub, o->backend_options.device);
+  sub->add_option("--cases", o->pairs, "Synthetic pairs at 64x64 (a quarter as many at 320x240)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
   sub->add_option("--video-pairs", o->video_pairs,
                   "Real frame pairs per video (vtest.avi, tree.avi); 0 = none")
       ->capture_default_str()
       ->check(CLI::Range(0, 40));
-  sub->add_option("--seed", o->seed, "Seed of the synthetic motions")
-      ->check(seed_value())
-      ->capture_default_str();
-  sub->add_option("--threads", o->threads,
-                  "Threads for OpenCV and the backend alike (0 = all cores)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1024));
-  // --data as in check and report; --data-dir is its old name.
-  sub->add_option("--data,--data-dir", o->data_dir, "Where opencv-doc's images and videos are")
-      ->capture_default_str();
+  add_seed_option(*sub, o->seed, "of the synthetic motions");
+  add_threads_option(*sub, o->threads, "for OpenCV and the backend alike");
+  add_data_option(*sub, o->data_dir);
+  add_json_option(*sub, a->json_path,
+                  "the rows, as in the report's results.json; with '-' the "
+                  "table goes to stderr");
   sub->add_flag("--by-kind", o->by_kind, "Also one block of rows per kind of motion");
-  return {sub, [o] { return run_accuracy_command(*o); }, kAccuracyExamples};
+  add_progress_flag(*sub);
+  // Old spellings: --pairs is a list file of pairs in flow; --data is every command's folder.
+  add_renamed_option(*sub, "--pairs", "--cases N");
+  add_renamed_option(*sub, "--data-dir", "--data DIR");
+  return {sub,
+          [a, sub] {
+            a->command = given_command_line(*sub);
+            return run_accuracy_command(*a);
+          },
+          kAccuracyExamples};
 }
 
 }  // namespace pxflow::cli

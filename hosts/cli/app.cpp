@@ -83,7 +83,8 @@ int run_pxflow(int argc, char** argv) {
     const std::string arg = argv[1];
     const std::string name = arg.substr(0, arg.find('='));
     if (app.get_option_no_throw(name) == nullptr && name != "-h" && name != "--help") {
-      std::fprintf(stderr, "pxflow: error: unknown option %s (see pxflow --help)\n", name.c_str());
+      std::fprintf(stderr, "pxflow: error: unknown option %s%s (see pxflow --help)\n", name.c_str(),
+                   cli::nearest_option(name, app).c_str());
       return 2;
     }
   }
@@ -96,6 +97,17 @@ int run_pxflow(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // A misspelt option is named, whatever CLI11 made of it and of its value.
+    const CLI::App* sub = nullptr;
+    for (const auto& c : commands)
+      if (c.app->get_name() == command) sub = c.app;
+    const std::string unknown =
+        cli::unknown_option(std::vector<std::string>(argv + 1, argv + argc), app, sub);
+    if (!unknown.empty()) {
+      std::fprintf(stderr, "pxflow: error: %s (see pxflow %s--help)\n", unknown.c_str(),
+                   command.empty() ? "" : (command + " ").c_str());
+      return 2;
+    }
     std::fprintf(stderr, "pxflow: error: %s\n", cli::describe_parse_error(e, command).c_str());
     return 2;
   }

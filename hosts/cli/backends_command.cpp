@@ -47,9 +47,9 @@ Command add_backends_command(CLI::App& app) {
   auto json_path = std::make_shared<std::string>();
   CLI::App* sub =
       app.add_subcommand("backends", "List the compiled backends and whether each can run here");
-  sub->add_option("--json", *json_path,
-                  "Also write the rows as JSON to FILE ('-': standard output, instead of the "
-                  "table): name, family, available, reason, needs, has_devices, preferred");
+  add_json_option(*sub, *json_path,
+                  "the rows: name, family, available, reason, needs, has_devices, preferred; "
+                  "with '-' instead of the table");
   return {sub, [json_path] { return run_backends(*json_path); }, kBackendsExamples};
 }
 

@@ -18,12 +18,12 @@ namespace {
 
 struct BenchArgs {
   ProblemOptions problem;
-  std::string backend, backends, batches, threads, sizes, radii, json_path;
+  std::string backend, backends, batches, thread_sweep, sizes, radii, json_path;
   std::string command;  // the command line as run (command_line.hpp)
   double min_time = 0.25;
   bool quick = false;
-  int sweep_threads = 0;  // the default sweeps' host threads (0 = all cores)
-  CLI::Option *min_time_opt = nullptr, *sweep_threads_opt = nullptr;
+  // --threads: the host threads of every point but the thread sweep's (0 = all cores).
+  CLI::Option *min_time_opt = nullptr, *threads_opt = nullptr;
   BackendOptions backend_options;
 };
 
@@ -39,24 +39,28 @@ std::vector<BenchPoint> bench_points(const BenchArgs& a) {
   if (!a.radii.empty() && a.problem.sets_key("search_radius"))
     throw InputError("--radius and --set search_radius both set the search radius; give one");
   if (!a.sizes.empty() && (a.problem.sets_key("width") || a.problem.sets_key("height")))
-    throw InputError("--size and --set width/height both set the frame size; give one");
+    throw InputError("--sizes and --set width/height both set the frame size; give one");
   const Params base = a.problem.resolve(std::nullopt);
+  const int threads_given = a.backend_options.threads;
+  if (!a.thread_sweep.empty() && a.threads_opt->count() > 0)
+    throw InputError("--threads " + std::to_string(threads_given) + ": given with --thread-sweep " +
+                     a.thread_sweep + ": give one of them (see pxflow bench --help)");
   const bool custom =
-      !a.batches.empty() || !a.threads.empty() || !a.sizes.empty() || !a.radii.empty();
-  if (custom && (a.quick || a.sweep_threads_opt->count() > 0))
-    throw InputError(std::string(a.quick ? "--quick" : "--sweep-threads") +
-                     ": shapes the default sweeps; --batch, --threads, --size and --radius "
-                     "replace them: give one kind (see pxflow bench --help)");
+      !a.batches.empty() || !a.thread_sweep.empty() || !a.sizes.empty() || !a.radii.empty();
+  if (custom && a.quick)
+    throw InputError(
+        "--quick: shapes the default sweeps; --batch, --thread-sweep, --sizes and --radius "
+        "replace them: give one kind (see pxflow bench --help)");
   if (!custom) {
     std::vector<BenchPoint> pts = a.quick ? quick_bench_points(base, a.problem.profile)
                                           : default_bench_points(base, a.problem.profile);
-    set_sweep_threads(pts, a.sweep_threads);
+    set_sweep_threads(pts, threads_given);
     return pts;
   }
   const auto batches =
       a.batches.empty() ? std::vector<int>{256} : int_list(a.batches, "--batch", 1, 1 << 20);
-  const auto threads =
-      a.threads.empty() ? std::vector<int>{0} : int_list(a.threads, "--threads", 0, 1024);
+  const auto threads = a.thread_sweep.empty() ? std::vector<int>{threads_given}
+                                              : int_list(a.thread_sweep, "--thread-sweep", 0, 1024);
   const auto radii =
       a.radii.empty() ? std::vector<int>{base.search_radius} : int_list(a.radii, "--radius", 1, 31);
   std::vector<FrameSize> sizes;
@@ -85,6 +89,7 @@ int run_bench_command(const BenchArgs& a) {
   o.points = bench_points(a);
   o.min_seconds = a.quick && a.min_time_opt->count() == 0 ? kQuickMinSeconds : a.min_time;
   o.backend_options = a.backend_options;
+  o.backend_options.threads = 0;  // each point's own threads (bench_points)
   // `--json -`: the JSON is standard output, so the table goes to standard error.
   const bool json_to_stdout = a.json_path == "-";
   OutputPlan plan;
@@ -115,14 +120,17 @@ Command add_bench_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "bench", "Time the backends over batch, frame-size, radius and thread sweeps");
   a->problem.add_to(*sub);
-  sub->add_option("--backends", a->backends,
-                  "Comma-separated backends (default: all that can run)");
-  sub->add_option("--backend", a->backend, "One backend (see `pxflow backends`)");
+  add_backends_option(*sub, a->backends);
+  add_backend_option(*sub, a->backend);
   sub->add_option("--batch", a->batches, "Batch sizes, N[,N...] (frame pairs per run)")
       ->check(non_empty_list());
-  sub->add_option("--threads", a->threads, "Thread counts, N[,N...] (0 = all cores)")
+  a->threads_opt =
+      add_threads_option(*sub, a->backend_options.threads,
+                         "of every point but the thread sweep's (what report --threads N runs)");
+  sub->add_option("--thread-sweep", a->thread_sweep,
+                  "Thread counts to sweep, N[,N...] (0 = all cores), instead of --threads")
       ->check(non_empty_list());
-  sub->add_option("--size", a->sizes, "Frame sizes, WxH[,WxH...]")->check(non_empty_list());
+  sub->add_option("--sizes", a->sizes, "Frame sizes, WxH[,WxH...]")->check(non_empty_list());
   sub->add_option("--radius", a->radii, "Search radii, S[,S...]")->check(non_empty_list());
   a->min_time_opt =
       sub->add_option("--min-time", a->min_time, "Seconds of repeats per point and backend")
@@ -131,16 +139,12 @@ Command add_bench_command(CLI::App& app) {
   sub->add_flag("--quick", a->quick,
                 "The default sweeps' quick subset: batch <= 256 and the frame sizes, no radius or "
                 "thread sweep, --min-time 0.05 unless given (what report --quick runs)");
-  a->sweep_threads_opt =
-      sub->add_option("--sweep-threads", a->sweep_threads,
-                      "Host threads of every default-sweep point but the thread sweep's "
-                      "(0 = all cores; what report --threads N runs)")
-          ->check(CLI::Range(0, 1024));
-  sub->add_option("--device", a->backend_options.device,
-                  "Device index or name substring (GPU backends)");
-  sub->add_option("--json", a->json_path,
-                  "Write the rows as JSON to FILE ('-': standard output, the table to stderr)");
+  add_device_option(*sub, a->backend_options.device);
+  add_json_option(*sub, a->json_path, "the table then goes to stderr");
   add_progress_flag(*sub);
+  // Spellings that meant something else here than in the other commands.
+  add_renamed_option(*sub, "--size", "--sizes WxH[,WxH...]");
+  add_renamed_option(*sub, "--sweep-threads", "--threads N");
   return {sub,
           [a, sub] {
             a->command = given_command_line(*sub);

@@ -116,33 +116,25 @@ Command add_check_command(CLI::App& app) {
   auto a = std::make_shared<CheckArgs>();
   CLI::App* sub =
       app.add_subcommand("check", "Check every backend against ref-original, bit for bit");
-  a->backend_opt =
-      sub->add_option("--backend", a->backend, "The one backend to check (see pxflow backends)");
-  a->backends_opt = sub->add_option("--backends", a->backends,
-                                    "Comma-separated backends to check (default: all compiled in)");
+  a->backend_opt = add_backend_option(*sub, a->backend, "the one to check");
+  a->backends_opt = add_backends_option(*sub, a->backends, "the ones to check");
   sub->add_option("--require", a->require,
                   "Backends that must run (comma-separated, or 'all': every row but those needing "
                   "hardware this machine lacks, an ISA extension): their skips fail");
-  sub->add_option("--seed", a->seed, "Seed of the random pairs (printed; reproduces any failure)")
-      ->check(seed_value())
-      ->capture_default_str();
+  add_seed_option(*sub, a->seed, "printed; it reproduces any failure");
   sub->add_option("--cases", a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
       ->check(CLI::Range(1L, 100000000L));
   a->shard_opt = sub->add_option("--shard", a->shard,
                                  "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
                                  "`pxflow merge` combines the parts' --json files)");
-  sub->add_option("--json", a->json_path, "Write the results as JSON to FILE ('-': stdout)");
-  a->data_opt = sub->add_option("--data", a->data_dir, "Folder of the real frames (opencv-doc)")
-                    ->capture_default_str();
+  add_json_option(*sub, a->json_path);
+  a->data_opt = add_data_option(*sub, a->data_dir);
   sub->add_flag("--generated-only", a->generated_only,
                 "Skip the real frames (random, hostile, threshold cases only)");
   sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
   add_progress_flag(*sub);
-  sub->add_option("--threads", a->backend_options.threads,
-                  "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)")
-      ->check(CLI::Range(0, 1024));
-  sub->add_option("--device", a->backend_options.device,
-                  "Device index or name substring (GPU backends)");
+  add_threads_option(*sub, a->backend_options.threads);
+  add_device_option(*sub, a->backend_options.device);
   return {sub,
           [a, sub] {
             a->globals = global_options(*sub);

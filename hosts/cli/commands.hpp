@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "params.hpp"
+#include "shared_options.hpp"
 
 namespace pxflow::cli {
 
@@ -27,9 +28,6 @@ Command add_check_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_accuracy_command(CLI::App& app);
-
-// --progress: progress lines on stderr even when it is not a terminal (CI logs).
-void add_progress_flag(CLI::App& sub);
 
 // Options that describe the problem, shared by every command that runs kernels.
 struct ProblemOptions {

@@ -307,15 +307,11 @@ Command add_flow_command(CLI::App& app) {
                   "Use the window WxH+X+Y of every frame (e.g. 64x64+100+40), before --bin");
   sub->add_option("--bin", o->bin, "Average N x N pixels into one (after --crop)")
       ->check(CLI::Range(1, 64));
-  sub->add_option("--backend", o->backend, "Backend to run (see `pxflow backends`)")
-      ->capture_default_str();
-  sub->add_option("--threads", o->backend_options.threads,
-                  "Host worker threads of the CPU backends and the GAP8 model (0 = all cores)")
-      ->check(CLI::Range(0, 1024));
-  sub->add_option("--device", o->backend_options.device,
-                  "Device index or name substring (GPU backends)");
+  add_backend_option(*sub, o->backend);
+  add_threads_option(*sub, o->backend_options.threads);
+  add_device_option(*sub, o->backend_options.device);
   CLI::Option* json =
-      sub->add_option("--json", o->json, "Write one JSON object (one pair) to FILE, - for stdout");
+      add_json_option(*sub, o->json, "one object, of one pair (a sequence: --jsonl)");
   CLI::Option* jsonl = sub->add_option(
       "--jsonl", o->jsonl, "Write one JSON object per pair, one per line, to FILE (- = stdout)");
   CLI::Option* csv =
@@ -328,8 +324,7 @@ Command add_flow_command(CLI::App& app) {
       sub->add_option("--pairs", o->pairs, "A list file of pairs: PREV NEXT a line");
   sub->add_option("--max-pairs", o->max_pairs, "Stop a sequence after N pairs (0 = all)")
       ->check(CLI::Range(0, 100000000));
-  sub->add_flag("--progress", o->progress,
-                "A line per pair on stderr even when stdout is taken and stderr is no terminal");
+  add_progress_flag(*sub, &o->progress);
   sub->add_option("PREV", o->first, "First frame (image file, or raw with --size), or SOURCE");
   sub->add_option("NEXT", o->second, "Second frame (same size)");
   return {sub,

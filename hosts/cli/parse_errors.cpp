@@ -1,5 +1,6 @@
 #include "parse_errors.hpp"
 
+#include <algorithm>
 #include <regex>
 
 namespace pxflow::cli {
@@ -45,7 +46,55 @@ std::string reword(const CLI::ParseError& e) {
   return what;
 }
 
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// Whether `command` or one of its own subcommands (vectors verify) declares `name`.
+bool declares(const CLI::App& command, const std::string& name) {
+  if (command.get_option_no_throw(name) != nullptr || name == "--help") return true;
+  for (const CLI::App* sub : command.get_subcommands({}))
+    if (sub->get_option_no_throw(name) != nullptr) return true;
+  return false;
+}
+
 }  // namespace
+
+std::string nearest_option(const std::string& name, const CLI::App& app) {
+  std::string best;
+  std::size_t best_distance = 3;  // within two edits: a slip, not another option
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->get_group().empty()) continue;  // hidden: old spellings
+    for (const std::string& long_name : opt->get_lnames()) {
+      const std::size_t d = edit_distance(name, "--" + long_name);
+      if (d < best_distance) best_distance = d, best = "--" + long_name;
+    }
+  }
+  return best.empty() ? "" : " (did you mean " + best + "?)";
+}
+
+std::string unknown_option(const std::vector<std::string>& args, const CLI::App& app,
+                           const CLI::App* command) {
+  for (const std::string& arg : args) {
+    if (arg == "--") break;  // what follows are arguments
+    if (arg.size() < 3 || arg.compare(0, 2, "--") != 0) continue;
+    const std::string name = arg.substr(0, arg.find('='));
+    if ((command && declares(*command, name)) || app.get_option_no_throw(name) != nullptr) continue;
+    return "unknown option " + name + nearest_option(name, command ? *command : app);
+  }
+  return "";
+}
 
 std::string describe_parse_error(const CLI::ParseError& e, const std::string& command) {
   return reword(e) + " (see pxflow " + (command.empty() ? "" : command + " ") + "--help)";

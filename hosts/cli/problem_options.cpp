@@ -2,21 +2,16 @@
 
 #include "commands.hpp"
 #include "errors.hpp"
-#include "progress.hpp"
 
 namespace pxflow::cli {
-
-void add_progress_flag(CLI::App& sub) {
-  sub.add_flag_callback(
-      "--progress", [] { force_progress(true); },
-      "Progress on stderr even when it is not a terminal");
-}
 
 void ProblemOptions::add_to(CLI::App& app) {
   std::string profiles;
   for (const auto& n : profile_names()) profiles += (profiles.empty() ? "" : ", ") + n;
   std::string keys;
-  for (const auto& k : param_keys()) keys += (keys.empty() ? "" : ", ") + k;
+  // gyro_comp is a key of the spec's parameters, but pxflow takes no gyro rates (resolve()).
+  for (const auto& k : param_keys())
+    keys += (keys.empty() ? "" : ", ") + k + (k == "gyro_comp" ? " (0 only)" : "");
   app.add_option("--profile", profile, "Parameter profile: " + profiles)->capture_default_str();
   app.add_option("--set", sets, "Override one parameter, KEY=VALUE (repeatable). Keys: " + keys)
       ->type_name("KEY=VALUE")

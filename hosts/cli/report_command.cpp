@@ -4,6 +4,7 @@
 #include <iostream>
 #include <set>
 
+#include "accuracy_json.hpp"
 #include "accuracy_run.hpp"
 #include "bench.hpp"
 #include "check.hpp"
@@ -78,11 +79,10 @@ accuracy::AccuracyOptions accuracy_options(const ReportArgs& a) {
 
 void add_accuracy(ReportInputs& in, const ReportArgs& a) {
   const accuracy::AccuracyOptions o = accuracy_options(a);
-  in.accuracy_command =
-      a.pxflow("accuracy") + " --backend " + o.backend +
-      (a.quick ? " --pairs 40 --video-pairs 2" : "") +
-      (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
-      (a.data_dir == kSampleDataDir ? "" : " --data-dir " + shell_word(a.data_dir));
+  in.accuracy_command = a.pxflow("accuracy") + " --backend " + o.backend +
+                        (a.quick ? " --cases 40 --video-pairs 2" : "") +
+                        (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
+                        (a.data_dir == kSampleDataDir ? "" : " --data " + shell_word(a.data_dir));
   std::cout << "== " << in.accuracy_command << "\n";
   const auto report = accuracy::run_accuracy(o);
   in.accuracy.push_back({"pairs", "pxflow setting", "against", "method", "frames", "with flow",
@@ -98,16 +98,8 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
           {set.set, set.setting, set.against, r.method, std::to_string(r.frames),
            std::to_string(r.valid), r.has_error ? fixed(r.mean_error, "%.3f") : "(reference)",
            r.has_error ? fixed(r.p95_error, "%.3f") : "(reference)", fixed(r.median_us, "%.0f")});
-      in.accuracy_rows.push_back({{"set", set.set},
-                                  {"setting", set.setting},
-                                  {"against", set.against},
-                                  {"method", r.method},
-                                  {"frames", r.frames},
-                                  {"with_flow", r.valid},
-                                  {"mean_error_px", r.has_error ? Json(r.mean_error) : Json()},
-                                  {"p95_error_px", r.has_error ? Json(r.p95_error) : Json()},
-                                  {"median_us_per_frame", r.median_us}});
     }
+  in.accuracy_rows = accuracy::accuracy_rows_json(report);
 }
 
 // The flow picture of each of accuracy::kVideos.
@@ -320,7 +312,7 @@ int run_report(const ReportArgs& a) {
     if (a.quick) o.min_seconds = kQuickMinSeconds;
     in.bench_command = a.pxflow("bench") + backends +
                        (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
-                       (a.threads ? " --sweep-threads " + std::to_string(a.threads) : "") +
+                       (a.threads ? " --threads " + std::to_string(a.threads) : "") +
                        (a.quick ? " --quick" : "");
     std::cout << "== " << in.bench_command << "\n";
     BenchReport r = run_bench(o, std::cout);
@@ -364,24 +356,14 @@ Command add_report_command(CLI::App& app) {
                   "Use this `pxflow check --json` file instead of running the check");
   sub->add_option("--bench-json", a->bench_json,
                   "Use this `pxflow bench --json` file instead of running the bench");
-  sub->add_option("--backends", a->backends,
-                  "Comma-separated backends of the check, the bench and the family sections "
-                  "(default: all)");
-  sub->add_option("--backend", a->backend,
-                  "Backend of the accuracy table and the flow pictures (default: the preferred "
-                  "one that runs here)");
-  sub->add_option("--threads", a->threads,
-                  "Host worker threads of the check and of the bench's default sweeps (0 = all "
-                  "cores; the thread sweep still runs 1)")
-      ->check(CLI::Range(0, 1024));
-  sub->add_option("--device", a->device, "Device index or name substring (GPU backends)");
-  sub->add_option("--data", a->data_dir,
-                  "Folder of the real frames and videos (opencv-doc) for the check, the accuracy "
-                  "table and the pictures")
-      ->capture_default_str();
-  sub->add_option("--seed", a->seed, "Seed of the check's random pairs")
-      ->check(seed_value())
-      ->capture_default_str();
+  add_backends_option(*sub, a->backends, "of the check, the bench and the family sections");
+  add_backend_option(*sub, a->backend, "of the accuracy table and the flow pictures");
+  add_threads_option(*sub, a->threads,
+                     "of the check and of the bench's default sweeps (the thread sweep still "
+                     "runs its own)");
+  add_device_option(*sub, a->device);
+  add_data_option(*sub, a->data_dir, "for the check, the accuracy table and the pictures");
+  add_seed_option(*sub, a->seed, "of the check's random pairs");
   sub->add_flag("--quick", a->quick,
                 "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
   sub->add_flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");

@@ -25,6 +25,7 @@
 #include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
+#include "progress.hpp"
 #include "synthetic.hpp"
 
 namespace pxflow::cli {
@@ -89,19 +90,24 @@ Vectors make_vectors(const VectorsArgs& a, const PairList& list) {
           "--size applies to the raw frames of --from only (see pxflow vectors --help)");
     v.p = a.problem.resolve(std::nullopt);
     for (int i = 0; i < a.cases; ++i) {
-      stop_if_interrupted(std::to_string(i) + " of " + std::to_string(a.cases) + " pairs made");
+      const std::string done = std::to_string(i) + " of " + std::to_string(a.cases) + " pairs made";
+      stop_if_interrupted(done);
+      progress("vectors: " + done);
       v.pairs.push_back(random_pair(v.p.width, v.p.height, v.p.search_radius, a.seed + i));
     }
   }
   // Pair by pair, so that Ctrl-C stops within one pair.
   for (std::size_t i = 0; i < v.pairs.size(); ++i) {
-    stop_if_interrupted(std::to_string(i) + " of " + std::to_string(v.pairs.size()) +
-                        " pairs computed");
+    const std::string done =
+        std::to_string(i) + " of " + std::to_string(v.pairs.size()) + " pairs computed";
+    stop_if_interrupted(done);
+    progress("vectors: " + done);
     const FramePair view = v.pairs[i].view();
     ReferenceAnswer one = reference_answer({&view, 1}, v.p);
     v.answer.records.insert(v.answer.records.end(), one.records.begin(), one.records.end());
     v.answer.results.push_back(one.results.at(0));
   }
+  progress("");  // clears the live line
   return v;
 }
 
@@ -324,13 +330,12 @@ Command add_vectors_command(CLI::App& app) {
   a->problem.add_to(*sub);
   CLI::Option* cases =
       sub->add_option("--cases", a->cases, "Random pairs (seeded)")->check(CLI::Range(1, 100000));
-  CLI::Option* seed =
-      sub->add_option("--seed", a->seed, "Seed of the first pair; pair i has seed + i")
-          ->check(seed_value());
+  CLI::Option* seed = add_seed_option(*sub, a->seed, "of the first pair; pair i has seed + i");
   sub->add_option("--from", a->from,
                   "Vectors of these pairs instead of random ones: a list file, one 'PREV NEXT' per "
                   "line (paths relative to the list), every frame one size");
   sub->add_option("--size", a->size, "Frame size of raw frames in the --from list, WxH");
+  add_progress_flag(*sub);
   sub->add_option("--format", a->format, "bin (files + manifest.json) or c (C arrays + checker)")
       ->check(CLI::IsMember({"bin", "c"}));
   CLI::App* verify = sub->add_subcommand("verify",

@@ -63,7 +63,7 @@ std::vector<BenchPoint> quick_bench_points(const Params& base, const std::string
 constexpr double kQuickMinSeconds = 0.05;
 
 // Every point but the thread sweep's run on `threads` host threads (0 = all cores), as
-// `bench --sweep-threads N` and `report --threads N` ask.
+// `bench --threads N` and `report --threads N` ask.
 void set_sweep_threads(std::vector<BenchPoint>& points, int threads);
 
 // Runs every point: prints the backends with what each runs, then one aligned table (a group of

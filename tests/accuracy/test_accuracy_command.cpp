@@ -40,7 +40,7 @@ std::vector<std::vector<std::string>> table(const std::string& out) {
 TEST_CASE("pxflow accuracy prints pxflow, LK and DIS for 200 synthetic pairs and real video",
           "[accuracy][cli]") {
   const auto r =
-      run_pxflow({"accuracy", "--pairs", "200", "--backend", "ref-original"});  // 6 video pairs
+      run_pxflow({"accuracy", "--cases", "200", "--backend", "ref-original"});  // 6 video pairs
   INFO("stderr: " << r.err << "stdout: " << r.out);
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.find("rubberwhale1.png, basketball1.png, baboon.jpg") != std::string::npos);
@@ -88,7 +88,7 @@ TEST_CASE("pxflow accuracy prints pxflow, LK and DIS for 200 synthetic pairs and
 }
 
 TEST_CASE("pxflow accuracy --by-kind adds a block per kind of motion", "[accuracy][cli]") {
-  const auto r = run_pxflow({"accuracy", "--pairs", "14", "--video-pairs", "0", "--by-kind"});
+  const auto r = run_pxflow({"accuracy", "--cases", "14", "--video-pairs", "0", "--by-kind"});
   INFO("stderr: " << r.err);
   REQUIRE(r.exit_code == 0);
   for (const char* kind : {"translate+noise", "translate+blur", "translate+brightness",
@@ -108,8 +108,11 @@ TEST_CASE("pxflow accuracy --by-kind adds a block per kind of motion", "[accurac
 TEST_CASE("bad input to pxflow accuracy: one line, exit 2", "[accuracy][cli][errors]") {
   require_bad_input({"accuracy", "--data", "/nonexistent/data"},
                     "/nonexistent/data/rubberwhale1.png: no such file");
-  require_bad_input({"accuracy", "--pairs", "0"}, "--pairs");
-  require_bad_input({"accuracy", "--pairs", "many"}, "--pairs");
+  require_bad_input({"accuracy", "--cases", "0"}, "--cases");
+  require_bad_input({"accuracy", "--cases", "many"}, "--cases");
+  // The old spellings name the new ones (--pairs is flow's list file of pairs).
+  require_bad_input({"accuracy", "--pairs", "40"}, "--pairs: renamed: give --cases N");
+  require_bad_input({"accuracy", "--data-dir", "/tmp"}, "--data-dir: renamed: give --data DIR");
   require_bad_input({"accuracy", "--backend", "no-such-backend"},
                     "unknown backend 'no-such-backend'");
   require_bad_input({"accuracy", "--threads", "-1"}, "--threads");

@@ -140,7 +140,7 @@ TEST_CASE("a report's manifest can only remove files the report writes", "[cli][
 TEST_CASE("Ctrl-C stops accuracy, vectors and gap8 with exit 130", "[cli][plan]") {
   test::TempDir dir;
   const std::vector<std::vector<std::string>> runs = {
-      {"accuracy", "--pairs", "2000"},
+      {"accuracy", "--cases", "2000"},
       {"vectors", "--cases", "2000", "--out", dir.path("vec")},
       {"gap8", "--variant", "all", "--cores", "1-8", "--json", dir.path("g.json")}};
   for (const auto& args : runs) {

@@ -9,6 +9,7 @@
 #include "bad_input.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
+#include "shared_options.hpp"
 
 using pxflow::test::require_bad_input;
 using pxflow::test::run_pxflow;
@@ -36,7 +37,7 @@ TEST_CASE("no CLI11 sentence reaches the user", "[cli][errors]") {
   for (const std::vector<std::string>& args : {std::vector<std::string>{"check", "--cases", "0"},
                                                {"check", "--json"},
                                                {"flow", "a.png", "b.png", "c.png"},
-                                               {"accuracy", "--pairs", "0"},
+                                               {"accuracy", "--cases", "0"},
                                                {"check", "--threads", "-1"}}) {
     const auto r = run_pxflow(args);
     INFO(r.err);
@@ -104,6 +105,8 @@ TEST_CASE("every JSON file pxflow writes starts with pxflow {version, commit}",
       {{"gap8", "--cores", "1", "--variant", "local", "--json", dir.path("gap8.json")},
        "gap8.json"},
       {{"vectors", "--out", dir.path(""), "--cases", "2"}, "manifest.json"},
+      {{"accuracy", "--cases", "4", "--video-pairs", "0", "--json", dir.path("accuracy.json")},
+       "accuracy.json"},
   };
   std::string commit;
   for (const auto& [args, file] : writers) {
@@ -122,6 +125,11 @@ TEST_CASE("every JSON file pxflow writes starts with pxflow {version, commit}",
     CHECK((commit.empty() || c == commit));  // one build wrote them all
     commit = c;
   }
+  // accuracy's rows are the report's (accuracy_rows_json): pxflow, LK and DIS on 4 pairs.
+  const auto acc = nlohmann::json::parse(pxflow::test::slurp(dir.path("accuracy.json")));
+  CHECK(acc["command"].get<std::string>().rfind("pxflow accuracy --cases 4", 0) == 0);
+  REQUIRE(acc["rows"].size() >= 3);
+  CHECK(acc["rows"][0]["frames"] == 4);
   // Whole counts are integers in gap8's JSON, where it was written.
   if (std::ifstream(dir.path("gap8.json"))) {
     const auto g = nlohmann::json::parse(pxflow::test::slurp(dir.path("gap8.json")));
@@ -150,4 +158,91 @@ TEST_CASE("a count of one is singular: 1 pair, 1 point, 1 case", "[cli]") {
   for (const auto* r : {&flow, &bench, &check})
     for (const char* plural : {" 1 pairs", " 1 points", " 1 cases", " 1 threads", " 1 frames"})
       CHECK(r->out.find(plural) == std::string::npos);
+}
+
+// One vocabulary: the README's table is the code's table (hosts/cli/shared_options.cpp), and
+// every command that takes a shared option shows its one help text.
+TEST_CASE("readme_shared_options: the README's table is the code's, every --help says the same",
+          "[cli][vocabulary]") {
+  const std::string readme = pxflow::test::slurp(PXFLOW_SOURCE_DIR "/README.md");
+  const std::string begin = "<!-- shared options: ", end = "<!-- end of shared options -->";
+  const auto from = readme.find('\n', readme.find(begin)) + 1;
+  REQUIRE(readme.find(begin) != std::string::npos);
+  REQUIRE(readme.find(end) != std::string::npos);
+  CHECK(readme.substr(from, readme.find(end) - from) == pxflow::cli::shared_options_markdown());
+  int declared = 0;
+  for (const char* command :
+       {"flow", "check", "bench", "report", "accuracy", "backends", "gap8", "vectors"}) {
+    const auto help = run_pxflow({command, "--help"});
+    if (help.exit_code == 2) continue;  // a family's command this build lacks
+    REQUIRE(help.exit_code == 0);
+    for (const auto& o : pxflow::cli::shared_options()) {
+      if (help.out.find("  " + o.name + " ") == std::string::npos) continue;
+      CAPTURE(command, o.name);
+      CHECK(help.out.find(o.meaning) != std::string::npos);
+      CHECK(help.out.find("Default: " + o.defaults) != std::string::npos);
+      ++declared;
+    }
+  }
+  CHECK(declared >= 25);  // each shared option in at least two commands
+  // accuracy takes --backend, so it takes --device too.
+  CHECK(run_pxflow({"accuracy", "--help"}).out.find("  --device D") != std::string::npos);
+  // gyro_comp is a key, but only 0 is taken (pxflow has no gyro rates).
+  CHECK(run_pxflow({"flow", "--help"}).out.find("gyro_comp (0 only)") != std::string::npos);
+}
+
+TEST_CASE("a misspelt option is named, with the nearest one", "[cli][errors][vocabulary]") {
+  // CLI11 alone said "unexpected argument '5'": the misspelt name ate no value.
+  require_bad_input({"check", "--case", "5"},
+                    "unknown option --case (did you mean --cases?) (see pxflow check --help)");
+  require_bad_input({"accuracy", "--thread", "2"},
+                    "unknown option --thread (did you mean --threads?)");
+  require_bad_input({"flow", "--bakend", "ref-local", "a.png", "b.png"},
+                    "unknown option --bakend (did you mean --backend?)");
+  require_bad_input({"bench", "--batch=1", "--min-tim", "0"},
+                    "unknown option --min-tim (did you mean --min-time?)");
+  require_bad_input({"--device-timout", "3", "check"},
+                    "unknown option --device-timout (did you mean --device-timeout?)");
+  // A name near none: no guess.
+  const auto far = run_pxflow({"check", "--bogus", "1"});
+  CHECK(far.err == "pxflow: error: unknown option --bogus (see pxflow check --help)\n");
+  // Old spellings whose meaning differed name the new one.
+  require_bad_input({"bench", "--size", "64x64"}, "--size: renamed: give --sizes WxH[,WxH...]");
+  require_bad_input({"bench", "--sweep-threads", "2"},
+                    "--sweep-threads: renamed: give --threads N");
+}
+
+TEST_CASE("bench --threads N is one count, --thread-sweep LIST a sweep", "[cli][vocabulary]") {
+  auto threads_of_rows = [](const std::vector<std::string>& sweep) {
+    std::vector<std::string> args = {"bench",      "--backend", "ref-local", "--batch", "1",
+                                     "--min-time", "0",         "--json",    "-"};
+    args.insert(args.end(), sweep.begin(), sweep.end());
+    const auto r = run_pxflow(args);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    std::vector<int> threads;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const auto& row : j["rows"]) threads.push_back(row["threads"]);
+    return threads;
+  };
+  CHECK(threads_of_rows({"--threads", "1"}) == std::vector<int>{1});
+  CHECK(threads_of_rows({"--thread-sweep", "1,2"}) == std::vector<int>{1, 2});
+  require_bad_input({"bench", "--threads", "1", "--thread-sweep", "1,2"},
+                    "--threads 1: given with --thread-sweep 1,2: give one of them");
+}
+
+TEST_CASE("progress lines on the long runs: accuracy and vectors take --progress",
+          "[cli][vocabulary]") {
+  pxflow::test::TempDir dir;
+  const auto accuracy =
+      run_pxflow({"accuracy", "--cases", "2", "--video-pairs", "0", "--progress"});
+  INFO(accuracy.err);
+  CHECK(accuracy.exit_code == 0);
+  CHECK(accuracy.err.find("accuracy: synthetic, camera 64x64") != std::string::npos);
+  const auto vectors =
+      run_pxflow({"vectors", "--out", dir.path("v"), "--cases", "2", "--progress"});
+  if (vectors.exit_code == 2 && vectors.err.find("unknown command") != std::string::npos) return;
+  INFO(vectors.err);
+  CHECK(vectors.exit_code == 0);
+  CHECK(vectors.err.find("vectors: 0 of 2 pairs made") != std::string::npos);
 }

@@ -147,5 +147,5 @@ TEST_CASE("bench times only checked backends and writes the documented JSON rows
     if (row.contains("cycles_per_frame")) CHECK(row["bound_ratio"].get<double>() > 0);
 #endif
   CHECK(run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--batch", "0"}).exit_code == 2);
-  CHECK(run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--size", "8x8"}).exit_code == 2);
+  CHECK(run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--sizes", "8x8"}).exit_code == 2);
 }

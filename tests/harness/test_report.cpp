@@ -145,7 +145,7 @@ TEST_CASE("report --quick records the bench command that reruns its bench", "[re
   REQUIRE(r.exit_code == 0);
   const json j = json::parse(slurp(dir.path("r/results.json")));
   const std::string recorded = j["commands"]["bench"];
-  CHECK(recorded == "pxflow bench --backends ref-local --sweep-threads 1 --quick");
+  CHECK(recorded == "pxflow bench --backends ref-local --threads 1 --quick");
   // Run as recorded (its words need no quoting), with its JSON kept: the same points.
   std::vector<std::string> args;
   std::istringstream words(recorded);

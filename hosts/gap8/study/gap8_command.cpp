@@ -132,9 +132,7 @@ Command add_gap8_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--cores", o->cores, "Core counts, e.g. 1,8 or 1-8")->capture_default_str();
   sub->add_option("--mhz", o->mhz, "Cluster clock for fps and latency")->capture_default_str();
-  sub->add_option(
-      "--json", o->json_path,
-      "Also write the figures as JSON to FILE ('-': standard output, instead of the tables)");
+  add_json_option(*sub, o->json_path, "the figures; with '-' instead of the tables");
   sub->add_flag("--no-contention", o->no_contention, "Do not model TCDM bank conflicts");
   sub->add_flag("--chunked", o->chunked, "Split POIs in contiguous chunks, not round robin");
   sub->add_option("--crop", o->crop,

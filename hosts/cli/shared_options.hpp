@@ -1,0 +1,44 @@
+// The options several commands take, declared once: one spelling, one meaning, one help text and
+// one default (stated per command where a command must differ). Every command adds them through
+// the add_* functions below; the README's table of shared options is shared_options_markdown()
+// (tests/cli checks it).
+#pragma once
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pxflow::cli {
+
+struct SharedOption {
+  std::string name;      // "--threads"
+  std::string value;     // "N"; empty for a flag
+  std::string meaning;   // the help text
+  std::string defaults;  // what it is when not given, per command where they differ
+};
+
+const std::vector<SharedOption>& shared_options();
+const SharedOption& shared_option(std::string_view name);  // throws std::out_of_range
+
+// The README's table: | option | meaning | default |, one row per shared option.
+std::string shared_options_markdown();
+
+// `detail` (optional) is appended to the shared help for what only this command adds.
+CLI::Option* add_backend_option(CLI::App& sub, std::string& backend,
+                                const std::string& detail = "");
+CLI::Option* add_backends_option(CLI::App& sub, std::string& backends,
+                                 const std::string& detail = "");
+CLI::Option* add_threads_option(CLI::App& sub, int& threads, const std::string& detail = "");
+CLI::Option* add_device_option(CLI::App& sub, std::string& device);
+CLI::Option* add_json_option(CLI::App& sub, std::string& path, const std::string& detail = "");
+CLI::Option* add_data_option(CLI::App& sub, std::string& dir, const std::string& detail = "");
+CLI::Option* add_seed_option(CLI::App& sub, std::uint64_t& seed, const std::string& detail = "");
+// --progress; `given` (optional) is also set when it is given.
+void add_progress_flag(CLI::App& sub, bool* given = nullptr);
+
+// An old spelling of this command's option, now refused with one line naming the new one
+// (`accuracy --pairs 40`: "--pairs: renamed: give --cases"). Hidden from --help.
+void add_renamed_option(CLI::App& sub, const std::string& old_name, const std::string& new_name);
+
+}  // namespace pxflow::cli
