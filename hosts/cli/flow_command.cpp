@@ -206,11 +206,7 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
     if (csv) csv->add(csv_row(pairs, r));
     if (lines) std::fputs(pair_line(pairs, r).c_str(), lines);
     backend_seconds += r.host_seconds;
-    last_what =
-        r.backend +
-        (r.implementation.empty() || r.implementation == r.backend ? ""
-                                                                   : " -> " + r.implementation) +
-        (r.device == "host" ? "" : " on " + r.device);
+    last_what = what_ran(r);
     ++pairs;
   };
   const auto more = [&] { return o.max_pairs == 0 || pairs < o.max_pairs; };

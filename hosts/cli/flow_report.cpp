@@ -54,14 +54,14 @@ std::string csv_field(const std::string& s) {
   return out + "\"";
 }
 
+}  // namespace
+
 std::string what_ran(const PairRun& r) {
   std::string s = r.backend;
   if (!r.implementation.empty() && r.implementation != r.backend) s += " -> " + r.implementation;
   if (r.device != "host") s += " on " + r.device;
   return s;
 }
-
-}  // namespace
 
 std::string mincount_note(const PairRun& run) {
   const int accepted = count_status(run.records).accepted;

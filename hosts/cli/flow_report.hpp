@@ -45,6 +45,9 @@ std::string csv_row(int index, const PairRun& run);
 
 // The multi-line summary of one pair (stdout of `pxflow flow A B`).
 std::string pair_summary(const PairRun& run);
+
+// "cpu -> avx512bw", "vulkan -> flow.comp on llvmpipe ...": the backend, what it ran, where.
+std::string what_ran(const PairRun& run);
 // One line per pair of a sequence.
 std::string pair_line(int index, const PairRun& run);
 

@@ -67,10 +67,19 @@ bool write_all(int fd, std::string_view bytes) {
   return true;
 }
 
+// The temporary file beside `path` that its bytes go to first (one per process and path), and
+// creating it.
+std::string temporary_for(const std::string& path) {
+  return path + ".tmp." + std::to_string(::getpid());
+}
+int create_temporary(const std::string& tmp) {
+  return ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+}
+
 // Writes `bytes` to `path` through a temporary beside it, renamed into place when complete.
 void write_whole(const std::string& label, const std::string& path, std::string_view bytes) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const std::string tmp = temporary_for(path);
+  const int fd = create_temporary(tmp);
   if (fd < 0) throw OutputError(label + ": cannot create " + tmp + ": " + errno_text());
   bool ok = write_all(fd, bytes) && ::fsync(fd) == 0;
   std::string why = errno_text();
@@ -99,8 +108,8 @@ void PlannedPath::open() {
       throw InputError(label() + ": cannot be written: " + errno_text());
     return;
   }
-  tmp_ = path_ + ".tmp." + std::to_string(::getpid());
-  fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  tmp_ = temporary_for(path_);
+  fd_ = create_temporary(tmp_);
   if (fd_ < 0) {
     const std::string why = errno_text();
     tmp_.clear();
