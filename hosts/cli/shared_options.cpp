@@ -31,11 +31,15 @@ const std::vector<SharedOption>& shared_options() {
   return table;
 }
 
+namespace {
+
 const SharedOption& shared_option(std::string_view name) {
   for (const SharedOption& o : shared_options())
     if (o.name == name) return o;
   throw std::out_of_range("not a shared option: " + std::string(name));
 }
+
+}  // namespace
 
 std::string shared_options_markdown() {
   std::string md = "| option | meaning | default |\n|---|---|---|\n";

@@ -19,7 +19,6 @@ struct SharedOption {
 };
 
 const std::vector<SharedOption>& shared_options();
-const SharedOption& shared_option(std::string_view name);  // throws std::out_of_range
 
 // The README's table: | option | meaning | default |, one row per shared option.
 std::string shared_options_markdown();

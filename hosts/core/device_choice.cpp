@@ -22,8 +22,6 @@ bool all_digits(std::string_view s) {
   return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
 }
 
-}  // namespace
-
 std::string describe_devices(const std::vector<DeviceLabel>& devices) {
   std::string text;
   for (std::size_t i = 0; i < devices.size(); ++i)
@@ -31,6 +29,8 @@ std::string describe_devices(const std::vector<DeviceLabel>& devices) {
             devices[i].detail + ")";
   return text.empty() ? "none" : text;
 }
+
+}  // namespace
 
 std::size_t device_index_for(std::string_view family, const std::vector<DeviceLabel>& devices,
                              std::string_view request) {

@@ -17,9 +17,6 @@ struct DeviceLabel {
   std::string detail;  // shown after the name, e.g. the OpenCL platform or the Vulkan type
 };
 
-// "0 '<name>' (<detail>), 1 '<name>' (<detail>)", or "none" for no device.
-std::string describe_devices(const std::vector<DeviceLabel>& devices);
-
 // The index of the device `request` names; `request` is not empty. Throws InputError
 // "<family>: device index <n> is out of range (devices: ...)" for a number (of any length) that
 // is not an index of `devices`, and "<family>: no device name contains '<request>' (devices:

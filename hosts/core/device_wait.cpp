@@ -22,6 +22,12 @@ std::string grouped(std::uint64_t n) {
   return out;
 }
 
+std::string seconds_text(double seconds) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, seconds < 1 ? "%.2f s" : "%.1f s", seconds);
+  return buf;
+}
+
 }  // namespace
 
 std::uint64_t DeviceWork::candidates() const {
@@ -46,12 +52,6 @@ std::string work_text(const DeviceWork& work) {
   return grouped(work.pairs) + (work.pairs == 1 ? " pair (" : " pairs (") +
          grouped(work.pairs * work.pois_per_pair) +
          " POIs at S=" + std::to_string(work.search_radius) + ")";
-}
-
-std::string seconds_text(double seconds) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, seconds < 1 ? "%.2f s" : "%.1f s", seconds);
-  return buf;
 }
 
 std::string setting_text(double seconds) {

@@ -41,9 +41,6 @@ std::chrono::duration<double> wait_allowance(const DeviceWork& work);
 // "4 pairs (1,024 POIs at S=31)".
 std::string work_text(const DeviceWork& work);
 
-// "62.1 s": a measured time, with one decimal (two below a second).
-std::string seconds_text(double seconds);
-
 // "0.4", "30": a setting in seconds as a user writes it (%g), e.g. --device-timeout's value.
 std::string setting_text(double seconds);
 

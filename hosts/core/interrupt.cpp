@@ -13,14 +13,14 @@ extern "C" void on_signal(int sig) {
   std::signal(sig, SIG_DFL);  // a second one ends the process at once
 }
 
+int interrupt_signal() { return g_signal.load(); }
+
 }  // namespace
 
 void install_interrupt_handlers() {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
 }
-
-int interrupt_signal() { return g_signal.load(); }
 
 void stop_if_interrupted(const std::string& done) {
   if (const int sig = interrupt_signal())

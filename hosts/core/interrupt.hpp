@@ -15,9 +15,6 @@ struct Interrupted : std::runtime_error {
 
 void install_interrupt_handlers();
 
-// 0 when no signal came, else the signal number.
-int interrupt_signal();
-
 // Throws Interrupted saying what had finished (`done`, e.g. "12 of 33 cases") when a signal came.
 void stop_if_interrupted(const std::string& done);
 

@@ -97,11 +97,15 @@ void check_device_option(std::span<const BackendRow* const> rows, const std::str
 void check_batch(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out) {
   validate(p);
   for (const auto& pair : pairs)
-    for (const FrameView* f : {&pair.prev, &pair.next})
-      if (f->width != p.width || f->height != p.height || f->stride < f->width || !f->data)
+    for (const FrameView* f : {&pair.prev, &pair.next}) {
+      if (f->width != p.width || f->height != p.height)
         throw InputError("frame is " + std::to_string(f->width) + "x" + std::to_string(f->height) +
                          " but the parameters say " + std::to_string(p.width) + "x" +
                          std::to_string(p.height));
+      if (!f->data || f->stride < f->width)
+        throw InputError("frame view has " + std::string(f->data ? "a stride below its width"
+                                                                 : "no pixels (a null pointer)"));
+    }
   if (out.size() != pairs.size() * poi_count(p))
     throw InputError("record buffer holds " + std::to_string(out.size()) +
                      " records, the batch needs " + std::to_string(pairs.size() * poi_count(p)));

@@ -59,6 +59,22 @@ void put32(std::vector<std::uint8_t>& v, std::uint32_t x) {
 }
 std::uint16_t get16(const std::uint8_t* p) { return static_cast<std::uint16_t>(p[0] | p[1] << 8); }
 
+// "bad CRC", ...: why a frame was discarded (a PXDUT_NAK_* reason), the words of the host's own
+// receiver and of a device's NAK; nullptr for a reason the protocol lacks.
+const char* discard_reason(unsigned reason) {
+  switch (reason) {
+    case PXDUT_NAK_BAD_CRC:
+      return "bad CRC";
+    case PXDUT_NAK_BAD_COBS:
+      return "bad COBS";
+    case PXDUT_NAK_TOO_LONG:
+      return "too long";
+    case PXDUT_NAK_TOO_SHORT:
+      return "too short";
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 std::string message_name(std::uint8_t type) {
@@ -236,20 +252,6 @@ DeviceErrorReply parse_error(std::span<const std::uint8_t> body) {
   for (char& c : e.text)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = '?';  // one line, printable
   return e;
-}
-
-const char* discard_reason(unsigned reason) {
-  switch (reason) {
-    case PXDUT_NAK_BAD_CRC:
-      return "bad CRC";
-    case PXDUT_NAK_BAD_COBS:
-      return "bad COBS";
-    case PXDUT_NAK_TOO_LONG:
-      return "too long";
-    case PXDUT_NAK_TOO_SHORT:
-      return "too short";
-  }
-  return nullptr;
 }
 
 std::string nak_reason(std::span<const std::uint8_t> body) {

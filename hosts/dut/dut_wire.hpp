@@ -110,9 +110,6 @@ struct DeviceErrorReply {
   std::string text;
 };
 DeviceErrorReply parse_error(std::span<const std::uint8_t> body);
-// "bad CRC", "too long", ...: why a frame was discarded (a PXDUT_NAK_* reason), the words of
-// the host's own receiver and of a device's NAK; nullptr for a reason the protocol lacks.
-const char* discard_reason(unsigned reason);
 std::string nak_reason(std::span<const std::uint8_t> body);
 
 // SPEC §4's 32 bytes, little-endian, field by field.

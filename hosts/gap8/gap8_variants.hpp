@@ -1,6 +1,7 @@
 // The GAP8 kernel's variants, one table: the rows (gap8-<name>), `pxflow gap8`, the report and
-// the tests read it; nothing else spells a variant. Each variant is one embedded ELF of
-// kernels/gap8 (its CMakeLists.txt builds one per name).
+// the tests read it; no other C++ spells a variant. The kernel's build, kernels/gap8's
+// CMakeLists.txt, names the same variants to make one embedded ELF each (it knows the sources
+// of each); a variant without its ELF is a row that cannot run ("no embedded GAP8 kernel ELF").
 #pragma once
 #include <span>
 #include <string>

@@ -58,6 +58,13 @@ Frame load_image(const std::string& path) {
   return f;
 }
 
+bool is_raw_path(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return ext == ".raw";
+}
+
 }  // namespace
 
 FrameSize parse_frame_size(std::string_view text) {
@@ -68,13 +75,6 @@ FrameSize parse_frame_size(std::string_view text) {
   const int h = parse_int(text.substr(x + 1), "--size height", 1, kMaxFrameSide);
   check_size_limits("--size", w, h);
   return {w, h};
-}
-
-bool is_raw_path(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext == ".raw";
 }
 
 Frame load_frame(const std::string& path, std::optional<FrameSize> raw_size) {

@@ -20,9 +20,6 @@ struct FrameSize {
 // Parses "WxH" (e.g. "64x64"); throws InputError for anything else or a size beyond the limits.
 FrameSize parse_frame_size(std::string_view text);
 
-// True for paths that name raw 8-bit files (extension .raw, any case).
-bool is_raw_path(const std::string& path);
-
 // Loads one frame. With `raw_size` the file is raw 8-bit, whatever its name, and must hold
 // exactly W*H bytes; without it a .raw file is an error and any other is decoded by OpenCV. A
 // pipe is read like a file (hosts/io/input_file.hpp). Refuses 16-bit and float images, empty

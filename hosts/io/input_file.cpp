@@ -29,8 +29,6 @@ std::string count_text(std::uint64_t n) {
   return std::to_string(n) + (n == 1 ? " byte" : " bytes");
 }
 
-}  // namespace
-
 void require_existing(const std::string& label, const std::string& path) {
   std::error_code ec;
   const auto st = fs::status(path, ec);
@@ -43,6 +41,8 @@ void require_existing(const std::string& label, const std::string& path) {
     throw InputError(label + ": cannot be opened (" + ec.message() + ")");
   throw InputError(label + ": no such file");
 }
+
+}  // namespace
 
 bool is_stream(const std::string& path) {
   std::error_code ec;

@@ -10,10 +10,6 @@
 
 namespace pxflow {
 
-// Throws InputError when `path` names nothing that can be opened, saying why: no such file, a
-// loop of symbolic links, a folder on the way that may not be searched.
-void require_existing(const std::string& label, const std::string& path);
-
 // True for a pipe or FIFO (read to its end once; its size is unknown until then).
 bool is_stream(const std::string& path);
 

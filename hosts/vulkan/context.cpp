@@ -42,12 +42,12 @@ bool layer_available(const char* name) {
   return false;
 }
 
-}  // namespace
-
 bool validation_requested_by_env() {
   const char* value = std::getenv(kValidationEnvironment);
   return value && *value && std::strcmp(value, "0") != 0;
 }
+
+}  // namespace
 
 std::vector<DeviceCandidate> list_devices(VkInstance instance) {
   std::vector<DeviceCandidate> list;

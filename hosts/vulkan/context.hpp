@@ -20,9 +20,8 @@ struct ContextOptions {
 // The instance layer that validation enables.
 inline constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
-// True when the environment asks for validation (PXFLOW_VULKAN_VALIDATION set and not "0").
+// The variable that asks for validation when it is set and not "0".
 inline constexpr const char* kValidationEnvironment = "PXFLOW_VULKAN_VALIDATION";
-bool validation_requested_by_env();
 
 class Context {
  public:

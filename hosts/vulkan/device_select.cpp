@@ -35,8 +35,6 @@ std::size_t default_device(const std::vector<DeviceCandidate>& devices) {
   return best;
 }
 
-}  // namespace
-
 std::string_view device_type_name(VkPhysicalDeviceType type) {
   switch (type) {
     case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
@@ -51,6 +49,8 @@ std::string_view device_type_name(VkPhysicalDeviceType type) {
       return "other";
   }
 }
+
+}  // namespace
 
 std::size_t select_device(const std::vector<DeviceCandidate>& devices, std::string_view request) {
   if (devices.empty()) fail("no Vulkan device found (install mesa-vulkan-drivers for lavapipe)");

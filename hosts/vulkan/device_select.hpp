@@ -23,6 +23,4 @@ struct DeviceCandidate {
 // is no device, when no device can run the kernel, or when the one requested cannot.
 std::size_t select_device(const std::vector<DeviceCandidate>& devices, std::string_view request);
 
-std::string_view device_type_name(VkPhysicalDeviceType type);
-
 }  // namespace pxflow::vk

@@ -4,6 +4,8 @@
 
 namespace pxflow::vk {
 
+namespace {
+
 std::string result_name(VkResult r) {
   switch (r) {
     case VK_SUCCESS:
@@ -44,6 +46,8 @@ std::string result_name(VkResult r) {
       return "VkResult " + std::to_string(static_cast<int>(r));
   }
 }
+
+}  // namespace
 
 void check(VkResult r, std::string_view what) {
   if (r != VK_SUCCESS) fail(std::string(what) + " failed: " + result_name(r));

@@ -7,9 +7,6 @@
 
 namespace pxflow::vk {
 
-// "VK_ERROR_DEVICE_LOST", ... or "VkResult <n>" for codes this file does not name.
-std::string result_name(VkResult r);
-
 // Throws BackendError("vulkan: <what> failed: <result name>") unless r is VK_SUCCESS.
 void check(VkResult r, std::string_view what);
 

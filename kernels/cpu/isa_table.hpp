@@ -1,5 +1,5 @@
 // The ISA table (isas.def) as C++ rows: what the host needs to list, probe, mask and run an ISA.
-// Nothing else in the tree lists ISAs; everything iterates these rows.
+// isas.def is the one list of ISAs: C++ reads it here, CMake through isa_table.cmake.
 #pragma once
 #include <span>
 #include <string>

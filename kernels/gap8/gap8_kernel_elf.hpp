@@ -7,7 +7,8 @@
 
 namespace pxflow {
 
-// The ELF of variant "original", "local" or "global"; empty for any other name.
+// The ELF of the variant called `variant` (one per row of gap8_variants(): original, local,
+// global, fast); empty for any other name.
 std::span<const std::uint8_t> gap8_kernel_elf(std::string_view variant);
 
 }  // namespace pxflow

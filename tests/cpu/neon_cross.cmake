@@ -83,5 +83,6 @@ pxflow_tool_skip(cpu_real_frames_raw)  # the real frames of opencv-doc
 add_test(NAME cpu_neon_cross
          COMMAND ${PXFLOW_QEMU_AARCH64} -L ${PXFLOW_AARCH64_SYSROOT} ${neon_cross_binary}
                  ${real_raw}/frames.txt)
-set_tests_properties(cpu_neon_cross PROPERTIES LABELS "cross" FIXTURES_REQUIRED cpu_real_raw)
+# no-sanitizer: the cross-built binary under qemu-aarch64 is not instrumented.
+set_tests_properties(cpu_neon_cross PROPERTIES LABELS "cross;no-sanitizer" FIXTURES_REQUIRED cpu_real_raw)
 message(STATUS "pxflow: NEON cross test on (${PXFLOW_AARCH64_CXX}, ${PXFLOW_QEMU_AARCH64})")

@@ -4,6 +4,7 @@
 #include "errors.hpp"
 #include "grid.hpp"
 #include "params.hpp"
+#include "registry.hpp"
 
 using namespace pxflow;
 
@@ -118,4 +119,24 @@ TEST_CASE("the grid follows SPEC §2's integer formula", "[grid]") {
   // The smallest valid frame has exactly one POI per axis.
   p.width = p.height = 2 * 5 + 8 + 1;
   CHECK(grid_axis(p.width, p) == std::vector<int>{5});
+}
+
+TEST_CASE("check_batch names what is wrong with a frame view", "[params]") {
+  const Params p = profile("px4flow-64");
+  std::vector<std::uint8_t> pixels(64 * 64, 0);
+  const FrameView good{64, 64, 64, pixels.data()};
+  std::vector<PoiRecord> out(poi_count(p));
+  const auto message = [&](FrameView prev) {
+    const FramePair pair{prev, good};
+    try {
+      check_batch({&pair, 1}, p, out);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  CHECK(message(good) == "accepted");
+  CHECK(message({32, 64, 64, pixels.data()}) == "frame is 32x64 but the parameters say 64x64");
+  CHECK(message({64, 64, 64, nullptr}) == "frame view has no pixels (a null pointer)");
+  CHECK(message({64, 64, 63, pixels.data()}) == "frame view has a stride below its width");
 }
