@@ -414,39 +414,4 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   return report;
 }
 
-Json bench_json(const BenchReport& r) {
-  Json rows = Json::array();
-  for (const auto& b : r.rows) {
-    Json j{{"backend", b.backend},
-           {"sweep", b.sweep},
-           {"profile", b.setting},
-           {"width", b.width},
-           {"height", b.height},
-           {"search_radius", b.search_radius},
-           {"batch", b.batch},
-           {"threads", b.threads},
-           {"source", b.source},
-           {"note", b.note},
-           {"repeats", b.repeats},
-           {"pois_per_frame", b.pois_per_frame},
-           {"median_ns_per_frame", b.median_ns_per_frame},
-           {"min_ns_per_frame", b.min_ns_per_frame},
-           {"max_ns_per_frame", b.max_ns_per_frame},
-           {"frames_per_s", b.frames_per_s},
-           {"ns_per_poi", b.ns_per_poi},
-           {"exact_clock", b.exact_clock}};
-    if (b.cycles_per_frame > 0) j["cycles_per_frame"] = b.cycles_per_frame;
-    if (b.instructions_per_frame > 0) j["instructions_per_frame"] = b.instructions_per_frame;
-    if (b.speedup_vs_reference > 0) j["speedup_vs_ref_original"] = b.speedup_vs_reference;
-    if (b.bound_ratio > 0) j["bound_ratio"] = b.bound_ratio;
-    rows.push_back(std::move(j));
-  }
-  Json j{{"command", r.command}, {"backends", r.backends}, {"rows", rows}, {"skipped", r.skipped}};
-  if (r.bound_bytes_per_cycle > 0)
-    j["bound"] = {{"name", r.bound_name},
-                  {"clock", r.bound_clock},
-                  {"bytes_per_cycle", r.bound_bytes_per_cycle}};
-  return j;
-}
-
 }  // namespace pxflow
