@@ -96,7 +96,8 @@ void backends_from_json(CheckReport& r, const Json& all) {
     fields_from_json(backend_outcome_fields(), j, r.backends.emplace_back());
 }
 
-// A single run's file has `shard`; a merge's has `merged_from` and `missing_shards` instead.
+// A single run's file has `shard`; a merge's has `merged_from` and `missing_shards` instead
+// (check_from_json requires one set). The check itself has no CSV file: its csv flags are unused.
 const std::array kCheckReportFields{
     ResultField<CheckReport>{"verdict", [](const CheckReport& r) -> Json { return r.verdict(); }},
     member_field<&CheckReport::seed>("seed"),
