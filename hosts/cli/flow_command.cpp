@@ -159,6 +159,123 @@ void say_incomplete(int pairs, std::initializer_list<const OutputStream*> stream
                pairs == 1 ? "" : "s", kept.empty() ? "" : ("; kept in" + kept).c_str());
 }
 
+// What a sequence run reads: the pairs of a list file (--pairs), or a sequence's frames.
+struct SequenceSource {
+  std::vector<std::pair<std::string, std::string>> list;
+  std::unique_ptr<FrameSequence> sequence;
+  std::vector<std::string> inputs;  // every file read, for the output plan
+};
+
+SequenceSource open_source(const FlowOptions& o, std::optional<FrameSize> raw_size) {
+  SequenceSource src;
+  if (o.pairs_given) {
+    src.list = read_pair_list("--pairs", o.pairs);
+    for (const auto& [a, b] : src.list) src.inputs.push_back(a), src.inputs.push_back(b);
+  } else {
+    src.sequence = open_frame_sequence(o.first, raw_size);
+    src.inputs = src.sequence->files();
+  }
+  return src;
+}
+
+// Where a sequence's results go, planned before any work.
+struct SequenceOutputs {
+  OutputStream* jsonl = nullptr;
+  OutputStream* csv = nullptr;
+  OutputFolder* draw = nullptr;
+  bool stdout_taken = false;   // by --jsonl - or --csv -
+  std::FILE* lines = nullptr;  // the line per pair, or nowhere
+};
+
+SequenceOutputs plan_sequence_outputs(OutputPlan& plan, const FlowOptions& o) {
+  SequenceOutputs out;
+  out.jsonl = o.jsonl_given ? &plan.stream("--jsonl", o.jsonl) : nullptr;
+  out.csv = o.csv_given ? &plan.stream("--csv", o.csv) : nullptr;
+  out.draw = o.draw_given ? &plan.folder("--draw", o.draw, "pair-NNNNNN.png") : nullptr;
+  plan.prepare();
+  if (out.csv) out.csv->header(csv_header());
+  out.stdout_taken = (out.jsonl && out.jsonl->to_stdout()) || (out.csv && out.csv->to_stdout());
+  // Lines per pair: on stdout when it is free, else on stderr on a terminal or with --progress.
+  out.lines = !out.stdout_taken ? stdout : (o.progress || ::isatty(2) == 1) ? stderr : nullptr;
+  return out;
+}
+
+// Runs the pairs one by one into the outputs, and keeps the tallies of the summary.
+class SequenceRun {
+ public:
+  SequenceRun(const FlowOptions& o, const BackendRow& row, const SequenceOutputs& out)
+      : runner_(o, row, o.pairs_given), out_(out), max_pairs_(o.max_pairs) {}
+
+  bool wants_more() const { return max_pairs_ == 0 || pairs_ < max_pairs_; }
+
+  void pair(const NamedFrame& a, const NamedFrame& b) {
+    stop_if_interrupted(counted(pairs_, "pair") + " done");
+    const PairRun r = runner_.run(a, b);
+    if (out_.draw) {
+      char name[32];
+      std::snprintf(name, sizeof name, "pair-%06d.png", pairs_);
+      out_.draw->write(name, picture(a, r));
+    }
+    if (out_.jsonl) out_.jsonl->add(json_document(pair_json(r), -1));
+    if (out_.csv) out_.csv->add(csv_row(pairs_, r));
+    if (out_.lines) std::fputs(pair_line(pairs_, r).c_str(), out_.lines);
+    backend_seconds_ += r.host_seconds;
+    last_what_ = what_ran(r);
+    ++pairs_;
+  }
+
+  int pairs() const { return pairs_; }
+  double backend_seconds() const { return backend_seconds_; }
+  const std::string& last_what() const { return last_what_; }
+
+ private:
+  FlowRunner runner_;
+  const SequenceOutputs& out_;
+  int max_pairs_;
+  int pairs_ = 0;
+  double backend_seconds_ = 0;
+  std::string last_what_;
+};
+
+// Every pair of the list, or every consecutive pair of the sequence (at least one).
+void run_pairs(SequenceSource& src, const FlowOptions& o, const FrameShaping& shaping,
+               std::optional<FrameSize> raw_size, SequenceRun& run) {
+  if (o.pairs_given) {
+    for (const auto& [a, b] : src.list)
+      if (run.wants_more())
+        run.pair(shaped({a, load_frame(a, raw_size)}, shaping),
+                 shaped({b, load_frame(b, raw_size)}, shaping));
+    return;
+  }
+  NamedFrame prev, next;
+  bool have_prev = false;
+  while (run.wants_more() && src.sequence->next(next)) {
+    next = shaped(std::move(next), shaping);
+    if (have_prev) run.pair(prev, next);
+    prev = std::move(next), have_prev = true;
+  }
+  if (run.pairs() == 0)
+    throw InputError(o.first + ": holds " + std::string(have_prev ? "1 frame" : "no frame") +
+                     "; a sequence needs at least 2");
+}
+
+// The last line: pairs, frames, wall time and the backend's share, on stdout when it is free.
+void print_summary(const FlowOptions& o, const SequenceRun& run, const SequenceOutputs& out,
+                   double wall) {
+  const int pairs = run.pairs();
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "%s (%s) in %.3f s: %.1f pairs/s with decoding, %.1f pairs/s in the "
+                "backend (%.3f s, host steady_clock)\n",
+                counted(pairs, "pair").c_str(),
+                counted(o.pairs_given ? 2 * pairs : pairs + 1, "frame").c_str(), wall, pairs / wall,
+                run.backend_seconds() > 0 ? pairs / run.backend_seconds() : 0.0,
+                run.backend_seconds());
+  std::FILE* summary = out.stdout_taken ? stderr : stdout;
+  std::fprintf(summary, "flow: %s, %s: %s", run.last_what().c_str(), o.problem.profile.c_str(),
+               buf);
+}
+
 // Every consecutive pair of a sequence, or every pair of a list file.
 int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping& shaping,
                  std::optional<FrameSize> raw_size) {
@@ -166,84 +283,23 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
     throw InputError(
         "--json writes one pair's object; for a sequence use --jsonl FILE|- (one "
         "object per pair, the same keys) or --csv FILE|-");
-  std::vector<std::pair<std::string, std::string>> list;
-  std::unique_ptr<FrameSequence> sequence;
-  std::vector<std::string> inputs;
-  if (o.pairs_given) {
-    list = read_pair_list("--pairs", o.pairs);
-    for (const auto& [a, b] : list) inputs.push_back(a), inputs.push_back(b);
-  } else {
-    sequence = open_frame_sequence(o.first, raw_size);
-    inputs = sequence->files();
-  }
+  SequenceSource src = open_source(o, raw_size);
   OutputPlan plan;
-  plan.read_all(inputs);
-  OutputStream* const jsonl = o.jsonl_given ? &plan.stream("--jsonl", o.jsonl) : nullptr;
-  OutputStream* const csv = o.csv_given ? &plan.stream("--csv", o.csv) : nullptr;
-  OutputFolder* const draw =
-      o.draw_given ? &plan.folder("--draw", o.draw, "pair-NNNNNN.png") : nullptr;
-  plan.prepare();
-  if (csv) csv->header(csv_header());
-  const bool stdout_taken = (jsonl && jsonl->to_stdout()) || (csv && csv->to_stdout());
-  // Lines per pair: on stdout when it is free, else on stderr on a terminal or with --progress.
-  std::FILE* lines = !stdout_taken ? stdout : (o.progress || ::isatty(2) == 1) ? stderr : nullptr;
-  FlowRunner runner(o, row, o.pairs_given);
+  plan.read_all(src.inputs);
+  const SequenceOutputs out = plan_sequence_outputs(plan, o);
+  SequenceRun run(o, row, out);
   const auto t0 = Clock::now();
-  double backend_seconds = 0;
-  int pairs = 0;
-  std::string last_what;
-  NamedFrame prev, next;
-  bool have_prev = false;
-  auto one_pair = [&](const NamedFrame& a, const NamedFrame& b) {
-    stop_if_interrupted(counted(pairs, "pair") + " done");
-    const PairRun r = runner.run(a, b);
-    if (draw) {
-      char name[32];
-      std::snprintf(name, sizeof name, "pair-%06d.png", pairs);
-      draw->write(name, picture(a, r));
-    }
-    if (jsonl) jsonl->add(json_document(pair_json(r), -1));
-    if (csv) csv->add(csv_row(pairs, r));
-    if (lines) std::fputs(pair_line(pairs, r).c_str(), lines);
-    backend_seconds += r.host_seconds;
-    last_what = what_ran(r);
-    ++pairs;
-  };
-  const auto more = [&] { return o.max_pairs == 0 || pairs < o.max_pairs; };
   try {
-    if (o.pairs_given) {
-      for (const auto& [a, b] : list)
-        if (more())
-          one_pair(shaped({a, load_frame(a, raw_size)}, shaping),
-                   shaped({b, load_frame(b, raw_size)}, shaping));
-    } else {
-      while (more() && sequence->next(next)) {
-        next = shaped(std::move(next), shaping);
-        if (have_prev) one_pair(prev, next);
-        prev = std::move(next), have_prev = true;
-      }
-      if (pairs == 0)
-        throw InputError(o.first + ": holds " + std::string(have_prev ? "1 frame" : "no frame") +
-                         "; a sequence needs at least 2");
-    }
+    run_pairs(src, o, shaping, raw_size, run);
     // A signal that ended the source early (Ctrl-C reaches `cat ... |` too) is a stop as well.
-    stop_if_interrupted(std::to_string(pairs) + " pairs done");
+    stop_if_interrupted(std::to_string(run.pairs()) + " pairs done");
   } catch (...) {
-    if (pairs > 0) say_incomplete(pairs, {jsonl, csv});
+    if (run.pairs() > 0) say_incomplete(run.pairs(), {out.jsonl, out.csv});
     throw;
   }
-  if (jsonl) jsonl->finish();
-  if (csv) csv->finish();
-  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "%s (%s) in %.3f s: %.1f pairs/s with decoding, %.1f pairs/s in the "
-                "backend (%.3f s, host steady_clock)\n",
-                counted(pairs, "pair").c_str(),
-                counted(o.pairs_given ? 2 * pairs : pairs + 1, "frame").c_str(), wall, pairs / wall,
-                backend_seconds > 0 ? pairs / backend_seconds : 0.0, backend_seconds);
-  std::FILE* summary = stdout_taken ? stderr : stdout;
-  std::fprintf(summary, "flow: %s, %s: %s", last_what.c_str(), o.problem.profile.c_str(), buf);
+  if (out.jsonl) out.jsonl->finish();
+  if (out.csv) out.csv->finish();
+  print_summary(o, run, out, std::chrono::duration<double>(Clock::now() - t0).count());
   return 0;
 }
 

@@ -263,11 +263,9 @@ void refuse_options_without_effect(const ReportArgs& a) {
   }
 }
 
-int run_report(const ReportArgs& a) {
-  ReportInputs in;
-  in.report_command = a.command;
-  const std::string backends = a.backends.empty() ? "" : " --backends " + a.backends;
-  // Inputs first, so that a wrong file or name is refused before minutes of work.
+// Every name and option checked, and the files given read, before any work: a wrong file or
+// name is refused before minutes of work.
+void read_given_results(ReportInputs& in, const ReportArgs& a) {
   for (const std::string& name : split_list(a.backends)) (void)find_backend(name);
   if (!a.backend.empty()) (void)find_backend(a.backend);
   refuse_options_without_effect(a);
@@ -275,50 +273,92 @@ int run_report(const ReportArgs& a) {
   if (!a.bench_json.empty()) in.bench = read_json("--bench-json", a.bench_json, "bench");
   // The accuracy table's and the pictures' backend runs last: one it cannot run is refused now.
   if (!a.no_accuracy) accuracy::require_backend_runs(accuracy_options(a));
-  OutputPlan plan;
+}
+
+// The report's folder and files, planned and prepared in `plan` before any work: a folder or
+// file that cannot be made fails first.
+ReportOutputs plan_report_outputs(OutputPlan& plan, const ReportArgs& a) {
   plan.read_all({a.check_json, a.bench_json});
   if (a.check_json.empty() || !a.no_accuracy) plan.read_folder("--data", a.data_dir);
   std::vector<std::string> pictures;  // planned even with --no-accuracy: a previous report's go
   for (const char* video : accuracy::kVideos) pictures.push_back(picture_file(video));
   ReportOutputs out = plan_report(plan, a.out_dir, pictures);
-  plan.prepare();  // before any work: a folder or file that cannot be made fails first
+  plan.prepare();
+  return out;
+}
+
+std::string backends_flag(const ReportArgs& a) {
+  return a.backends.empty() ? "" : " --backends " + a.backends;
+}
+
+// The check: read from --check-json, or run here with the report's options.
+void add_check(ReportInputs& in, const ReportArgs& a) {
   if (!a.check_json.empty()) {
     in.check_command = recorded_command(in.check, "check", a.check_json);
-  } else {
-    CheckOptions o;
-    o.backends = split_list(a.backends);
-    o.corpus.seed = a.seed;
-    o.corpus.data_dir = a.data_dir;
-    o.backend_options = a.backend_options();
-    in.check_command = a.pxflow("check") + " --seed " + std::to_string(a.seed) + backends +
-                       a.shared_flags() +
-                       (a.data_dir == kSampleDataDir ? "" : " --data " + shell_word(a.data_dir));
-    std::cout << "== " << in.check_command << "\n";
-    const CheckReport r = run_check(o, std::cout);
-    std::cout << r.passed << " passed, " << r.failed << " failed, " << r.skipped << " skipped\n";
-    in.check = check_json(r);
+    return;
   }
+  CheckOptions o;
+  o.backends = split_list(a.backends);
+  o.corpus.seed = a.seed;
+  o.corpus.data_dir = a.data_dir;
+  o.backend_options = a.backend_options();
+  in.check_command = a.pxflow("check") + " --seed " + std::to_string(a.seed) + backends_flag(a) +
+                     a.shared_flags() +
+                     (a.data_dir == kSampleDataDir ? "" : " --data " + shell_word(a.data_dir));
+  std::cout << "== " << in.check_command << "\n";
+  const CheckReport r = run_check(o, std::cout);
+  std::cout << r.passed << " passed, " << r.failed << " failed, " << r.skipped << " skipped\n";
+  in.check = check_json(r);
+}
+
+// The bench: read from --bench-json, or run here with its own default profile and sweeps, so
+// that the recorded command reruns them.
+void add_bench(ReportInputs& in, const ReportArgs& a) {
   if (!a.bench_json.empty()) {
     in.bench_command = recorded_command(in.bench, "bench", a.bench_json);
-  } else {
-    BenchOptions o;
-    o.backends = split_list(a.backends);
-    o.backend_options = a.backend_options();
-    // The bench's own default profile and sweeps, so that the recorded command reruns them.
-    const Params base = profile("px4flow-64");
-    o.points =
-        a.quick ? quick_bench_points(base, "px4flow-64") : default_bench_points(base, "px4flow-64");
-    set_sweep_threads(o.points, a.threads);
-    if (a.quick) o.min_seconds = kQuickMinSeconds;
-    in.bench_command = a.pxflow("bench") + backends +
-                       (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
-                       (a.threads ? " --threads " + std::to_string(a.threads) : "") +
-                       (a.quick ? " --quick" : "");
-    std::cout << "== " << in.bench_command << "\n";
-    BenchReport r = run_bench(o, std::cout);
-    r.command = in.bench_command;
-    in.bench = bench_json(r);
+    return;
   }
+  BenchOptions o;
+  o.backends = split_list(a.backends);
+  o.backend_options = a.backend_options();
+  const Params base = profile("px4flow-64");
+  o.points =
+      a.quick ? quick_bench_points(base, "px4flow-64") : default_bench_points(base, "px4flow-64");
+  set_sweep_threads(o.points, a.threads);
+  if (a.quick) o.min_seconds = kQuickMinSeconds;
+  in.bench_command = a.pxflow("bench") + backends_flag(a) +
+                     (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
+                     (a.threads ? " --threads " + std::to_string(a.threads) : "") +
+                     (a.quick ? " --quick" : "");
+  std::cout << "== " << in.bench_command << "\n";
+  BenchReport r = run_bench(o, std::cout);
+  r.command = in.bench_command;
+  in.bench = bench_json(r);
+}
+
+// As `pxflow check` and `pxflow merge`: a failure, an incomplete merge or a check that compared
+// nothing is not green (a check file older than its "verdict" key: the first and the last).
+int report_exit_code(const Json& check) {
+  std::string verdict = check.value("verdict", "");
+  if (verdict.empty())
+    verdict = check.value("failed", 0) > 0      ? "failed"
+              : check.value("compared", 0) == 0 ? "nothing-checked"
+                                                : "passed";
+  if (verdict == "nothing-checked")
+    std::cout << "the check compared nothing but the reference: the report is not a pass\n";
+  if (verdict == "incomplete")
+    std::cout << "the check is an incomplete merge (see Conformance): the report is not a pass\n";
+  return verdict == "passed" ? 0 : 1;
+}
+
+int run_report(const ReportArgs& a) {
+  ReportInputs in;
+  in.report_command = a.command;
+  read_given_results(in, a);
+  OutputPlan plan;
+  ReportOutputs out = plan_report_outputs(plan, a);
+  add_check(in, a);
+  add_bench(in, a);
   describe_backends(in, a);
   if (!a.no_accuracy) add_accuracy(in, a);
   add_family_sections(in, a);
@@ -326,18 +366,7 @@ int run_report(const ReportArgs& a) {
   if (!a.no_accuracy) add_pictures(in, a, out);
   write_report(out, in);
   std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json and CSV files\n";
-  // As `pxflow check` and `pxflow merge`: a failure, an incomplete merge or a check that compared
-  // nothing is not green (a check file older than its "verdict" key: the first and the last).
-  std::string verdict = in.check.value("verdict", "");
-  if (verdict.empty())
-    verdict = in.check.value("failed", 0) > 0      ? "failed"
-              : in.check.value("compared", 0) == 0 ? "nothing-checked"
-                                                   : "passed";
-  if (verdict == "nothing-checked")
-    std::cout << "the check compared nothing but the reference: the report is not a pass\n";
-  if (verdict == "incomplete")
-    std::cout << "the check is an incomplete merge (see Conformance): the report is not a pass\n";
-  return verdict == "passed" ? 0 : 1;
+  return report_exit_code(in.check);
 }
 
 }  // namespace

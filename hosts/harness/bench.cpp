@@ -123,6 +123,7 @@ class Bench {
     out_ << "\n" << line << "  note\n";
   }
 
+  // One backend at one point: checked first, then timed by its exact clock or by repeats.
   void measure(const BackendRow& row, const BenchPoint& pt, const Inputs& in,
                const std::vector<PoiRecord>& expected, BenchReport& report) {
     Backend* b = backend_for(row, pt.threads, report);
@@ -130,99 +131,137 @@ class Bench {
     BenchRow base = row_for(row.name, pt);
     if (std::string why = b->unsupported(pt.params); !why.empty())
       return note(base, "n/a: " + why, report);
-    // A simulated backend's run of a large batch is minutes of host time: from the speed of its
-    // last point, a run that would take longer than max_run_seconds is left out of the batch
-    // sweep, and said so; the other sweeps (frame size, radius, threads) take the model's cycles
-    // from the first kReducedBatch pairs instead, so that every sweep has its figure.
-    int batch = pt.batch;
-    std::string reduced;
-    if (const auto it = sim_pairs_per_s_.find(row.name); it != sim_pairs_per_s_.end()) {
-      const double estimate = pt.batch / it->second;
-      if (estimate > o_.max_run_seconds) {
-        char why[240];
-        if (pt.sweep == "batch" || pt.sweep == "custom") {  // the batch is what is asked for
-          std::snprintf(why, sizeof why,
-                        "not run: simulating %s would take about %.0f s (%.1f pairs/s); "
-                        "measure it with --backends %s --batch %d",
-                        counted(pt.batch, "pair").c_str(), estimate, it->second, row.name.c_str(),
-                        pt.batch);
-          return note(base, why, report);
-        }
-        batch = std::min(pt.batch, kReducedBatch);
-        std::snprintf(why, sizeof why,
-                      "device count of the first %s (the point's %d would take about %.0f s to "
-                      "simulate)",
-                      counted(batch, "pair").c_str(), pt.batch, estimate);
-        reduced = why;
-        base.batch = batch;
-      }
+    const SimulatedBatch sim = simulated_batch(row.name, pt);
+    if (!sim.not_run.empty()) return note(base, sim.not_run, report);
+    base.batch = sim.batch;
+    const std::optional<double> first = checked_run(*b, pt, in, expected, sim.batch, base, report);
+    if (!first) return;
+    if (const auto d = b->last_device_time(); d && d->exact)
+      return emit_exact_clock(*d, *first, sim, base, report);
+    if (*first > o_.max_run_seconds)
+      return note(base, "not timed: one run takes " + std::to_string(*first) + " s", report);
+    emit_samples(repeat_runs(*b, pt, in), base, report);
+  }
+
+ private:
+  // The pairs a simulated backend runs at a point, or why it is not run there.
+  struct SimulatedBatch {
+    int batch = 0;
+    std::string reduced;  // the note of a batch cut to kReducedBatch pairs
+    std::string not_run;  // the note of a point left out
+  };
+
+  // A simulated backend's run of a large batch is minutes of host time: from the speed of its
+  // last point, a run that would take longer than max_run_seconds is left out of the batch
+  // sweep, and said so; the other sweeps (frame size, radius, threads) take the model's cycles
+  // from the first kReducedBatch pairs instead, so that every sweep has its figure.
+  SimulatedBatch simulated_batch(const std::string& backend, const BenchPoint& pt) const {
+    const auto it = sim_pairs_per_s_.find(backend);
+    if (it == sim_pairs_per_s_.end()) return {pt.batch, "", ""};
+    const double estimate = pt.batch / it->second;
+    if (estimate <= o_.max_run_seconds) return {pt.batch, "", ""};
+    char why[240];
+    if (pt.sweep == "batch" || pt.sweep == "custom") {  // the batch is what is asked for
+      std::snprintf(why, sizeof why,
+                    "not run: simulating %s would take about %.0f s (%.1f pairs/s); "
+                    "measure it with --backends %s --batch %d",
+                    counted(pt.batch, "pair").c_str(), estimate, it->second, backend.c_str(),
+                    pt.batch);
+      return {pt.batch, "", why};
     }
+    const int batch = std::min(pt.batch, kReducedBatch);
+    std::snprintf(why, sizeof why,
+                  "device count of the first %s (the point's %d would take about %.0f s to "
+                  "simulate)",
+                  counted(batch, "pair").c_str(), pt.batch, estimate);
+    return {batch, why, ""};
+  }
+
+  // Warm-up and check in one: the first run of `batch` pairs, whose records must equal
+  // ref-original's. Its seconds, or nothing when the row was noted as failed or different.
+  std::optional<double> checked_run(Backend& b, const BenchPoint& pt, const Inputs& in,
+                                    const std::vector<PoiRecord>& expected, int batch,
+                                    const BenchRow& base, BenchReport& report) {
     const std::span<const FramePair> pairs = in.batch_for(0).first(static_cast<std::size_t>(batch));
     const std::span<const PoiRecord> want =
         std::span(expected).first(poi_count(pt.params) * static_cast<std::size_t>(batch));
     std::vector<PoiRecord> got = sentinel_records(want.size());
     OpCounts counts;
-    // Warm-up and check in one: the first run's records must equal ref-original's.
     const auto w0 = std::chrono::steady_clock::now();
     try {
-      b->run(pairs, pt.params, got, counts);
+      b.run(pairs, pt.params, got, counts);
     } catch (const Interrupted&) {
       throw;  // Ctrl-C inside a backend: the run stops, the point did not fail
     } catch (const std::exception& e) {
-      return note(base, std::string("failed: ") + e.what(), report);
+      note(base, std::string("failed: ") + e.what(), report);
+      return std::nullopt;
     }
     const double first = seconds_since(w0);
-    if (std::memcmp(got.data(), want.data(), want.size_bytes()) != 0)
-      return note(base, "not timed: records differ from ref-original (run pxflow check)", report);
-    if (const auto d = b->last_device_time(); d && d->exact) {
-      // Timed by its exact clock from the checked run; the host's time is simulation speed.
-      BenchRow dev = base;
-      dev.source = d->source;
-      dev.exact_clock = true;
-      fill(dev, {d->ns / batch}, d->cycles ? *d->cycles / batch : 0);
-      if (d->instructions) dev.instructions_per_frame = *d->instructions / batch;
-      char sim[128];
-      std::snprintf(sim, sizeof sim, "one checked run; host simulation %.1f pairs/s",
-                    batch / first);
-      dev.note = sim + (reduced.empty() ? "" : "; " + reduced);
-      sim_pairs_per_s_[row.name] = batch / first;
-      emit(dev, report);
-      return;
+    if (std::memcmp(got.data(), want.data(), want.size_bytes()) != 0) {
+      note(base, "not timed: records differ from ref-original (run pxflow check)", report);
+      return std::nullopt;
     }
-    if (first > o_.max_run_seconds)
-      return note(base, "not timed: one run takes " + std::to_string(first) + " s", report);
+    return first;
+  }
 
+  // Timed by its exact clock from the checked run; the host's time is simulation speed.
+  void emit_exact_clock(const Backend::DeviceTime& d, double first, const SimulatedBatch& sim,
+                        const BenchRow& base, BenchReport& report) {
+    BenchRow dev = base;
+    dev.source = d.source;
+    dev.exact_clock = true;
+    fill(dev, {d.ns / sim.batch}, d.cycles ? *d.cycles / sim.batch : 0);
+    if (d.instructions) dev.instructions_per_frame = *d.instructions / sim.batch;
+    char speed[128];
+    std::snprintf(speed, sizeof speed, "one checked run; host simulation %.1f pairs/s",
+                  sim.batch / first);
+    dev.note = speed + (sim.reduced.empty() ? "" : "; " + sim.reduced);
+    sim_pairs_per_s_[base.backend] = sim.batch / first;
+    emit(dev, report);
+  }
+
+  // Per-frame figures of the repeated runs: the host's, and the device clock's when it has one.
+  struct Samples {
     std::vector<double> host_ns, tsc, device_ns, device_cycles;
     std::string device_source;
+  };
+
+  // At least three runs, then more until min_seconds or max_repeats; run r starts at pair r.
+  Samples repeat_runs(Backend& b, const BenchPoint& pt, const Inputs& in) const {
+    Samples s;
+    std::vector<PoiRecord> got(poi_count(pt.params) * static_cast<std::size_t>(pt.batch));
+    OpCounts counts;
     const auto start = std::chrono::steady_clock::now();
-    for (int rep = 1; host_ns.size() < 3 || (seconds_since(start) < o_.min_seconds &&
-                                             static_cast<int>(host_ns.size()) < o_.max_repeats);
+    for (int rep = 1; s.host_ns.size() < 3 || (seconds_since(start) < o_.min_seconds &&
+                                               static_cast<int>(s.host_ns.size()) < o_.max_repeats);
          ++rep) {
       const std::uint64_t c0 = tsc_now();
       const auto t0 = std::chrono::steady_clock::now();
-      b->run(in.batch_for(rep), pt.params, got, counts);
+      b.run(in.batch_for(rep), pt.params, got, counts);
       const double ns = seconds_since(t0) * 1e9;
-      tsc.push_back(static_cast<double>(tsc_now() - c0) / pt.batch);
-      host_ns.push_back(ns / pt.batch);
-      if (auto d = b->last_device_time()) {
-        device_source = d->source;
-        device_ns.push_back(d->ns / pt.batch);
-        if (d->cycles) device_cycles.push_back(*d->cycles / pt.batch);
+      s.tsc.push_back(static_cast<double>(tsc_now() - c0) / pt.batch);
+      s.host_ns.push_back(ns / pt.batch);
+      if (auto d = b.last_device_time()) {
+        s.device_source = d->source;
+        s.device_ns.push_back(d->ns / pt.batch);
+        if (d->cycles) s.device_cycles.push_back(*d->cycles / pt.batch);
       }
     }
-    BenchRow host = base;
-    host.source = kHasTsc ? "host-steady-clock+tsc" : "host-steady-clock";
-    fill(host, host_ns, kHasTsc ? median(tsc) : 0);
-    emit(host, report);
-    if (!device_ns.empty()) {
-      BenchRow dev = base;
-      dev.source = device_source;
-      fill(dev, device_ns, device_cycles.empty() ? 0 : median(device_cycles));
-      emit(dev, report);
-    }
+    return s;
   }
 
- private:
+  void emit_samples(const Samples& s, const BenchRow& base, BenchReport& report) {
+    BenchRow host = base;
+    host.source = kHasTsc ? "host-steady-clock+tsc" : "host-steady-clock";
+    fill(host, s.host_ns, kHasTsc ? median(s.tsc) : 0);
+    emit(host, report);
+    if (s.device_ns.empty()) return;
+    BenchRow dev = base;
+    dev.source = s.device_source;
+    fill(dev, s.device_ns, s.device_cycles.empty() ? 0 : median(s.device_cycles));
+    emit(dev, report);
+  }
+
   Backend* backend_for(const BackendRow& row, int threads, BenchReport& report) {
     auto key = std::pair{row.name, threads};
     if (auto it = cache_.find(key); it != cache_.end()) return it->second.get();
@@ -412,41 +451,6 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   progress("");
   for (const auto& s : report.skipped) out << "skipped " << s << "\n";
   return report;
-}
-
-Json bench_json(const BenchReport& r) {
-  Json rows = Json::array();
-  for (const auto& b : r.rows) {
-    Json j{{"backend", b.backend},
-           {"sweep", b.sweep},
-           {"profile", b.setting},
-           {"width", b.width},
-           {"height", b.height},
-           {"search_radius", b.search_radius},
-           {"batch", b.batch},
-           {"threads", b.threads},
-           {"source", b.source},
-           {"note", b.note},
-           {"repeats", b.repeats},
-           {"pois_per_frame", b.pois_per_frame},
-           {"median_ns_per_frame", b.median_ns_per_frame},
-           {"min_ns_per_frame", b.min_ns_per_frame},
-           {"max_ns_per_frame", b.max_ns_per_frame},
-           {"frames_per_s", b.frames_per_s},
-           {"ns_per_poi", b.ns_per_poi},
-           {"exact_clock", b.exact_clock}};
-    if (b.cycles_per_frame > 0) j["cycles_per_frame"] = b.cycles_per_frame;
-    if (b.instructions_per_frame > 0) j["instructions_per_frame"] = b.instructions_per_frame;
-    if (b.speedup_vs_reference > 0) j["speedup_vs_ref_original"] = b.speedup_vs_reference;
-    if (b.bound_ratio > 0) j["bound_ratio"] = b.bound_ratio;
-    rows.push_back(std::move(j));
-  }
-  Json j{{"command", r.command}, {"backends", r.backends}, {"rows", rows}, {"skipped", r.skipped}};
-  if (r.bound_bytes_per_cycle > 0)
-    j["bound"] = {{"name", r.bound_name},
-                  {"clock", r.bound_clock},
-                  {"bytes_per_cycle", r.bound_bytes_per_cycle}};
-  return j;
 }
 
 }  // namespace pxflow

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "backend.hpp"
+#include "result_fields.hpp"
 #include "result_json.hpp"
 
 namespace pxflow {
@@ -70,6 +71,8 @@ void set_sweep_threads(std::vector<BenchPoint>& points, int threads);
 // rows per point, the bound's ratio and the speed-up over ref-original as columns).
 BenchReport run_bench(const BenchOptions& o, std::ostream& out);
 
+// A row's fields as the bench's JSON and CSV carry them (bench_json.cpp): the only list of them.
+std::span<const ResultField<BenchRow>> bench_row_fields();
 Json bench_json(const BenchReport& r);
 
 }  // namespace pxflow

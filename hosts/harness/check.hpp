@@ -9,6 +9,7 @@
 #include "backend.hpp"
 #include "check_campaign.hpp"
 #include "check_corpus.hpp"
+#include "result_fields.hpp"
 #include "result_json.hpp"
 
 namespace pxflow {
@@ -95,6 +96,10 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out);
 
 // The results file (docs/harness.md, "The check file"), and back; check_from_json throws
 // InputError naming the missing or mistyped key.
+// The fields of both as the file and conformance.csv carry them (check_json.cpp): the only
+// list of them.
+std::span<const ResultField<CheckReport>> check_report_fields();
+std::span<const ResultField<BackendOutcome>> backend_outcome_fields();
 Json check_json(const CheckReport& r);
 CheckReport check_from_json(const Json& j);
 

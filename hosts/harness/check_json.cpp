@@ -1,5 +1,6 @@
 // The check results file (docs/harness.md, "The check file"): what `pxflow check --json`
 // writes, `pxflow merge` reads and writes, and `pxflow report --check-json` shows.
+#include <array>
 #include <string>
 
 #include "check.hpp"
@@ -10,30 +11,22 @@ namespace {
 
 Json range_json(const CaseRange& r) { return {{"first_case", r.first}, {"end_case", r.end}}; }
 
-Json backend_json(const BackendOutcome& b) {
-  return {{"backend", b.name},     {"state", state_name(b.state)},
-          {"reason", b.reason},    {"implementation", b.implementation},
-          {"device", b.device},    {"passed", b.passed},
-          {"failed", b.failed},    {"not_applicable", b.not_applicable},
-          {"pairs", b.pairs},      {"seconds", b.seconds},
-          {"failures", b.failures}};
-}
-
-BackendOutcome backend_from_json(const Json& j) {
-  BackendOutcome b;
-  b.name = j.at("backend").get<std::string>();
-  b.state = state_from_name(j.at("state").get<std::string>());
-  b.reason = j.at("reason").get<std::string>();
-  b.implementation = j.at("implementation").get<std::string>();
-  b.device = j.at("device").get<std::string>();
-  b.passed = j.at("passed").get<long>();
-  b.failed = j.at("failed").get<long>();
-  b.not_applicable = j.at("not_applicable").get<long>();
-  b.pairs = j.at("pairs").get<long>();
-  b.seconds = j.at("seconds").get<double>();
-  b.failures = j.at("failures").get<std::vector<std::string>>();
-  return b;
-}
+// In the CSV's column order (conformance.csv); the JSON objects have the same order.
+const std::array kBackendOutcomeFields{
+    member_field<&BackendOutcome::name>("backend"),
+    ResultField<BackendOutcome>{
+        "state", [](const BackendOutcome& b) -> Json { return state_name(b.state); },
+        [](BackendOutcome& b, const Json& j) { b.state = state_from_name(j.get<std::string>()); }},
+    member_field<&BackendOutcome::passed>("passed"),
+    member_field<&BackendOutcome::failed>("failed"),
+    member_field<&BackendOutcome::not_applicable>("not_applicable"),
+    member_field<&BackendOutcome::pairs>("pairs"),
+    member_field<&BackendOutcome::seconds>("seconds"),
+    member_field<&BackendOutcome::reason>("reason"),
+    member_field<&BackendOutcome::implementation>("implementation"),
+    member_field<&BackendOutcome::device>("device"),
+    member_field<&BackendOutcome::failures>("failures", false),  // lines: results.json only
+};
 
 Json campaign_json(const CampaignInfo& c) {
   return {{"kind", c.kind},
@@ -69,71 +62,103 @@ Json shard_json(const Shard& s, const CaseRange& r) {
   return j;
 }
 
+Json merged_from_json(const CheckReport& r) {
+  if (r.merged_from.empty()) return {};
+  Json all = Json::array();
+  for (const MergedShard& m : r.merged_from) {
+    Json s{{"file", m.file}};
+    s.update(shard_json(m.shard, m.range));
+    s["pairs"] = m.pairs;
+    s["seconds"] = m.seconds;
+    all.push_back(s);
+  }
+  return all;
+}
+
+void merged_from_from_json(CheckReport& r, const Json& all) {
+  for (const Json& m : all)
+    r.merged_from.push_back({m.at("file").get<std::string>(),
+                             {m.at("index").get<int>(), m.at("count").get<int>()},
+                             {m.at("first_case").get<long>(), m.at("end_case").get<long>()},
+                             m.at("pairs").get<long>(),
+                             m.at("seconds").get<double>()});
+}
+
+Json backends_json(const CheckReport& r) {
+  Json all = Json::array();
+  for (const BackendOutcome& b : r.backends)
+    all.push_back(fields_json(backend_outcome_fields(), b));
+  return all;
+}
+
+void backends_from_json(CheckReport& r, const Json& all) {
+  for (const Json& j : all)
+    fields_from_json(backend_outcome_fields(), j, r.backends.emplace_back());
+}
+
+// A single run's file has `shard`; a merge's has `merged_from` and `missing_shards` instead
+// (check_from_json requires one set). The check itself has no CSV file: its csv flags are unused.
+const std::array kCheckReportFields{
+    ResultField<CheckReport>{"verdict", [](const CheckReport& r) -> Json { return r.verdict(); }},
+    member_field<&CheckReport::seed>("seed"),
+    member_field<&CheckReport::cases>("cases"),
+    member_field<&CheckReport::pairs>("pairs"),
+    member_field<&CheckReport::passed>("passed"),
+    member_field<&CheckReport::failed>("failed"),
+    member_field<&CheckReport::skipped>("skipped"),
+    member_field<&CheckReport::not_applicable>("not_applicable"),
+    member_field<&CheckReport::compared>("compared"),
+    member_field<&CheckReport::seconds>("seconds"),
+    member_field<&CheckReport::command>("command"),
+    ResultField<CheckReport>{"pxflow",
+                             [](const CheckReport& r) -> Json {
+                               return {{"version", r.pxflow_version}, {"commit", r.pxflow_commit}};
+                             },
+                             [](CheckReport& r, const Json& j) {
+                               j.at("version").get_to(r.pxflow_version);
+                               j.at("commit").get_to(r.pxflow_commit);
+                             }},
+    ResultField<CheckReport>{
+        "campaign", [](const CheckReport& r) { return campaign_json(r.campaign); },
+        [](CheckReport& r, const Json& j) { r.campaign = campaign_from_json(j); }},
+    ResultField<CheckReport>{
+        "shard",
+        [](const CheckReport& r) -> Json {
+          return r.merged_from.empty() ? shard_json(r.shard, r.range) : Json();
+        },
+        [](CheckReport& r, const Json& s) {
+          r.shard = {s.at("index").get<int>(), s.at("count").get<int>()};
+          r.range = {s.at("first_case").get<long>(), s.at("end_case").get<long>()};
+        },
+        false, true},
+    ResultField<CheckReport>{"merged_from", &merged_from_json, &merged_from_from_json, false, true},
+    ResultField<CheckReport>{"missing_shards",
+                             [](const CheckReport& r) -> Json {
+                               return r.merged_from.empty() ? Json() : Json(r.missing_shards);
+                             },
+                             [](CheckReport& r, const Json& j) { j.get_to(r.missing_shards); },
+                             false, true},
+    ResultField<CheckReport>{"backends", &backends_json, &backends_from_json, false},
+};
+
 }  // namespace
 
-Json check_json(const CheckReport& r) {
-  Json j;
-  j["verdict"] = r.verdict();
-  j["seed"] = r.seed;
-  j["cases"] = r.cases;
-  j["pairs"] = r.pairs;
-  j["passed"] = r.passed;
-  j["failed"] = r.failed;
-  j["skipped"] = r.skipped;
-  j["not_applicable"] = r.not_applicable;
-  j["compared"] = r.compared;
-  j["seconds"] = r.seconds;
-  j["command"] = r.command;
-  j["pxflow"] = {{"version", r.pxflow_version}, {"commit", r.pxflow_commit}};
-  j["campaign"] = campaign_json(r.campaign);
-  if (r.merged_from.empty()) {
-    j["shard"] = shard_json(r.shard, r.range);
-  } else {
-    j["merged_from"] = Json::array();
-    for (const MergedShard& m : r.merged_from) {
-      Json s{{"file", m.file}};
-      s.update(shard_json(m.shard, m.range));
-      s["pairs"] = m.pairs;
-      s["seconds"] = m.seconds;
-      j["merged_from"].push_back(s);
-    }
-    j["missing_shards"] = r.missing_shards;
-  }
-  j["backends"] = Json::array();
-  for (const auto& b : r.backends) j["backends"].push_back(backend_json(b));
-  return j;
+std::span<const ResultField<BackendOutcome>> backend_outcome_fields() {
+  return kBackendOutcomeFields;
 }
+std::span<const ResultField<CheckReport>> check_report_fields() { return kCheckReportFields; }
+
+Json check_json(const CheckReport& r) { return fields_json(check_report_fields(), r); }
 
 CheckReport check_from_json(const Json& j) {
   CheckReport r;
   try {
-    r.seed = j.at("seed").get<std::uint64_t>();
-    r.cases = j.at("cases").get<long>();
-    r.pairs = j.at("pairs").get<long>();
-    r.passed = j.at("passed").get<long>();
-    r.failed = j.at("failed").get<long>();
-    r.skipped = j.at("skipped").get<long>();
-    r.not_applicable = j.at("not_applicable").get<long>();
-    r.compared = j.at("compared").get<long>();
-    r.seconds = j.at("seconds").get<double>();
-    r.command = j.at("command").get<std::string>();
-    r.pxflow_version = j.at("pxflow").at("version").get<std::string>();
-    r.pxflow_commit = j.at("pxflow").at("commit").get<std::string>();
-    r.campaign = campaign_from_json(j.at("campaign"));
-    if (j.contains("merged_from")) {
-      for (const Json& m : j.at("merged_from"))
-        r.merged_from.push_back({m.at("file").get<std::string>(),
-                                 {m.at("index").get<int>(), m.at("count").get<int>()},
-                                 {m.at("first_case").get<long>(), m.at("end_case").get<long>()},
-                                 m.at("pairs").get<long>(),
-                                 m.at("seconds").get<double>()});
-      r.missing_shards = j.at("missing_shards").get<std::vector<int>>();
-    } else {
-      const Json& s = j.at("shard");
-      r.shard = {s.at("index").get<int>(), s.at("count").get<int>()};
-      r.range = {s.at("first_case").get<long>(), s.at("end_case").get<long>()};
-    }
-    for (const Json& b : j.at("backends")) r.backends.push_back(backend_from_json(b));
+    fields_from_json(check_report_fields(), j, r);
+    // The optional keys come in one of two sets: a single run's, or a merge's.
+    if (!j.contains("merged_from"))
+      (void)j.at("shard");
+    else
+      (void)j.at("missing_shards");
   } catch (const std::exception& e) {
     // nlohmann's messages name the key ("key 'campaign' not found") or the type it expected,
     // after a "[json.exception...] " tag the user has no use for.

@@ -9,6 +9,7 @@
 #include "json_document.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
+#include "report_csv.hpp"
 #include "report_sections.hpp"
 #include "svg_chart.hpp"
 
@@ -145,82 +146,6 @@ std::string render_html(const std::vector<Section>& secs, const std::filesystem:
   return o.str();
 }
 
-std::string csv_cell(const Json& v) {
-  if (v.is_null()) return "";
-  if (!v.is_string()) return v.dump();
-  std::string s = "\"";
-  for (char c : v.get<std::string>()) s += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return s + "\"";
-}
-
-// One line per object of `rows`, the columns `cols` (missing keys empty).
-std::string csv(const std::vector<std::string>& cols, const std::vector<const Json*>& rows) {
-  std::ostringstream o;
-  for (std::size_t i = 0; i < cols.size(); ++i) o << (i ? "," : "") << cols[i];
-  o << "\n";
-  for (const Json* r : rows) {
-    for (std::size_t i = 0; i < cols.size(); ++i)
-      o << (i ? "," : "") << (r->contains(cols[i]) ? csv_cell((*r)[cols[i]]) : "");
-    o << "\n";
-  }
-  return o.str();
-}
-
-std::vector<const Json*> sorted_by_rank(const Json& rows, const char* name_key) {
-  std::vector<const Json*> out;
-  if (rows.is_array())
-    for (const auto& r : rows) out.push_back(&r);
-  std::stable_sort(out.begin(), out.end(), [&](const Json* a, const Json* b) {
-    return registry_rank(a->value(name_key, "")) < registry_rank(b->value(name_key, ""));
-  });
-  return out;
-}
-
-std::string bench_csv(const Json& bench) {
-  // Point by point as the bench ran them, backends in registry order within a point.
-  std::vector<const Json*> rows;
-  if (!bench.is_null()) {
-    const Json& all = bench["rows"];
-    for (std::size_t i = 0; i < all.size();) {
-      std::size_t j = i;
-      while (j < all.size() && all[j]["sweep"] == all[i]["sweep"] &&
-             all[j]["batch"] == all[i]["batch"] && all[j]["width"] == all[i]["width"] &&
-             all[j]["height"] == all[i]["height"] &&
-             all[j]["search_radius"] == all[i]["search_radius"] &&
-             all[j]["threads"] == all[i]["threads"])
-        ++j;
-      std::vector<const Json*> group;
-      for (std::size_t k = i; k < j; ++k) group.push_back(&all[k]);
-      std::stable_sort(group.begin(), group.end(), [](const Json* a, const Json* b) {
-        return registry_rank(a->value("backend", "")) < registry_rank(b->value("backend", ""));
-      });
-      rows.insert(rows.end(), group.begin(), group.end());
-      i = j;
-    }
-  }
-  return csv({"backend",
-              "sweep",
-              "profile",
-              "width",
-              "height",
-              "search_radius",
-              "batch",
-              "threads",
-              "source",
-              "exact_clock",
-              "repeats",
-              "median_ns_per_frame",
-              "min_ns_per_frame",
-              "max_ns_per_frame",
-              "frames_per_s",
-              "ns_per_poi",
-              "cycles_per_frame",
-              "bound_ratio",
-              "speedup_vs_ref_original",
-              "note"},
-             rows);
-}
-
 Json section_json(const Section& s) {
   Json charts = Json::array();
   for (const auto& c : s.charts) charts.push_back(report::chart_json(c));
@@ -340,16 +265,8 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
   out.files["report.html"]->write(render_html(secs, dir));
   out.files["results.json"]->write(json_document(results));
   out.files["results.csv"]->write(bench_csv(in.bench));
-  out.files["conformance.csv"]->write(
-      csv({"backend", "state", "passed", "failed", "not_applicable", "pairs", "seconds", "reason"},
-          in.check.is_null() ? std::vector<const Json*>{}
-                             : sorted_by_rank(in.check["backends"], "backend")));
-  std::vector<const Json*> accuracy_rows;
-  for (const auto& r : in.accuracy_rows) accuracy_rows.push_back(&r);
-  out.files["accuracy.csv"]->write(
-      csv({"set", "setting", "against", "method", "frames", "with_flow", "mean_error_px",
-           "p95_error_px", "median_us_per_frame"},
-          accuracy_rows));
+  out.files["conformance.csv"]->write(conformance_csv(in.check));
+  out.files["accuracy.csv"]->write(accuracy_csv(in.accuracy_rows));
   std::vector<std::string> written = report_file_names();
   for (const auto& p : in.pictures) written.push_back(p.file);
   std::string manifest;

@@ -7,45 +7,10 @@
 
 #include "check.hpp"
 #include "counted.hpp"
+#include "report_rows.hpp"
 
 namespace pxflow::report {
 namespace {
-
-std::string num(double v, const char* f = "%.1f") {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
-std::string str(const Json& j, const char* key) {
-  return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string();
-}
-
-bool timed(const Json& r) { return r.value("median_ns_per_frame", 0.0) > 0; }
-bool host_clock(const Json& r) { return str(r, "source").rfind("host", 0) == 0; }
-// A deterministic device clock (the GAP8 model's cycles): one checked run is the measurement.
-bool exact_clock(const Json& r) { return r.value("exact_clock", false); }
-// An exact clock that counts instructions, not cycles (QEMU -icount: the m4-qemu row). Its
-// frames/s assume one instruction per tick of QEMU's virtual clock, a speed no core has: it is
-// tabled, labelled as such, and never charted beside the cycle models.
-// Such a backend shows its instructions per frame, never a time or a rate: its untimed rows (n/a,
-// not run) belong to the same one line.
-bool counts_instructions(const Json& r) { return r.contains("instructions_per_frame"); }
-bool counts_instructions(const Json& bench, const std::string& backend) {
-  return std::any_of(bench["rows"].begin(), bench["rows"].end(), [&](const Json& r) {
-    return str(r, "backend") == backend && counts_instructions(r);
-  });
-}
-std::string instructions_cell(const Json& r) {
-  return num(r["instructions_per_frame"].get<double>(), "%.0f") + " instr";
-}
-const char* const kInstructionNote =
-    " Rows labelled by an instruction count (QEMU -icount) show instructions per frame, tabled, "
-    "not charted: they are no time (QEMU's virtual clock ticks per instruction, a speed no core "
-    "has).";
-std::string threads_text(int n) { return counted(n, "thread"); }
-
-ChartStyle style_of(const std::string& backend) { return backend_style(registry_rank(backend)); }
 
 // The rows of `rows` sorted by registry order, stable within a backend (the bench's order).
 std::vector<const Json*> in_registry_order(const Json& rows) {
@@ -88,66 +53,6 @@ std::vector<std::string> bench_cells(const Json& r) {
           r.contains("bound_ratio") ? num(r["bound_ratio"], "%.2fx") : "-",
           r.contains("speedup_vs_ref_original") ? num(r["speedup_vs_ref_original"], "%.2fx") : "-",
           str(r, "note")};
-}
-
-// What a sweep varies, how its x is named, and the figure it plots.
-struct SweepInfo {
-  const char* name;
-  const char* title;
-  const char* x_label;
-  bool x_log;
-  bool per_poi;  // ns per POI (frame size) instead of frames per second
-};
-constexpr SweepInfo kSweeps[] = {
-    {"batch", "Scaling with batch size", "batch size (frame pairs per run)", true, false},
-    {"size", "Scaling with frame size", "frame size (pixels)", true, true},
-    {"radius", "Scaling with search radius", "search radius S (pixels)", false, false},
-    {"threads", "Scaling with threads", "host threads (the model clock does not depend on them)",
-     false, false},
-};
-
-double sweep_x(const SweepInfo& s, const Json& r) {
-  const std::string n = s.name;
-  if (n == "batch") return r["batch"].get<double>();
-  if (n == "size") return r["width"].get<double>() * r["height"].get<double>();
-  if (n == "radius") return r["search_radius"].get<double>();
-  return r["threads"].get<double>();
-}
-
-std::string sweep_column(const SweepInfo& s, const Json& r) {
-  const std::string n = s.name;
-  if (n == "batch") return "batch " + std::to_string(r["batch"].get<int>());
-  if (n == "size")
-    return std::to_string(r["width"].get<int>()) + "x" + std::to_string(r["height"].get<int>());
-  if (n == "radius") return "S=" + std::to_string(r["search_radius"].get<int>());
-  return threads_text(r["threads"].get<int>());
-}
-
-// A row of the batch sweep that is the sweep's point at its default value (e.g. batch 256 at
-// all cores, 64x64, S=4 for the radius sweep): the same problem but the swept parameter.
-// For an exact-clock backend (`any_batch`), whose large batches are not simulated, any batch.
-bool anchors(const SweepInfo& s, const Json& first, const Json& r, bool any_batch) {
-  const std::string n = s.name;
-  if (n == "batch" || r["sweep"] != "batch" || (!any_batch && r["batch"] != first["batch"]))
-    return false;
-  const bool size = r["width"] == first["width"] && r["height"] == first["height"];
-  const bool radius = r["search_radius"] == first["search_radius"];
-  const bool threads = r["threads"] == first["threads"];
-  if (n == "size") return radius && threads;
-  if (n == "radius") return size && threads;
-  return size && radius;  // threads
-}
-
-// The point a sweep holds fixed, without the swept value.
-std::string fixed_part(const SweepInfo& s, const Json& r) {
-  const std::string n = s.name;
-  std::string out = str(r, "profile");
-  if (n != "size")
-    out += ", " + std::to_string(r.value("width", 0)) + "x" + std::to_string(r.value("height", 0));
-  if (n != "radius") out += ", S=" + std::to_string(r.value("search_radius", 0));
-  if (n != "batch") out += ", batch " + std::to_string(r.value("batch", 0));
-  if (n != "threads") out += ", " + threads_text(r.value("threads", 0));
-  return out;
 }
 
 }  // namespace
@@ -318,111 +223,6 @@ Section throughput(const Json& bench, const std::string& cmd) {
     s.text += kInstructionNote;
   if (!host.bars.empty()) s.charts.push_back(host);
   if (!sim.bars.empty()) s.charts.push_back(sim);
-  return s;
-}
-
-Section scaling(const Json& bench, const std::string& sweep) {
-  const SweepInfo* info = nullptr;
-  for (const SweepInfo& si : kSweeps)
-    if (sweep == si.name) info = &si;
-  Section s{"scaling-" + sweep, info ? info->title : sweep, "", {"backend"}, {}, {}, {}};
-  if (!info) return s;
-  std::vector<const Json*> rows;
-  for (const auto& r : bench["rows"])
-    if (r["sweep"] == sweep) rows.push_back(&r);
-  if (rows.empty()) {
-    s.text = "Not part of this bench run: its command (see Provenance) left this sweep out.";
-    return s;
-  }
-  const Json first = *rows.front();
-  std::set<std::string> model_backends;  // their rows that are not timed are theirs too
-  for (const auto& r : bench["rows"])
-    if (exact_clock(r)) model_backends.insert(str(r, "backend"));
-  // The sweep's point at its default value, from the batch sweep; for an exact-clock backend
-  // the largest batch it simulated there (its cycles per frame do not depend on the batch).
-  std::map<std::string, const Json*> model_anchor;
-  for (const auto& r : bench["rows"]) {
-    const bool model = model_backends.count(str(r, "backend")) > 0;
-    if (!model && anchors(*info, first, r, false)) rows.push_back(&r);
-    if (model && timed(r) && anchors(*info, first, r, true)) {
-      const Json*& best = model_anchor[str(r, "backend")];
-      if (!best || r["batch"].get<int>() > (*best)["batch"].get<int>()) best = &r;
-    }
-  }
-  for (const auto& [_, r] : model_anchor) rows.push_back(r);
-  // One table row per backend and clock kind (device-clock rows time the kernel only: left to
-  // the CSV); one column per x.
-  std::map<double, std::string> columns;
-  struct Line {
-    std::string label;
-    bool model = false;
-    bool charted = true;
-    std::map<double, std::string> cells;
-    std::set<std::string> notes;
-    Series series;
-  };
-  std::map<std::pair<std::size_t, std::string>, Line> lines;
-  for (const Json* r : rows) {
-    const bool model = model_backends.count(str(*r, "backend")) > 0;
-    if (timed(*r) && !model && !host_clock(*r)) continue;
-    const std::string backend = str(*r, "backend");
-    const double x = sweep_x(*info, *r);
-    columns[x] = sweep_column(*info, *r);
-    const bool instructions = counts_instructions(bench, backend);
-    const std::string label = backend + (instructions ? " (instruction count)"
-                                         : model      ? " (model clock)"
-                                                      : "");
-    Line& l = lines[{registry_rank(backend), label}];
-    l.label = label;
-    l.model = model;
-    l.charted = !instructions;
-    l.series.name = backend;
-    l.series.style = style_of(backend);
-    if (!timed(*r)) {
-      const std::string note = str(*r, "note");
-      l.cells[x] = note.substr(0, note.find(':'));
-      l.notes.insert(note);
-      continue;
-    }
-    if (instructions) {
-      l.cells[x] = instructions_cell(*r);
-      continue;
-    }
-    const double y =
-        info->per_poi ? (*r)["ns_per_poi"].get<double>() : (*r)["frames_per_s"].get<double>();
-    l.cells[x] = num(y);
-    l.series.points.push_back({x, y});
-  }
-  for (const auto& [_, name] : columns) s.header.push_back(name);
-  s.header.push_back("note");
-  const std::string y_label = info->per_poi ? "ns per POI (log scale)" : "frames/s (log scale)";
-  Chart host, model;
-  host.title = std::string(info->title) + ", host clock";
-  model.title = std::string(info->title) + ", exact model clock (not the host)";
-  for (Chart* c : {&host, &model}) {
-    c->x = {info->x_label, info->x_log, !info->x_log};  // S and threads are whole numbers
-    c->y = {y_label, true};
-  }
-  for (const auto& [_, l] : lines) {
-    std::vector<std::string> row{l.label};
-    for (const auto& [x, __] : columns) row.push_back(l.cells.count(x) ? l.cells.at(x) : "-");
-    std::string notes;
-    for (const auto& n : l.notes) notes += (notes.empty() ? "" : "; ") + n;
-    row.push_back(notes);
-    s.rows.push_back(row);
-    if (l.charted && !l.series.points.empty()) (l.model ? model : host).series.push_back(l.series);
-  }
-  s.text = std::string(info->per_poi ? "Nanoseconds per POI" : "Frames per second") + " by " +
-           info->x_label + ", at " + fixed_part(*info, first) +
-           "; the same inputs for every backend. Exact-clock rows (a deterministic cycle model) "
-           "are charted "
-           "apart, by the model's clock, from the pairs their note names. Cells that are not "
-           "numbers say why (n/a: outside the backend's limits; not run: the note says how to run "
-           "it).";
-  if (std::any_of(lines.begin(), lines.end(), [](const auto& kv) { return !kv.second.charted; }))
-    s.text += kInstructionNote;
-  if (!host.series.empty()) s.charts.push_back(host);
-  if (!model.series.empty()) s.charts.push_back(model);
   return s;
 }
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Makes a real report and validates its results.json against docs/report-schema.json, then
-checks that the schema refuses copies with a field removed or of the wrong type, so that the
-validation is shown to be able to fail. Usage: check_report_schema.py PXFLOW SCHEMA OUTDIR.
+checks that the schema refuses copies with a field removed, of the wrong type or not listed, so
+that the validation is shown to be able to fail, and that results.csv and conformance.csv have a
+column per field the schema lists for a bench row and a check backend. Usage: check_report_schema.py PXFLOW SCHEMA OUTDIR.
 Exit 0: all as expected; 1: a failure (listed); 77: python3-jsonschema is not installed."""
 import copy
 import json
@@ -58,10 +59,31 @@ MUTATIONS = [
     ("schema_version 2", lambda j: j.__setitem__("schema_version", 2)),
     ("pxflow.commit removed", lambda j: j["pxflow"].pop("commit")),
     ("check.backends[0].backend removed", lambda j: j["check"]["backends"][0].pop("backend")),
+    ("bench.rows[0] with a key the schema does not list",
+     lambda j: j["bench"]["rows"][0].__setitem__("furlongs_per_frame", 1.0)),
+    ("check.backends[0] with a key the schema does not list",
+     lambda j: j["check"]["backends"][0].__setitem__("colour", "green")),
     ("gap8 cycles a fraction",
      lambda j: next(iter(next(iter(j["gap8"]["variants"].values())).values())).__setitem__(
          "cycles", 0.5)),
 ]
+
+
+def csv_header_failures(schema, report):
+    """results.csv and conformance.csv have a column per field of the schema's bench row and
+    check backend (the check's failure lines aside: results.json only)."""
+    definitions = schema["definitions"]
+    backend = definitions["check"]["properties"]["backends"]["items"]
+    expected = {"results.csv": set(definitions["bench_row"]["properties"]),
+                "conformance.csv": set(backend["properties"]) - {"failures"}}
+    failures = []
+    for name, want in expected.items():
+        with open(os.path.join(report, name)) as f:
+            header = f.readline().strip().split(",")
+        if set(header) != want:
+            failures.append("%s: columns %s, the schema's fields %s" % (name, sorted(header),
+                                                                        sorted(want)))
+    return failures
 
 
 def main():
@@ -84,6 +106,7 @@ def main():
     errors = sorted(validator.iter_errors(results), key=lambda e: list(e.path))
     for e in errors:
         failures.append("produced results.json: %s: %s" % (list(e.path), e.message))
+    failures += csv_header_failures(schema, r)
     # The parts a test of the schema must see: otherwise a null would pass for them.
     for key in ("check", "bench", "accuracy", "gap8"):
         if results.get(key) is None:

@@ -1,0 +1,61 @@
+// The bench's results file (docs/report-schema.md, "bench"): its one table of a row's fields.
+#include <array>
+
+#include "bench.hpp"
+
+namespace pxflow {
+namespace {
+
+// A figure a row may lack (0: not measured, or not this clock's): left out of the JSON, an
+// empty cell of the CSV.
+template <auto M>
+Json when_positive(const BenchRow& r) {
+  return r.*M > 0 ? Json(r.*M) : Json();
+}
+template <auto M>
+constexpr ResultField<BenchRow> positive_field(const char* key) {
+  return {key, &when_positive<M>, &member_set<M>, true, true};
+}
+
+// In the CSV's column order (results.csv); the JSON objects have the same order.
+constexpr std::array kBenchRowFields{
+    member_field<&BenchRow::backend>("backend"),
+    member_field<&BenchRow::sweep>("sweep"),
+    member_field<&BenchRow::setting>("profile"),
+    member_field<&BenchRow::width>("width"),
+    member_field<&BenchRow::height>("height"),
+    member_field<&BenchRow::search_radius>("search_radius"),
+    member_field<&BenchRow::batch>("batch"),
+    member_field<&BenchRow::threads>("threads"),
+    member_field<&BenchRow::source>("source"),
+    member_field<&BenchRow::exact_clock>("exact_clock"),
+    member_field<&BenchRow::repeats>("repeats"),
+    member_field<&BenchRow::pois_per_frame>("pois_per_frame"),
+    member_field<&BenchRow::median_ns_per_frame>("median_ns_per_frame"),
+    member_field<&BenchRow::min_ns_per_frame>("min_ns_per_frame"),
+    member_field<&BenchRow::max_ns_per_frame>("max_ns_per_frame"),
+    member_field<&BenchRow::frames_per_s>("frames_per_s"),
+    member_field<&BenchRow::ns_per_poi>("ns_per_poi"),
+    positive_field<&BenchRow::cycles_per_frame>("cycles_per_frame"),
+    positive_field<&BenchRow::instructions_per_frame>("instructions_per_frame"),
+    positive_field<&BenchRow::bound_ratio>("bound_ratio"),
+    positive_field<&BenchRow::speedup_vs_reference>("speedup_vs_ref_original"),
+    member_field<&BenchRow::note>("note"),
+};
+
+}  // namespace
+
+std::span<const ResultField<BenchRow>> bench_row_fields() { return kBenchRowFields; }
+
+Json bench_json(const BenchReport& r) {
+  Json rows = Json::array();
+  for (const BenchRow& b : r.rows) rows.push_back(fields_json(bench_row_fields(), b));
+  Json j{{"command", r.command}, {"backends", r.backends}, {"rows", rows}, {"skipped", r.skipped}};
+  if (r.bound_bytes_per_cycle > 0)
+    j["bound"] = {{"name", r.bound_name},
+                  {"clock", r.bound_clock},
+                  {"bytes_per_cycle", r.bound_bytes_per_cycle}};
+  return j;
+}
+
+}  // namespace pxflow

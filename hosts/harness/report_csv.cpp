@@ -1,0 +1,86 @@
+#include "report_csv.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "bench.hpp"
+#include "check.hpp"
+#include "report.hpp"
+
+namespace pxflow {
+namespace {
+
+std::string csv_cell(const Json& v) {
+  if (v.is_null()) return "";
+  if (!v.is_string()) return v.dump();
+  std::string s = "\"";
+  for (char c : v.get<std::string>()) s += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return s + "\"";
+}
+
+// One line per object of `rows`, the columns `cols` (missing keys empty).
+std::string csv(const std::vector<std::string>& cols, const std::vector<const Json*>& rows) {
+  std::ostringstream o;
+  for (std::size_t i = 0; i < cols.size(); ++i) o << (i ? "," : "") << cols[i];
+  o << "\n";
+  for (const Json* r : rows) {
+    for (std::size_t i = 0; i < cols.size(); ++i)
+      o << (i ? "," : "") << (r->contains(cols[i]) ? csv_cell((*r)[cols[i]]) : "");
+    o << "\n";
+  }
+  return o.str();
+}
+
+std::vector<const Json*> sorted_by_rank(const Json& rows, const char* name_key) {
+  std::vector<const Json*> out;
+  if (rows.is_array())
+    for (const auto& r : rows) out.push_back(&r);
+  std::stable_sort(out.begin(), out.end(), [&](const Json* a, const Json* b) {
+    return registry_rank(a->value(name_key, "")) < registry_rank(b->value(name_key, ""));
+  });
+  return out;
+}
+
+bool same_bench_point(const Json& a, const Json& b) {
+  return a["sweep"] == b["sweep"] && a["batch"] == b["batch"] && a["width"] == b["width"] &&
+         a["height"] == b["height"] && a["search_radius"] == b["search_radius"] &&
+         a["threads"] == b["threads"];
+}
+
+}  // namespace
+
+std::string bench_csv(const Json& bench) {
+  // Point by point as the bench ran them, backends in registry order within a point.
+  std::vector<const Json*> rows;
+  if (!bench.is_null()) {
+    const Json& all = bench["rows"];
+    for (std::size_t i = 0; i < all.size();) {
+      std::size_t j = i;
+      while (j < all.size() && same_bench_point(all[j], all[i])) ++j;
+      std::vector<const Json*> group;
+      for (std::size_t k = i; k < j; ++k) group.push_back(&all[k]);
+      std::stable_sort(group.begin(), group.end(), [](const Json* a, const Json* b) {
+        return registry_rank(a->value("backend", "")) < registry_rank(b->value("backend", ""));
+      });
+      rows.insert(rows.end(), group.begin(), group.end());
+      i = j;
+    }
+  }
+  return csv(csv_columns(bench_row_fields()), rows);
+}
+
+std::string conformance_csv(const Json& check) {
+  return csv(
+      csv_columns(backend_outcome_fields()),
+      check.is_null() ? std::vector<const Json*>{} : sorted_by_rank(check["backends"], "backend"));
+}
+
+std::string accuracy_csv(const Json& accuracy_rows) {
+  std::vector<const Json*> rows;
+  for (const auto& r : accuracy_rows) rows.push_back(&r);
+  return csv({"set", "setting", "against", "method", "frames", "with_flow", "mean_error_px",
+              "p95_error_px", "median_us_per_frame"},
+             rows);
+}
+
+}  // namespace pxflow

@@ -1,0 +1,43 @@
+#include "report_rows.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "counted.hpp"
+#include "report.hpp"
+
+namespace pxflow::report {
+
+std::string num(double v, const char* format) {
+  char b[64];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
+std::string str(const Json& j, const char* key) {
+  return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string();
+}
+
+bool timed(const Json& r) { return r.value("median_ns_per_frame", 0.0) > 0; }
+bool host_clock(const Json& r) { return str(r, "source").rfind("host", 0) == 0; }
+bool exact_clock(const Json& r) { return r.value("exact_clock", false); }
+
+bool counts_instructions(const Json& r) { return r.contains("instructions_per_frame"); }
+bool counts_instructions(const Json& bench, const std::string& backend) {
+  return std::any_of(bench["rows"].begin(), bench["rows"].end(), [&](const Json& r) {
+    return str(r, "backend") == backend && counts_instructions(r);
+  });
+}
+std::string instructions_cell(const Json& r) {
+  return num(r["instructions_per_frame"].get<double>(), "%.0f") + " instr";
+}
+const char* const kInstructionNote =
+    " Rows labelled by an instruction count (QEMU -icount) show instructions per frame, tabled, "
+    "not charted: they are no time (QEMU's virtual clock ticks per instruction, a speed no core "
+    "has).";
+
+std::string threads_text(int n) { return counted(n, "thread"); }
+
+ChartStyle style_of(const std::string& backend) { return backend_style(registry_rank(backend)); }
+
+}  // namespace pxflow::report

@@ -1,0 +1,34 @@
+// How the report's sections read a bench row of results.json (bench_row_fields()): its clock,
+// whether it was timed, and the cells every table writes the same way.
+#pragma once
+#include <string>
+
+#include "result_json.hpp"
+#include "svg_chart.hpp"
+
+namespace pxflow::report {
+
+std::string num(double v, const char* format = "%.1f");
+// The string at `key`, or "" when there is none.
+std::string str(const Json& j, const char* key);
+
+bool timed(const Json& row);
+bool host_clock(const Json& row);
+// A deterministic device clock (the GAP8 model's cycles): one checked run is the measurement.
+bool exact_clock(const Json& row);
+// An exact clock that counts instructions, not cycles (QEMU -icount: the m4-qemu row). Its
+// frames/s assume one instruction per tick of QEMU's virtual clock, a speed no core has: it is
+// tabled, labelled as such, and never charted beside the cycle models.
+// Such a backend shows its instructions per frame, never a time or a rate: its untimed rows (n/a,
+// not run) belong to the same one line.
+bool counts_instructions(const Json& row);
+bool counts_instructions(const Json& bench, const std::string& backend);
+std::string instructions_cell(const Json& row);
+// Said under a table with rows labelled by an instruction count.
+extern const char* const kInstructionNote;
+
+std::string threads_text(int n);  // "1 thread", "4 threads"
+// A backend's style in every chart: its registry position's.
+ChartStyle style_of(const std::string& backend);
+
+}  // namespace pxflow::report
