@@ -14,6 +14,21 @@ else()
                  "not built, their tests report SKIPPED (install gcc-riscv64-unknown-elf)")
 endif()
 
+# xpulp.h takes every instruction's fields from xpulp_fields.h, generated from the model's
+# table (../isa/xpulp.tbl). A target, not a custom command, so that programs of any directory
+# can wait for it; the generator leaves an unchanged header's time alone.
+if(PXFLOW_GAP8_HAVE_CC)
+  find_package(Python3 REQUIRED COMPONENTS Interpreter GLOBAL)
+  set(PXFLOW_GAP8_FIELDS_DIR ${CMAKE_BINARY_DIR}/gap8_runtime_generated CACHE INTERNAL "")
+  add_custom_target(pxflow_gap8_xpulp_fields
+    COMMAND Python3::Interpreter ${CMAKE_CURRENT_LIST_DIR}/../isa/gen_xpulp.py
+            ${CMAKE_CURRENT_LIST_DIR}/../isa/xpulp.tbl
+            --runtime-header ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_fields.h
+    BYPRODUCTS ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_fields.h
+    COMMENT "xpulp_fields.h from gap8_model/isa/xpulp.tbl"
+    VERBATIM)
+endif()
+
 function(pxflow_gap8_program name)
   cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES" ${ARGN})
   if(NOT PXFLOW_GAP8_HAVE_CC)
@@ -33,13 +48,14 @@ function(pxflow_gap8_program name)
   endforeach()
   add_custom_command(
     OUTPUT ${elf}
-    COMMAND ${PXFLOW_GAP8_CC} ${cflags} -I${rt} -nostdlib -nostartfiles
+    COMMAND ${PXFLOW_GAP8_CC} ${cflags} -I${rt} -I${PXFLOW_GAP8_FIELDS_DIR} -nostdlib -nostartfiles
             -T ${rt}/link.ld -Wl,--no-warn-rwx-segments
             ${rt}/crt0.S ${rt}/runtime.c ${sources} -lgcc -o ${elf}
     DEPENDS ${sources} ${rt}/crt0.S ${rt}/runtime.c ${rt}/link.ld ${rt}/pmsis.h
-            ${rt}/gap8_regs.h ${rt}/xpulp.h
+            ${rt}/gap8_regs.h ${rt}/xpulp.h ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_fields.h
     COMMENT "RISC-V ${name}.elf"
     VERBATIM)
   add_custom_target(gap8_prog_${name} ALL DEPENDS ${elf})
+  add_dependencies(gap8_prog_${name} pxflow_gap8_xpulp_fields)
   set(GAP8_PROGRAM_${name} ${elf} PARENT_SCOPE)
 endfunction()

@@ -3,6 +3,7 @@
 #include "gap8/core.h"
 #include "gap8/timing.h"
 #include "gap8/xpulp.h"
+#include "xpulp_semantics.h"
 
 namespace gap8 {
 namespace {
@@ -14,9 +15,6 @@ uint32_t OperandB(const Decoded& d, uint32_t rs2_value) {
   if (d.scalar == 2) return static_cast<uint32_t>(d.imm);
   return d.width ? xpulp::SplatHalf(rs2_value) : xpulp::SplatByte(rs2_value);
 }
-
-// p.beqimm / p.bneimm: the 5-bit signed immediate kept in the rs2 field.
-int32_t BranchImm5(const Decoded& d) { return static_cast<int8_t>(d.rs2 << 3) >> 3; }
 
 }  // namespace
 
@@ -168,14 +166,7 @@ uint32_t Core::Execute(const Decoded& d) {
     case Op::kBgeu:
       return ExecuteBranch(d, a >= b);
     case Op::kLoad:
-    case Op::kElw:
     case Op::kStore:
-    case Op::kLoadPostImm:
-    case Op::kLoadRegReg:
-    case Op::kLoadPostReg:
-    case Op::kStorePostImm:
-    case Op::kStoreRegReg:
-    case Op::kStorePostReg:
       return ExecuteMemory(d);
     case Op::kMul:
     case Op::kMulh:
@@ -186,70 +177,10 @@ uint32_t Core::Execute(const Decoded& d) {
     case Op::kRem:
     case Op::kRemu:
       return ExecuteMulDiv(d);
-    case Op::kLpStarti:
-    case Op::kLpEndi:
-    case Op::kLpCount:
-    case Op::kLpCounti:
-    case Op::kLpSetup:
-    case Op::kLpSetupi:
-      return ExecuteHwLoopSetup(d);
-    // Xpulp arithmetic sits in this switch too: one dispatch per instruction, not two.
-    case Op::kBeqImm:
-      return ExecuteBranch(d, static_cast<int32_t>(a) == BranchImm5(d));
-    case Op::kBneImm:
-      return ExecuteBranch(d, static_cast<int32_t>(a) != BranchImm5(d));
-    // The Xpulp operations the kernels use most sit in this switch too (one dispatch per
-    // instruction, not two); the rest of PULPv2 goes through EvaluateXpulp.
-    case Op::kPAbs:
-      result = xpulp::AbsW(a);
-      break;
-    case Op::kPMin:
-      result = xpulp::MinW(a, b);
-      break;
-    case Op::kPMinu:
-      result = xpulp::MinuW(a, b);
-      break;
-    case Op::kPMax:
-      result = xpulp::MaxW(a, b);
-      break;
-    case Op::kPMaxu:
-      result = xpulp::MaxuW(a, b);
-      break;
-    case Op::kPvAddB:
-      result = xpulp::Add<uint8_t>(a, OperandB(d, b));
-      break;
-    case Op::kPvSubB:
-      result = xpulp::Sub<uint8_t>(a, OperandB(d, b));
-      break;
-    case Op::kPvAvguB:
-      result = xpulp::Avg<uint8_t>(a, OperandB(d, b));
-      break;
-    case Op::kPvMinuB:
-      result = xpulp::Min<uint8_t>(a, OperandB(d, b));
-      break;
-    case Op::kPvMaxuB:
-      result = xpulp::Max<uint8_t>(a, OperandB(d, b));
-      break;
-    case Op::kPvAbsB:
-      result = xpulp::Abs<int8_t>(a);
-      break;
-    case Op::kPvDotupB:
-      result = xpulp::Dot<uint8_t, uint8_t>(a, OperandB(d, b));
-      break;
-    case Op::kPvDotuspB:
-      result = xpulp::Dot<uint8_t, int8_t>(a, OperandB(d, b));
-      break;
-    case Op::kPvSdotupB:
-      result = regs_[d.rd] + xpulp::Dot<uint8_t, uint8_t>(a, OperandB(d, b));
-      break;
-    case Op::kPvSdotuspB:
-      result = regs_[d.rd] + xpulp::Dot<uint8_t, int8_t>(a, OperandB(d, b));
-      break;
-    default:
-      if (d.op < Op::kXpulpEvaluated)  // kIllegal, kUndecoded
-        Raise(FaultKind::kIllegalInstruction, "illegal instruction");
-      result = EvaluateXpulp(d, a, OperandB(d, b), regs_[d.rd]);
-      break;
+      // Xpulp: one generated case per op of gap8_model/isa/xpulp.tbl, by its class and path.
+#include "gap8/xpulp_execute.inc"
+    default:  // kIllegal, kUndecoded
+      Raise(FaultKind::kIllegalInstruction, "illegal instruction");
   }
   regs_[d.rd] = result;
   regs_[0] = 0;

@@ -1,26 +1,13 @@
-// Decoder for 32-bit RV32IM and PULPv2 (Xpulp) loads and stores; the rest of PULPv2 is in
-// decode_xpulp.cpp.
+// Decoder for 32-bit RV32IM; the Xpulp encodings go to DecodeXpulp (decode_xpulp.cpp, from the
+// rows of gap8_model/isa/xpulp.tbl).
 #include "decode_compressed.h"
 #include "decode_fields.h"
 #include "gap8/decoded.h"
 
 namespace gap8 {
 
-Decoded DecodeXpulpSimd(uint32_t w);
-Decoded DecodeXpulpAlu(uint32_t w);
-Decoded DecodeXpulpMac(uint32_t w);
-Decoded DecodeBranchImm(uint32_t w, int32_t offset);
-Decoded DecodeHwLoop(uint32_t w);
-
 namespace {
 
-int32_t ImmI(uint32_t w) { return SignExtend(Bits(w, 31, 20), 12); }
-int32_t ImmS(uint32_t w) { return SignExtend((Bits(w, 31, 25) << 5) | Bits(w, 11, 7), 12); }
-int32_t ImmB(uint32_t w) {
-  return SignExtend((Bits(w, 31, 31) << 12) | (Bits(w, 7, 7) << 11) | (Bits(w, 30, 25) << 5) |
-                        (Bits(w, 11, 8) << 1),
-                    13);
-}
 int32_t ImmJ(uint32_t w) {
   return SignExtend((Bits(w, 31, 31) << 20) | (Bits(w, 19, 12) << 12) | (Bits(w, 20, 20) << 11) |
                         (Bits(w, 30, 21) << 1),
@@ -49,24 +36,6 @@ Decoded Illegal(uint32_t w) {
 
 // Load widths allowed in RISC-V funct3 terms: lb, lh, lw, lbu, lhu.
 bool ValidLoadWidth(uint32_t f3) { return f3 <= 2 || f3 == 4 || f3 == 5; }
-
-// p.l* register-offset forms encode the width in funct7 instead of funct3.
-int LoadWidthFromFunct7(uint32_t f7) {
-  switch (f7) {
-    case 0x00:
-      return 0;
-    case 0x08:
-      return 1;
-    case 0x10:
-      return 2;
-    case 0x20:
-      return 4;
-    case 0x28:
-      return 5;
-    default:
-      return -1;
-  }
-}
 
 Decoded DecodeOpImm(uint32_t w) {
   const uint32_t f3 = Bits(w, 14, 12), f7 = Bits(w, 31, 25);
@@ -97,71 +66,34 @@ Decoded DecodeOp(uint32_t w) {
                                    Op::kDiv, Op::kDivu, Op::kRem,    Op::kRemu};
     return Base(w, kOps[f3]);
   }
-  return DecodeXpulpAlu(w);  // PULPv2's funct7 values, or illegal
+  return DecodeXpulp(w);  // PULPv2's funct7 values, or illegal
 }
 
+// RV32I loads; LOAD funct3 6 (p.elw) and 7 (p.l* rd, rs2(rs1)) are Xpulp.
 Decoded DecodeLoad(uint32_t w) {
   const uint32_t f3 = Bits(w, 14, 12);
-  if (f3 == 7) {  // p.l* rd, rs2(rs1)
-    int width = LoadWidthFromFunct7(Bits(w, 31, 25));
-    if (width < 0) return Illegal(w);
-    Decoded d = Base(w, Op::kLoadRegReg);
-    d.width = width;
-    return d;
-  }
-  if (f3 == 6) {  // p.elw rd, imm(rs1) [GVSOC p_elw_exec: "a regular load whose park puts the
-                  // whole core to sleep until the event unit answers"]: the model's blocking
-                  // peripheral reads already sleep, so it is lw with its own op
-    Decoded d = WithImm(Base(w, Op::kElw), ImmI(w), false);
-    d.width = 2;
-    return d;
-  }
+  if (f3 >= 6) return DecodeXpulp(w);
   if (!ValidLoadWidth(f3)) return Illegal(w);
   Decoded d = WithImm(Base(w, Op::kLoad), ImmI(w), false);
   d.width = f3;
   return d;
 }
 
-// PULP custom-0 (0001011): post-incrementing loads.
-Decoded DecodeLoadPost(uint32_t w) {
+// RV32I stores; STORE funct3 4..6 (p.s* rs2, rs3(rs1)) are Xpulp.
+Decoded DecodeStore(uint32_t w) {
   const uint32_t f3 = Bits(w, 14, 12);
-  if (f3 == 7) {
-    int width = LoadWidthFromFunct7(Bits(w, 31, 25));
-    if (width < 0) return Illegal(w);
-    Decoded d = Base(w, Op::kLoadPostReg);
-    d.width = width;
-    return d;
-  }
-  if (!ValidLoadWidth(f3)) return Illegal(w);
-  Decoded d = WithImm(Base(w, Op::kLoadPostImm), ImmI(w), false);
+  if (f3 > 2) return DecodeXpulp(w);
+  Decoded d = WithImm(Base(w, Op::kStore), ImmS(w), true);
+  d.rd = 0;
   d.width = f3;
   return d;
-}
-
-// Stores (0100011) and PULP custom-1 (0101011) post-incrementing stores; funct3 4..6 are the
-// register-offset forms, whose offset register rs3 sits in the rd field.
-Decoded DecodeStore(uint32_t w, bool post) {
-  const uint32_t f3 = Bits(w, 14, 12);
-  if (f3 <= 2) {
-    Decoded d = WithImm(Base(w, post ? Op::kStorePostImm : Op::kStore), ImmS(w), true);
-    d.rd = 0;
-    d.width = f3;
-    return d;
-  }
-  if (f3 >= 4 && f3 <= 6 && Bits(w, 31, 25) == 0) {
-    Decoded d = Base(w, post ? Op::kStorePostReg : Op::kStoreRegReg);
-    d.width = f3 - 4;
-    d.src_mask |= RegBit(d.rd);
-    return d;
-  }
-  return Illegal(w);
 }
 
 Decoded DecodeBranch(uint32_t w) {
   static constexpr Op kOps[8] = {Op::kBeq, Op::kBne, Op::kIllegal, Op::kIllegal,
                                  Op::kBlt, Op::kBge, Op::kBltu,    Op::kBgeu};
   const uint32_t f3 = Bits(w, 14, 12);
-  if (f3 == 2 || f3 == 3) return DecodeBranchImm(w, ImmB(w));  // p.beqimm, p.bneimm
+  if (f3 == 2 || f3 == 3) return DecodeXpulp(w);  // p.beqimm, p.bneimm
   Op op = kOps[f3];
   if (op == Op::kIllegal) return Illegal(w);
   Decoded d = WithImm(Base(w, op), ImmB(w), true);
@@ -196,12 +128,8 @@ Decoded DecodeFields(uint32_t bits) {
       return DecodeBranch(w);
     case 0x03:
       return DecodeLoad(w);
-    case 0x0B:
-      return DecodeLoadPost(w);
     case 0x23:
-      return DecodeStore(w, false);
-    case 0x2B:
-      return DecodeStore(w, true);
+      return DecodeStore(w);
     case 0x13:
       return DecodeOpImm(w);
     case 0x33:
@@ -215,12 +143,12 @@ Decoded DecodeFields(uint32_t bits) {
     }
     case 0x73:
       return DecodeSystem(w);
-    case 0x57:
-      return DecodeXpulpSimd(w);
-    case 0x5B:
-      return DecodeXpulpMac(w);
-    case 0x7B:
-      return DecodeHwLoop(w);
+    case 0x0B:  // PULP custom-0: post-incrementing loads
+    case 0x2B:  // PULP custom-1: post-incrementing stores
+    case 0x57:  // packed SIMD
+    case 0x5B:  // 16-bit MACs, normalised add/sub
+    case 0x7B:  // hardware loops
+      return DecodeXpulp(w);
     default:
       return Illegal(w);
   }

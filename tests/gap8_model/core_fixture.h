@@ -42,7 +42,3 @@ constexpr uint32_t EncodeI(uint32_t opcode, uint32_t funct3, uint32_t rd, uint32
   return (static_cast<uint32_t>(imm & 0xFFF) << 20) | (rs1 << 15) | (funct3 << 12) | (rd << 7) |
          opcode;
 }
-// The packed-SIMD byte forms: rd = x10, rs1 = x11, rs2 = x12.
-constexpr uint32_t Simd(uint32_t funct6, bool scalar) {
-  return EncodeR(0x57, scalar ? 5 : 1, funct6 << 1, 10, 11, 12);
-}

@@ -18,7 +18,7 @@ bool WritesRd(gap8::Op op) { return op != gap8::Op::kStore && op != gap8::Op::kF
 bool Acceptable(const gap8::Decoded& d) {
   using gap8::Op;
   if (d.op == Op::kIllegal || d.op == Op::kUndecoded) return false;
-  if (d.op >= Op::kLoadPostImm) return false;  // Xpulp: Unicorn does not know it
+  if (IsXpulp(d.op)) return false;  // Unicorn does not know Xpulp
   if ((d.op >= Op::kJal && d.op <= Op::kBgeu)) return false;
   if (WritesRd(d.op) && IsBase(d.rd)) return false;
   if (IsMemory(d.op) && !IsBase(d.rs1)) return false;

@@ -3,6 +3,7 @@
 
 #include "core_fixture.h"
 #include "gap8/decoded.h"
+#include "xpulp_asm.h"
 
 using gap8::Decode;
 using gap8::Op;
@@ -56,7 +57,8 @@ TEST_CASE("csrr mhartid returns the core id") {
 TEST_CASE("source masks drive the hazard checks") {
   CHECK(Decode(EncodeR(0x33, 0, 0, 10, 11, 12)).src_mask == ((1u << 11) | (1u << 12)));
   CHECK(Decode(0x000502B7).src_mask == 0u);  // lui: the rs1 bits belong to the immediate
-  CHECK(Decode(Simd(0x28, false)).src_mask == ((1u << 10) | (1u << 11) | (1u << 12)));
+  CHECK(Decode(xpulp_asm::Assemble("pv.sdotup.b")).src_mask ==
+        ((1u << 10) | (1u << 11) | (1u << 12)));
 }
 
 TEST_CASE("a fetch outside L1 and L2 is a memory fault naming the pc") {

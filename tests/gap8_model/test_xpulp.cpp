@@ -1,68 +1,76 @@
-// Each Xpulp instruction, decoded from its PULPv2 encoding and executed, against results
-// computed by hand.
+// Each Xpulp instruction, decoded from its PULPv2 encoding (GreenWaves' assembler table,
+// xgap8_opcodes.txt, through xpulp_asm) and executed, against results computed by hand.
 #include <catch2/catch.hpp>
 
 #include "core_fixture.h"
+#include "xpulp_asm.h"
+
+namespace {
+
+// The instruction with rd = x10, rs1 = x11, rs2 = x12, from the outside encoding table.
+uint32_t Asm(const char* mnemonic) { return xpulp_asm::Assemble(mnemonic); }
+
+}  // namespace
 
 TEST_CASE("pv.maxu.b / pv.minu.b per unsigned byte, and their .sc forms") {
   CoreFixture f;
-  CHECK(f.RunR(Simd(0x0E, false), 0x80FF1203u, 0x7F01F004u) == 0x80FFF004u);
-  CHECK(f.RunR(Simd(0x0A, false), 0x80FF1203u, 0x7F01F004u) == 0x7F011203u);
-  CHECK(f.RunR(Simd(0x0E, true), 0x80FF1203u, 0xAAAAAA10u) == 0x80FF1210u);
-  CHECK(f.RunR(Simd(0x0A, true), 0x80FF1203u, 0x00000010u) == 0x10101003u);
+  CHECK(f.RunR(Asm("pv.maxu.b"), 0x80FF1203u, 0x7F01F004u) == 0x80FFF004u);
+  CHECK(f.RunR(Asm("pv.minu.b"), 0x80FF1203u, 0x7F01F004u) == 0x7F011203u);
+  CHECK(f.RunR(Asm("pv.maxu.sc.b"), 0x80FF1203u, 0xAAAAAA10u) == 0x80FF1210u);
+  CHECK(f.RunR(Asm("pv.minu.sc.b"), 0x80FF1203u, 0x00000010u) == 0x10101003u);
 }
 
 TEST_CASE("pv.sub.b / pv.add.b wrap per byte: .sc uses rs2's low byte") {
   CoreFixture f;
-  CHECK(f.RunR(Simd(0x02, false), 0x80FF1203u, 0x7F01F004u) == 0x01FE22FFu);
-  CHECK(f.RunR(Simd(0x02, true), 0x00010203u, 0xFFFFFF01u) == 0xFF000102u);
-  CHECK(f.RunR(Simd(0x00, false), 0xFF7F0180u, 0x01010180u) == 0x00800200u);
-  CHECK(f.RunR(Simd(0x00, true), 0x01020304u, 0x10u) == 0x11121314u);
+  CHECK(f.RunR(Asm("pv.sub.b"), 0x80FF1203u, 0x7F01F004u) == 0x01FE22FFu);
+  CHECK(f.RunR(Asm("pv.sub.sc.b"), 0x00010203u, 0xFFFFFF01u) == 0xFF000102u);
+  CHECK(f.RunR(Asm("pv.add.b"), 0xFF7F0180u, 0x01010180u) == 0x00800200u);
+  CHECK(f.RunR(Asm("pv.add.sc.b"), 0x01020304u, 0x10u) == 0x11121314u);
 }
 
 TEST_CASE("pv.avgu.b adds in the 8-bit lane (carry lost), then shifts") {
   CoreFixture f;
   // pulp-platform/riscv-tests (xpulp-dev) pv_avgu; a 9-bit floor average would give 0xB66DB3AC.
-  CHECK(f.RunR(Simd(0x06, false), 0x8F75F8E9u, 0xDD666F70u) == 0x366D332Cu);
+  CHECK(f.RunR(Asm("pv.avgu.b"), 0x8F75F8E9u, 0xDD666F70u) == 0x366D332Cu);
   // Lanes: 0x80+0x7F=0xFF -> 0x7F; 0xFF+0x01 wraps to 0 -> 0; 0x12+0xF0 wraps to 0x02 -> 1;
   // 0x03+0x04 -> 3. Floor-of-9-bit would give 0x7F808103.
-  CHECK(f.RunR(Simd(0x06, false), 0x80FF1203u, 0x7F01F004u) == 0x7F000103u);
+  CHECK(f.RunR(Asm("pv.avgu.b"), 0x80FF1203u, 0x7F01F004u) == 0x7F000103u);
   // Lane 0: 0xFF + 0xFE = 0x1FD wraps to 0xFD, >> 1 = 0x7E; the others 0x1FE -> 0xFE -> 0x7F.
-  CHECK(f.RunR(Simd(0x06, false), 0xFFFFFFFFu, 0xFFFFFFFEu) == 0x7F7F7F7Eu);
+  CHECK(f.RunR(Asm("pv.avgu.b"), 0xFFFFFFFFu, 0xFFFFFFFEu) == 0x7F7F7F7Eu);
 }
 
 TEST_CASE("pv.abs.b: per signed byte, -128 stays 0x80") {
   CoreFixture f;
-  CHECK(f.RunR(EncodeR(0x57, 1, 0x38, 10, 11, 0), 0xFF80017Fu, 0) == 0x0180017Fu);
+  CHECK(f.RunR(Asm("pv.abs.b"), 0xFF80017Fu, 0) == 0x0180017Fu);
 }
 
 TEST_CASE("pv.dotup.b / pv.dotusp.b: unsigned x unsigned, unsigned x signed") {
   CoreFixture f;
-  CHECK(f.RunR(Simd(0x20, false), 0x01020304u, 0x05060708u) == 70u);
-  CHECK(f.RunR(Simd(0x20, false), 0xFFFFFFFFu, 0xFFFFFFFFu) == 4u * 255u * 255u);
-  CHECK(f.RunR(Simd(0x22, false), 0x000000FFu, 0x000000FFu) == static_cast<uint32_t>(-255));
-  CHECK(f.RunR(Simd(0x22, false), 0x02020202u, 0x80FF0102u) == static_cast<uint32_t>(-252));
-  CHECK(f.RunR(Simd(0x20, true), 0x01010101u, 0x3u) == 12u);
+  CHECK(f.RunR(Asm("pv.dotup.b"), 0x01020304u, 0x05060708u) == 70u);
+  CHECK(f.RunR(Asm("pv.dotup.b"), 0xFFFFFFFFu, 0xFFFFFFFFu) == 4u * 255u * 255u);
+  CHECK(f.RunR(Asm("pv.dotusp.b"), 0x000000FFu, 0x000000FFu) == static_cast<uint32_t>(-255));
+  CHECK(f.RunR(Asm("pv.dotusp.b"), 0x02020202u, 0x80FF0102u) == static_cast<uint32_t>(-252));
+  CHECK(f.RunR(Asm("pv.dotup.sc.b"), 0x01010101u, 0x3u) == 12u);
 }
 
 TEST_CASE("pv.sdotup.b / pv.sdotusp.b accumulate into rd, .sc forms too") {
   CoreFixture f;
-  CHECK(f.RunR(Simd(0x28, false), 0x01020304u, 0x05060708u, 1000) == 1070u);
-  CHECK(f.RunR(Simd(0x28, true), 0x01020304u, 0xFF000002u, 5) == 25u);
-  CHECK(f.RunR(Simd(0x2A, false), 0x000000FFu, 0x000000FFu, 300) == 45u);
-  CHECK(f.RunR(Simd(0x2A, true), 0x01010101u, 0x000000FEu, 0) == static_cast<uint32_t>(-8));
-  CHECK(f.RunR(Simd(0x28, false), 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu) == 4u * 255u * 255u - 1);
+  CHECK(f.RunR(Asm("pv.sdotup.b"), 0x01020304u, 0x05060708u, 1000) == 1070u);
+  CHECK(f.RunR(Asm("pv.sdotup.sc.b"), 0x01020304u, 0xFF000002u, 5) == 25u);
+  CHECK(f.RunR(Asm("pv.sdotusp.b"), 0x000000FFu, 0x000000FFu, 300) == 45u);
+  CHECK(f.RunR(Asm("pv.sdotusp.sc.b"), 0x01010101u, 0x000000FEu, 0) == static_cast<uint32_t>(-8));
+  CHECK(f.RunR(Asm("pv.sdotup.b"), 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu) == 4u * 255u * 255u - 1);
 }
 
 TEST_CASE("p.abs, p.min, p.minu, p.max, p.maxu") {
   CoreFixture f;
   const uint32_t minus3 = static_cast<uint32_t>(-3);
-  CHECK(f.RunR(EncodeR(0x33, 0, 2, 10, 11, 0), static_cast<uint32_t>(-42), 0) == 42u);
-  CHECK(f.RunR(EncodeR(0x33, 0, 2, 10, 11, 0), 0x80000000u, 0) == 0x80000000u);
-  CHECK(f.RunR(EncodeR(0x33, 4, 2, 10, 11, 12), minus3, 2) == minus3);
-  CHECK(f.RunR(EncodeR(0x33, 5, 2, 10, 11, 12), minus3, 2) == 2u);
-  CHECK(f.RunR(EncodeR(0x33, 6, 2, 10, 11, 12), minus3, 2) == 2u);
-  CHECK(f.RunR(EncodeR(0x33, 7, 2, 10, 11, 12), minus3, 2) == minus3);
+  CHECK(f.RunR(Asm("p.abs"), static_cast<uint32_t>(-42), 0) == 42u);
+  CHECK(f.RunR(Asm("p.abs"), 0x80000000u, 0) == 0x80000000u);
+  CHECK(f.RunR(Asm("p.min"), minus3, 2) == minus3);
+  CHECK(f.RunR(Asm("p.minu"), minus3, 2) == 2u);
+  CHECK(f.RunR(Asm("p.max"), minus3, 2) == 2u);
+  CHECK(f.RunR(Asm("p.maxu"), minus3, 2) == minus3);
 }
 
 TEST_CASE("post-increment and register-offset loads and stores") {

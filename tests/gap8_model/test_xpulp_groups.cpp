@@ -348,6 +348,8 @@ TEST_CASE("GAP8-only: pv.add/sub .div2/.div4, pv.cplxmul.s, pv.cplxconj.h, pv.su
   CheckRows({
       {"pv.add.h.div2", 0, 0x7FFF0003u, 0x00010004u, 0, 0xC0000003u},  // 0x8000 is -32768
       {"pv.add.h.div4", 0, 0x7FFF0003u, 0x00010004u, 0, 0xE0000001u},
+      // GAP9's .div8 (GreenWaves' binutils, Xgap9): -32768 >> 3 = 0xF000, 7 >> 3 = 0
+      {"pv.add.h.div8", 0, 0x7FFF0003u, 0x00010004u, 0, 0xF0000000u},
       {"pv.add.b.div2", 0, 0x7F010203u, 0x01010101u, 0, 0xC0010102u},
       {"pv.sub.h.div2", 0, 0x80000000u, 0x00010002u, 0, 0x3FFFFFFFu},
       {"pv.sub.b.div4", 0, 0x00100080u, 0x01010101u, 0, 0xFF03FF1Fu},

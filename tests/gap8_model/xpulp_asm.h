@@ -1,10 +1,13 @@
-// A test-side assembler for PULPv2 mnemonics, written from the encoding tables (GVSOC
-// isa_pulpv2.py, the RI5CY manual's encoding chapter), independently of the model's decoder
-// tables: rd = x10, rs1 = x11, rs2 = x12. Returns 0 for a mnemonic it does not know.
+// A test-side assembler for Xpulp mnemonics: the encodings come from GreenWaves' assembler
+// table (xgap8_opcodes.txt, test data copied from its opcode table), never from the model's
+// own table (gap8_model/isa/xpulp.tbl), so that the tests check the model against an outside
+// source. rd = x10, rs1 = x11, rs2 = x12. Returns 0 for a mnemonic it does not know.
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace xpulp_asm {
 
@@ -17,5 +20,13 @@ uint32_t Assemble(std::string_view mnemonic, uint32_t imm = 0);
 
 // True when the instruction takes an immediate instead of rs2.
 bool TakesImmediate(std::string_view mnemonic);
+
+// One row of xgap8_opcodes.txt.
+struct OutsideRow {
+  std::string mnemonic, operands;
+  uint32_t match = 0, mask = 0;
+  std::string extension;
+};
+const std::vector<OutsideRow>& OutsideTable();
 
 }  // namespace xpulp_asm

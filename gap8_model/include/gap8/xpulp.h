@@ -42,6 +42,12 @@ inline uint32_t Map(uint32_t a, uint32_t b, F f) {
 
 // pv.*.sc: "operand 2 is treated as a scalar and replicated two or four times ... The LSP is
 // used" [RI5CY]; .sci replicates the 6-bit immediate the same way.
+// p.beqimm / p.bneimm: the 5-bit signed immediate kept in the rs2 field [RI5CY "Immediate
+// Branching"].
+constexpr int32_t BranchImm5(uint32_t rs2_field) {
+  return static_cast<int8_t>(static_cast<uint8_t>(rs2_field << 3)) >> 3;
+}
+
 inline uint32_t SplatByte(uint32_t x) { return (x & 0xFFu) * 0x01010101u; }
 inline uint32_t SplatHalf(uint32_t x) { return (x & 0xFFFFu) * 0x00010001u; }
 
