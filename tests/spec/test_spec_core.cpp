@@ -63,11 +63,11 @@ TEST_CASE("spec core: the parameter check accepts exactly what validate() accept
   // Each field at the edges of its range, the others at the default profile's values.
   const std::vector<int> edges = {-1, 0,  1,   2,   7,   8,     9,     22,    23,    30,   31,
                                   32, 64, 254, 255, 256, 65535, 65536, 16383, 16384, 16385};
-  int* Params::*fields[] = {&Params::width,         &Params::height,   &Params::search_radius,
-                            &Params::tile,          &Params::blocks,   &Params::feature_threshold,
-                            &Params::sad_threshold, &Params::min_count};
+  int Params::*fields[] = {&Params::width,         &Params::height,   &Params::search_radius,
+                           &Params::tile,          &Params::blocks,   &Params::feature_threshold,
+                           &Params::sad_threshold, &Params::min_count};
   int compared = 0;
-  for (int* Params::*field : fields)
+  for (int Params::*field : fields)
     for (int v : edges) {
       Params p;
       p.*field = v;
