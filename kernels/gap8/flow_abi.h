@@ -23,7 +23,7 @@
 
 typedef struct {
   uint32_t magic;
-  pxflow_param_block spec; /* SPEC §1 (GC is always 0 here) */
+  pxflow_param_block spec; /* SPEC §1 */
   uint32_t pairs;          /* frame pairs in this run */
   uint32_t cores;          /* team size of the flow phase, 1..8 */
   uint32_t split;          /* PXFLOW_GAP8_SPLIT_* */
