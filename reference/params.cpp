@@ -109,16 +109,14 @@ void validate(const Params& p) {
                        " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
   };
   // T is fixed: the record layout, the 4-byte packing and every kernel assume 8x8 blocks.
-  if (p.tile != 8)
-    throw InputError("parameter tile = " + std::to_string(p.tile) +
-                     ": only 8 is supported (the kernel's 8x8 block)");
-  // S <= 31 keeps the half-pixel displacement 2*S+1 inside an i8.
-  range("search_radius", p.search_radius, 1, 31);
-  // B <= 255: at most B*B POIs, so u16 histogram bins and the quality formula cannot overflow.
-  range("blocks", p.blocks, 1, 255);
-  range("feature_threshold", p.feature_threshold, 0, 65535);
-  range("sad_threshold", p.sad_threshold, 0, 65535);
-  range("min_count", p.min_count, 0, 65535);
+  if (p.tile != kTile)
+    throw InputError("parameter tile = " + std::to_string(p.tile) + ": only " +
+                     std::to_string(kTile) + " is supported (the kernel's 8x8 block)");
+  range("search_radius", p.search_radius, kMinSearchRadius, kMaxSearchRadius);
+  range("blocks", p.blocks, kMinBlocks, kMaxBlocks);
+  range("feature_threshold", p.feature_threshold, 0, kMaxThreshold);
+  range("sad_threshold", p.sad_threshold, 0, kMaxThreshold);
+  range("min_count", p.min_count, 0, kMaxThreshold);
   range("width", p.width, 1, kMaxFrameSide);
   range("height", p.height, 1, kMaxFrameSide);
   if (std::int64_t{p.width} * p.height > kMaxFramePixels)

@@ -23,6 +23,16 @@ struct Params {
   bool operator==(const Params&) const = default;
 };
 
+// SPEC §1's limits, the values of the freestanding spec core (spec/include/pxflow_spec/params.h;
+// reference/spec_core.cpp static_asserts each). T is the kernel's 8x8 block; S <= 31 keeps the
+// half-pixel displacement 2S+1 inside an i8; B <= 255 keeps B*B POIs within u16 histogram bins
+// and the quality formula; FT, VT and MINCOUNT are compared with u16 values.
+inline constexpr int kTile = 8;
+inline constexpr int kMinSearchRadius = 1;
+inline constexpr int kMaxSearchRadius = 31;
+inline constexpr int kMinBlocks = 1;
+inline constexpr int kMaxBlocks = 255;
+inline constexpr int kMaxThreshold = 65535;
 // Frame size limits: records store coordinates as u16, and larger frames would be a typo.
 inline constexpr int kMaxFrameSide = 16384;
 inline constexpr std::int64_t kMaxFramePixels = std::int64_t{1} << 26;  // 64 Mpx

@@ -41,11 +41,12 @@ void pxdut_reset(void);
 void pxdut_kernel_portable(const pxdut_params *p, const uint8_t *prev, const uint8_t *next,
                            pxdut_record *out);
 
-/* The grid of SPEC §2: points per axis for a side of `side` pixels, and the POI count. */
-uint32_t pxdut_grid_axis(uint32_t side, const pxdut_params *p, uint16_t *coords);
+/* The POI count of SPEC §2's grid (the spec core's pxflow_poi_count). */
 uint32_t pxdut_poi_count(const pxdut_params *p);
 
-/* SPEC §5 without gyro compensation, in float as the firmware (build with -ffp-contract=off). */
+/* SPEC §5 without gyro compensation, in float as the firmware (build with -ffp-contract=off): the
+ * spec core's pxflow_estimate_flow, compiled once here so that every firmware runs the same
+ * code. */
 void pxdut_estimate_flow(const pxdut_record *records, uint32_t pois, const pxdut_params *p,
                          pxdut_estimate *out);
 

@@ -11,6 +11,10 @@
 #define PXDUT_COMPUTE_ESTIMATE 1 /* the device runs SPEC §5 itself and RESULT carries it */
 #endif
 
+#if PXDUT_PARAMS_BODY != 4u * PXFLOW_PARAM_FIELDS || PXDUT_RECORD_BYTES != PXFLOW_RECORD_BYTES
+#error "the wire's PARAMS body and record are the spec core's parameter block and record"
+#endif
+
 #define PXDUT_ENCODED_MAX (PXDUT_MAX_PACKET + PXDUT_MAX_PACKET / 254u + 2u)
 
 /* Every reply fits one packet of PXDUT_MAX_PACKET bytes (type, seq, body, CRC), whatever the
@@ -123,30 +127,22 @@ static void on_params(uint8_t seq, const uint8_t *body, uint32_t n) {
     return;
   }
   pxdut_params q;
-  uint32_t *fields[10] = {&q.width,         &q.height,      &q.search_radius,
-                          &q.tile,          &q.blocks,      &q.feature_threshold,
-                          &q.sad_threshold, &q.hist_filter, &q.min_count,
-                          &q.gyro_comp};
-  for (int i = 0; i < 10; ++i) *fields[i] = get_u32(body + 4 * i);
-  if (q.tile != 8u) {
-    error_reply(seq, PXDUT_ERR_BAD_PARAMS, "T must be 8");
-    return;
-  }
+  uint32_t *fields[PXFLOW_PARAM_FIELDS] = {&q.width,         &q.height,      &q.search_radius,
+                                           &q.tile,          &q.blocks,      &q.feature_threshold,
+                                           &q.sad_threshold, &q.hist_filter, &q.min_count,
+                                           &q.gyro_comp};
+  for (uint32_t i = 0; i < PXFLOW_PARAM_FIELDS; ++i) *fields[i] = get_u32(body + 4 * i);
   if (q.gyro_comp != 0u) {
     error_reply(seq, PXDUT_ERR_BAD_PARAMS, "gyro compensation is not supported");
     return;
   }
-  if (q.search_radius < 1u || q.search_radius > 31u || q.blocks < 1u || q.blocks > 255u ||
-      q.hist_filter > 1u || q.feature_threshold > 65535u || q.sad_threshold > 65535u ||
-      q.min_count > 65535u || q.width > 65535u || q.height > 65535u) {
-    error_reply(seq, PXDUT_ERR_BAD_PARAMS, "a parameter is out of range");
+  /* SPEC §1's limits, the spec core's (the host's validate() checks the same ones). */
+  const pxflow_params_problem problem = pxflow_check_params(&q);
+  if (problem != PXFLOW_PARAMS_OK) {
+    error_reply(seq, PXDUT_ERR_BAD_PARAMS, pxflow_params_problem_text(problem));
     return;
   }
   const uint32_t pois = pxdut_poi_count(&q);
-  if (pois == 0u) {
-    error_reply(seq, PXDUT_ERR_BAD_PARAMS, "the grid does not fit the frame");
-    return;
-  }
   if (q.width * q.height > PXDUT_MAX_PIXELS) {
     error_reply(seq, PXDUT_ERR_TOO_LARGE, "frame larger than PXDUT_MAX_PIXELS");
     return;
@@ -231,19 +227,8 @@ static void on_run(uint8_t seq, const uint8_t *body, uint32_t n) {
 }
 
 static uint8_t *put_record(uint8_t *p, const pxdut_record *r) {
-  p = put_u16(put_u16(p, r->x), r->y);
-  *p++ = r->status;
-  *p++ = 0;
-  p = put_u16(p, r->feature);
-  *p++ = (uint8_t)r->dx;
-  *p++ = (uint8_t)r->dy;
-  p = put_u16(p, r->sad);
-  *p++ = r->dir;
-  *p++ = 0;
-  for (int k = 0; k < 8; ++k) p = put_u16(p, r->sub[k]);
-  *p++ = (uint8_t)r->hx;
-  *p++ = (uint8_t)r->hy;
-  return p;
+  pxflow_record_to_bytes(r, p);
+  return p + PXFLOW_RECORD_BYTES;
 }
 
 #define PXDUT_RECORDS_PER_REPLY \

@@ -84,8 +84,8 @@ static void half_sads(const block_words *b, const uint8_t *match, uint32_t w, ui
   }
 }
 
-static const int8_t kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
-static const int8_t kStepY[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+static const int8_t kStepX[PXFLOW_DIRECTIONS + 1] = PXFLOW_STEP_X_TABLE;
+static const int8_t kStepY[PXFLOW_DIRECTIONS + 1] = PXFLOW_STEP_Y_TABLE;
 
 static void clear_record(pxdut_record *rec) {
   uint8_t *bytes = (uint8_t *)rec;
@@ -100,13 +100,13 @@ static void flow_poi(const pxdut_params *p, const uint8_t *prev, const uint8_t *
   clear_record(rec);
   rec->x = (uint16_t)x;
   rec->y = (uint16_t)y;
-  rec->dir = 8;
+  rec->dir = PXFLOW_DIR_NONE;
   rec->feature = (uint16_t)feature(blk, w);
-  if (rec->feature < p->feature_threshold) return; /* status 0: dropped */
+  if (rec->feature < p->feature_threshold) return; /* PXFLOW_STATUS_DROPPED (0, cleared) */
 
   block_words b;
   load_block(blk, w, &b);
-  uint32_t best = 0xFFFFFFFFu; /* SPEC §3 sentinel */
+  uint32_t best = PXFLOW_SAD_SENTINEL;
   int32_t bx = 0, by = 0;
   for (int32_t dy = -s; dy <= s; ++dy)
     for (int32_t dx = -s; dx <= s; ++dx) {
@@ -122,14 +122,14 @@ static void flow_poi(const pxdut_params *p, const uint8_t *prev, const uint8_t *
   rec->dy = (int8_t)by;
   rec->sad = (uint16_t)best;
   if (best >= p->sad_threshold) {
-    rec->status = 1; /* rejected */
+    rec->status = PXFLOW_STATUS_REJECTED;
     return;
   }
-  rec->status = 2;
+  rec->status = PXFLOW_STATUS_ACCEPTED;
   uint32_t sub[8];
   const uint8_t *match = next + (uint32_t)((int32_t)y + by) * w + (uint32_t)((int32_t)x + bx);
   half_sads(&b, match, w, sub);
-  int dir = 8; /* from (best, dir 8), k = 0..7 in order, strictly smaller replaces */
+  int dir = PXFLOW_DIR_NONE; /* from (best, dir 8), k = 0..7 in order, strictly smaller replaces */
   for (int k = 0; k < 8; ++k) {
     rec->sub[k] = (uint16_t)sub[k];
     if (sub[k] < best) {
@@ -144,13 +144,10 @@ static void flow_poi(const pxdut_params *p, const uint8_t *prev, const uint8_t *
 
 void pxdut_kernel_portable(const pxdut_params *p, const uint8_t *prev, const uint8_t *next,
                            pxdut_record *out) {
-  /* SPEC §2 per axis: lo = S+1, step = (hi-lo)/B + 1 (pxdut_grid_axis counts the points). */
-  const uint32_t lo = p->search_radius + 1;
-  const uint32_t step_x = (p->width - lo - p->tile - lo) / p->blocks + 1;
-  const uint32_t step_y = (p->height - lo - p->tile - lo) / p->blocks + 1;
-  const uint32_t nx = pxdut_grid_axis(p->width, p, 0);
-  const uint32_t ny = pxdut_grid_axis(p->height, p, 0);
-  for (uint32_t j = 0; j < ny; ++j)
-    for (uint32_t i = 0; i < nx; ++i)
-      flow_poi(p, prev, next, lo + i * step_x, lo + j * step_y, &out[j * nx + i]);
+  const pxflow_grid_axis ax = pxflow_grid_axis_of(p->width, p->search_radius, p->blocks);
+  const pxflow_grid_axis ay = pxflow_grid_axis_of(p->height, p->search_radius, p->blocks);
+  for (uint32_t j = 0; j < ay.count; ++j)
+    for (uint32_t i = 0; i < ax.count; ++i)
+      flow_poi(p, prev, next, ax.first + i * ax.step, ay.first + j * ay.step,
+               &out[j * ax.count + i]);
 }

@@ -1,4 +1,4 @@
-# pxflow_gap8_program(<name> SOURCES <files...> [OUTPUT_DIR <dir>])
+# pxflow_gap8_program(<name> SOURCES <files...> [INCLUDE_DIRS <dirs...>] [OUTPUT_DIR <dir>])
 # Builds <name>.elf for the GAP8 cluster model with Debian's riscv64-unknown-elf-gcc: RV32IMC,
 # ilp32, the runtime (crt0.S, runtime.c, link.ld) and libgcc for soft-float and 64-bit helpers.
 # Defines the target gap8_prog_<name>; the ELF path is in the GAP8_PROGRAM_<name> variable.
@@ -30,7 +30,7 @@ if(PXFLOW_GAP8_HAVE_CC)
 endif()
 
 function(pxflow_gap8_program name)
-  cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES;INCLUDE_DIRS" ${ARGN})
   if(NOT PXFLOW_GAP8_HAVE_CC)
     return()
   endif()
@@ -41,6 +41,10 @@ function(pxflow_gap8_program name)
       -fno-builtin -fno-tree-loop-distribute-patterns -ffp-contract=off)
   set(rt ${PXFLOW_GAP8_RUNTIME_DIR})
   set(elf ${ARG_OUTPUT_DIR}/${name}.elf)
+  set(includes -I${rt})
+  foreach(dir ${ARG_INCLUDE_DIRS})
+    list(APPEND includes -I${dir})
+  endforeach()
   set(sources)
   foreach(s ${ARG_SOURCES})
     get_filename_component(abs ${s} ABSOLUTE)
@@ -48,7 +52,7 @@ function(pxflow_gap8_program name)
   endforeach()
   add_custom_command(
     OUTPUT ${elf}
-    COMMAND ${PXFLOW_GAP8_CC} ${cflags} -I${rt} -I${PXFLOW_GAP8_FIELDS_DIR} -nostdlib -nostartfiles
+    COMMAND ${PXFLOW_GAP8_CC} ${cflags} ${includes} -I${PXFLOW_GAP8_FIELDS_DIR} -nostdlib -nostartfiles
             -T ${rt}/link.ld -Wl,--no-warn-rwx-segments
             ${rt}/crt0.S ${rt}/runtime.c ${sources} -lgcc -o ${elf}
     DEPENDS ${sources} ${rt}/crt0.S ${rt}/runtime.c ${rt}/link.ld ${rt}/pmsis.h

@@ -61,8 +61,9 @@ std::vector<BenchPoint> bench_points(const BenchArgs& a) {
       a.batches.empty() ? std::vector<int>{256} : int_list(a.batches, "--batch", 1, 1 << 20);
   const auto threads = a.thread_sweep.empty() ? std::vector<int>{threads_given}
                                               : int_list(a.thread_sweep, "--thread-sweep", 0, 1024);
-  const auto radii =
-      a.radii.empty() ? std::vector<int>{base.search_radius} : int_list(a.radii, "--radius", 1, 31);
+  const auto radii = a.radii.empty()
+                         ? std::vector<int>{base.search_radius}
+                         : int_list(a.radii, "--radius", kMinSearchRadius, kMaxSearchRadius);
   std::vector<FrameSize> sizes;
   for (const auto& s : split_list(a.sizes)) sizes.push_back(parse_frame_size(s));
   if (sizes.empty()) sizes.push_back({base.width, base.height});

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "pxdut.h"
+#include "spec_params.hpp"
 
 namespace pxflow::dut {
 namespace {
@@ -184,10 +185,11 @@ std::vector<std::uint8_t> hello_body() {
 }
 
 std::vector<std::uint8_t> params_body(const Params& p) {
+  const pxflow_param_block q = spec_params(p);  // the PARAMS body is the block, field by field
   std::vector<std::uint8_t> b;
-  for (int v : {p.width, p.height, p.search_radius, p.tile, p.blocks, p.feature_threshold,
-                p.sad_threshold, p.hist_filter ? 1 : 0, p.min_count, p.gyro_comp ? 1 : 0})
-    put32(b, static_cast<std::uint32_t>(v));
+  for (std::uint32_t v : {q.width, q.height, q.search_radius, q.tile, q.blocks, q.feature_threshold,
+                          q.sad_threshold, q.hist_filter, q.min_count, q.gyro_comp})
+    put32(b, v);
   return b;
 }
 
@@ -260,43 +262,22 @@ std::string nak_reason(std::span<const std::uint8_t> body) {
   return why ? why : "reason " + std::to_string(body[0]);
 }
 
+// The record's bytes are the spec core's (pxflow_record_to_bytes / _from_bytes); PoiRecord has
+// its layout (reference/spec_core.cpp static_asserts it), so the two convert by memcpy.
 PoiRecord decode_record(const std::uint8_t* b) {
+  pxflow_poi_record spec;
+  pxflow_record_from_bytes(b, &spec);
   PoiRecord r;
-  std::memset(&r, 0, sizeof r);
-  r.x = get16(b);
-  r.y = get16(b + 2);
-  r.status = b[4];
-  r.pad0 = b[5];
-  r.feature = get16(b + 6);
-  r.dx = static_cast<std::int8_t>(b[8]);
-  r.dy = static_cast<std::int8_t>(b[9]);
-  r.sad = get16(b + 10);
-  r.dir = b[12];
-  r.pad1 = b[13];
-  for (int k = 0; k < 8; ++k) r.sub[k] = get16(b + 14 + 2 * k);
-  r.hx = static_cast<std::int8_t>(b[30]);
-  r.hy = static_cast<std::int8_t>(b[31]);
+  std::memcpy(&r, &spec, sizeof r);
   return r;
 }
 
 void encode_record(const PoiRecord& r, std::uint8_t* b) {
-  auto put = [&](int at, std::uint16_t v) {
-    b[at] = static_cast<std::uint8_t>(v);
-    b[at + 1] = static_cast<std::uint8_t>(v >> 8);
-  };
-  put(0, r.x);
-  put(2, r.y);
-  b[4] = r.status;
-  b[5] = r.pad0;
-  put(6, r.feature);
-  b[8] = static_cast<std::uint8_t>(r.dx);
-  b[9] = static_cast<std::uint8_t>(r.dy);
-  put(10, r.sad);
-  b[12] = r.dir;
-  b[13] = r.pad1;
-  for (int k = 0; k < 8; ++k) put(14 + 2 * k, r.sub[k]);
-  b[30] = static_cast<std::uint8_t>(r.hx);
-  b[31] = static_cast<std::uint8_t>(r.hy);
+  pxflow_poi_record spec;
+  std::memcpy(&spec, &r, sizeof spec);
+  pxflow_record_to_bytes(&spec, b);
+  b[PXFLOW_RECORD_AT_STATUS + 1] = r.pad0;  // a host's codec keeps what it was given
+  b[PXFLOW_RECORD_AT_DIR + 1] = r.pad1;
 }
 
 }  // namespace pxflow::dut

@@ -14,7 +14,8 @@ namespace {
 // The kernel's estimate must be the host's, bit for bit (SPEC §5: the same float operations in
 // the same order, soft-float on the core).
 void check_estimate(std::span<const PoiRecord> records, const Params& p,
-                    const pxflow_gap8_result& kernel, std::size_t pair) {
+                    const pxflow_gap8_result& result, std::size_t pair) {
+  const pxflow_estimate& kernel = result.estimate;
   const FrameResult host = estimate_flow(records, p);
   if (std::bit_cast<std::uint32_t>(host.flow_x) != std::bit_cast<std::uint32_t>(kernel.flow_x) ||
       std::bit_cast<std::uint32_t>(host.flow_y) != std::bit_cast<std::uint32_t>(kernel.flow_y) ||

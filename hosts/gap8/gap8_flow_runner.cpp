@@ -12,14 +12,13 @@
 #include "gap8/elf_loader.h"
 #include "gap8_kernel_elf.hpp"
 #include "grid.hpp"
+#include "spec_params.hpp"
 
 namespace pxflow::gap8_host {
 namespace {
 
-static_assert(sizeof(pxflow_gap8_record) == sizeof(PoiRecord));
-static_assert(PXFLOW_GAP8_DROPPED == kDropped && PXFLOW_GAP8_REJECTED == kRejected &&
-              PXFLOW_GAP8_ACCEPTED == kAccepted);
-static_assert(sizeof(pxflow_gap8_params) == 15 * 4);
+// The records the kernel writes are PoiRecords (reference/spec_core.cpp asserts the layouts).
+static_assert(sizeof(pxflow_gap8_params) == (1 + PXFLOW_PARAM_FIELDS + 6) * 4);
 
 constexpr std::uint32_t kAlign = 8;
 std::uint32_t align_up(std::uint64_t v) {
@@ -135,14 +134,7 @@ void FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
 
   pxflow_gap8_params block{};
   block.magic = PXFLOW_GAP8_MAGIC;
-  block.width = p.width;
-  block.height = p.height;
-  block.search_radius = p.search_radius;
-  block.blocks = p.blocks;
-  block.feature_threshold = p.feature_threshold;
-  block.sad_threshold = p.sad_threshold;
-  block.hist_filter = p.hist_filter ? 1 : 0;
-  block.min_count = p.min_count;
+  block.spec = spec_params(p);
   block.pairs = static_cast<std::uint32_t>(n);
   block.cores = options.cores;
   block.split = options.chunked ? PXFLOW_GAP8_SPLIT_CHUNKED : PXFLOW_GAP8_SPLIT_ROUND_ROBIN;

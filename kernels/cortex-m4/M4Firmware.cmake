@@ -46,15 +46,13 @@ function(pxflow_m4_firmware name)
     return()
   endif()
   # -ffp-contract=off: no fused multiply-add, so the FPU's estimate rounds like the host's.
-  # -fno-strict-aliasing: the kernel writes its m4_flow_record into buffers another library
-  # declares with a struct of the same layout (pxdut_record).
   set(cflags -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -ffp-contract=off
-      -fno-strict-aliasing -O2 -g -std=gnu99 -Wall -Wextra -ffunction-sections -fdata-sections)
+      -O2 -g -std=gnu99 -Wall -Wextra -ffunction-sections -fdata-sections)
   set(specs --specs=nano.specs)
   if(ARG_STDIO)
     list(APPEND specs --specs=rdimon.specs)
   endif()
-  set(includes -I${PXFLOW_M4_KERNEL_DIR} -I${PXFLOW_M4_BOARD_DIR})
+  set(includes -I${PXFLOW_M4_KERNEL_DIR} -I${PXFLOW_M4_BOARD_DIR} -I${PXFLOW_SPEC_INCLUDE_DIR})
   foreach(dir ${ARG_INCLUDE_DIRS})
     list(APPEND includes -I${dir})
   endforeach()
@@ -74,7 +72,7 @@ function(pxflow_m4_firmware name)
             -T ${PXFLOW_M4_BOARD_DIR}/mps2_an386.ld -Wl,--gc-sections ${ARG_LINK_OPTIONS}
             ${PXFLOW_M4_BOARD_SOURCES} ${PXFLOW_M4_KERNEL_SOURCES} ${sources} -o ${elf}
     DEPENDS ${sources} ${PXFLOW_M4_BOARD_SOURCES} ${PXFLOW_M4_KERNEL_SOURCES}
-            ${PXFLOW_M4_KERNEL_HEADERS} ${PXFLOW_M4_BOARD_DIR}/board.h
+            ${PXFLOW_M4_KERNEL_HEADERS} ${PXFLOW_SPEC_HEADERS} ${PXFLOW_M4_BOARD_DIR}/board.h
             ${PXFLOW_M4_BOARD_DIR}/mps2_an386.ld ${ARG_DEPENDS}
     COMMENT "Cortex-M4 ${name}.elf"
     VERBATIM)

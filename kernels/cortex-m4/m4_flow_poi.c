@@ -10,8 +10,8 @@
 #include "m4_simd.h"
 
 /* Half-pixel step (sx, sy) of direction k (SPEC §3's table); k = 8 is the integer match. */
-static const int8_t kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
-static const int8_t kStepY[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+static const int8_t kStepX[PXFLOW_DIRECTIONS + 1] = PXFLOW_STEP_X_TABLE;
+static const int8_t kStepY[PXFLOW_DIRECTIONS + 1] = PXFLOW_STEP_Y_TABLE;
 
 /* Four pixels of a column packed into a word, as the firmware's col1..col4 (its byte order is the
  * reverse; lanes are independent, so the SAD is the same). */
@@ -47,7 +47,7 @@ static uint32_t sad_8x8(const uint8_t *a, const uint8_t *b, uint32_t w) {
  * keeps the first candidate in raster order. */
 static uint32_t integer_search(const uint8_t *blk, const uint8_t *next, uint32_t x, uint32_t y,
                                uint32_t w, int s, int *bx, int *by) {
-  uint32_t best = 0xFFFFFFFFu;
+  uint32_t best = PXFLOW_SAD_SENTINEL;
   *bx = *by = 0;
   for (int dy = -s; dy <= s; ++dy) {
     const uint8_t *row = next + (size_t)((int)y + dy) * w + x;
@@ -105,14 +105,14 @@ static void subpixel(const uint8_t *blk, const uint8_t *m, uint32_t w, uint32_t 
   }
 }
 
-void m4_flow_poi(const m4_flow_params *p, const uint8_t *prev, const uint8_t *next, uint32_t x,
-                 uint32_t y, m4_flow_record *rec) {
+void m4_flow_poi(const pxflow_param_block *p, const uint8_t *prev, const uint8_t *next, uint32_t x,
+                 uint32_t y, pxflow_poi_record *rec) {
   const uint32_t w = p->width;
   const uint8_t *blk = prev + (size_t)y * w + x;
-  m4_flow_record r = {0}; /* SPEC §4: undefined fields and padding are 0 */
+  pxflow_poi_record r = {0}; /* SPEC §4: undefined fields and padding are 0 */
   r.x = (uint16_t)x;
   r.y = (uint16_t)y;
-  r.dir = M4_FLOW_DIR_NONE;
+  r.dir = PXFLOW_DIR_NONE;
   r.feature = (uint16_t)feature(blk, w);
   if (r.feature >= p->feature_threshold) {
     int bx, by;
@@ -120,14 +120,14 @@ void m4_flow_poi(const m4_flow_params *p, const uint8_t *prev, const uint8_t *ne
     r.dx = (int8_t)bx;
     r.dy = (int8_t)by;
     r.sad = (uint16_t)best;
-    r.status = M4_FLOW_REJECTED;
+    r.status = PXFLOW_STATUS_REJECTED;
     if (best < p->sad_threshold) {
       uint32_t acc[8];
       subpixel(blk, next + (size_t)(y + (uint32_t)by) * w + (x + (uint32_t)bx), w, acc);
       /* From (best, dir 8), k = 0..7, strictly smaller replaces: ties keep the lower k and a
        * half step wins only when strictly better than the integer match. */
       uint32_t min = best;
-      uint32_t dir = M4_FLOW_DIR_NONE;
+      uint32_t dir = PXFLOW_DIR_NONE;
       for (uint32_t k = 0; k < 8; ++k) {
         r.sub[k] = (uint16_t)acc[k];
         if (acc[k] < min) {
@@ -135,7 +135,7 @@ void m4_flow_poi(const m4_flow_params *p, const uint8_t *prev, const uint8_t *ne
           dir = k;
         }
       }
-      r.status = M4_FLOW_ACCEPTED;
+      r.status = PXFLOW_STATUS_ACCEPTED;
       r.dir = (uint8_t)dir;
       r.hx = (int8_t)(2 * bx + kStepX[dir]);
       r.hy = (int8_t)(2 * by + kStepY[dir]);

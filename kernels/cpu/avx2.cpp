@@ -12,7 +12,7 @@
 namespace pxflow::cpu {
 namespace {
 
-constexpr int kMaxSide = 2 * 31 + 1;
+constexpr int kMaxSide = 2 * kMaxSearchRadius + 1;
 constexpr int kTableStride = 64;
 
 int chunks_of_8(int radius) { return (2 * radius + 1 + 7) / 8; }

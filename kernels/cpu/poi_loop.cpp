@@ -12,8 +12,8 @@
 namespace pxflow::cpu {
 namespace {
 
-constexpr int kMaxWindowSide = 2 * 31 + 10;  // S <= 31 (SPEC §1)
-constexpr int kMaxRowBytes = 128;            // the widest row_bytes() of any kernel, rounded up
+constexpr int kMaxWindowSide = 2 * kMaxSearchRadius + 10;  // SPEC §1
+constexpr int kMaxRowBytes = 128;  // the widest row_bytes() of any kernel, rounded up
 
 // A zero-padded copy of a search window for POIs near the right edge of the frame.
 struct WindowCopy {

@@ -1,5 +1,5 @@
 /* The fast variant's serial parts on core 0 (beyond the paper), replacing the weak defaults of
- * flow_main.c and flow_estimate.c (flow_kernel.h). */
+ * flow_main.c (flow_kernel.h). */
 #include "flow_kernel.h"
 #include "flow_simd.h"
 

@@ -1,14 +1,16 @@
 /* The contract between the GAP8 flow kernel (the C files of kernels/gap8, RISC-V) and its host
  * (hosts/gap8/, C++): the parameter block the host writes into L2 before the run, the per-pair
  * result block and record layout the kernel writes back to L2, and the L1 budget both sides
- * compute the same way. Plain C so that both compilers read the same definitions. */
+ * compute the same way. Plain C so that both compilers read the same definitions; the record, the
+ * parameter block, the codes and the estimate are the spec core's (spec/README.md). */
 #ifndef PXFLOW_GAP8_FLOW_ABI_H
 #define PXFLOW_GAP8_FLOW_ABI_H
 
 #include <stdint.h>
 
+#include "pxflow_spec/spec.h"
+
 #define PXFLOW_GAP8_MAGIC 0x70784738u /* "pxG8": the host really wrote the block */
-#define PXFLOW_GAP8_MAX_BINS 127u     /* 2*(2S+1)+1 for S = 31 */
 
 /* Kernel exit status (main's return value) besides 0. */
 #define PXFLOW_GAP8_BAD_PARAMS 10
@@ -21,20 +23,18 @@
 
 typedef struct {
   uint32_t magic;
-  uint32_t width, height, search_radius, blocks;
-  uint32_t feature_threshold, sad_threshold, hist_filter, min_count;
-  uint32_t pairs;      /* frame pairs in this run */
-  uint32_t cores;      /* team size of the flow phase, 1..8 */
-  uint32_t split;      /* PXFLOW_GAP8_SPLIT_* */
-  uint32_t frames_l2;  /* pair p: prev at frames_l2 + 2*p*W*H, next W*H bytes later */
-  uint32_t records_l2; /* pair p: its POI records at records_l2 + p*pois*32 */
-  uint32_t results_l2; /* pair p: pxflow_gap8_result at results_l2 + p*sizeof(result) */
+  pxflow_param_block spec; /* SPEC §1 */
+  uint32_t pairs;          /* frame pairs in this run */
+  uint32_t cores;          /* team size of the flow phase, 1..8 */
+  uint32_t split;          /* PXFLOW_GAP8_SPLIT_* */
+  uint32_t frames_l2;      /* pair p: prev at frames_l2 + 2*p*W*H, next W*H bytes later */
+  uint32_t records_l2;     /* pair p: its POI records at records_l2 + p*pois*32 */
+  uint32_t results_l2;     /* pair p: pxflow_gap8_result at results_l2 + p*sizeof(result) */
 } pxflow_gap8_params;
 
 /* The kernel's own frame estimate (soft-float on core 0) and its cycle breakdown, per pair. */
 typedef struct {
-  float flow_x, flow_y;
-  int32_t quality, meancount;
+  pxflow_estimate estimate;
   uint32_t pois;
   uint32_t cycles_init;      /* grid and result clearing, while the DMA runs */
   uint32_t cycles_dma;       /* from the DMA start until both frames are in L1 */
@@ -44,23 +44,6 @@ typedef struct {
   uint32_t cycles_total;
   uint32_t reserved;
 } pxflow_gap8_result;
-
-/* A record's status (SPEC §4; reference/record.hpp's PoiStatus, which the host asserts equal). */
-#define PXFLOW_GAP8_DROPPED 0u  /* feature < FT */
-#define PXFLOW_GAP8_REJECTED 1u /* best integer SAD >= VT */
-#define PXFLOW_GAP8_ACCEPTED 2u
-
-/* SPEC §4's 32-byte record, little-endian on both sides. */
-typedef struct {
-  uint16_t x, y;
-  uint8_t status, pad0;
-  uint16_t feature;
-  int8_t dx, dy;
-  uint16_t sad;
-  uint8_t dir, pad1;
-  uint16_t sub[8];
-  int8_t hx, hy;
-} pxflow_gap8_record;
 
 /* One frame (or half-pixel plane) in L1: W*H bytes plus one row and a word of slack, because the
  * word-wide interpolations read up to one row and three bytes past the cells they need (the
@@ -74,7 +57,7 @@ static inline uint32_t pxflow_gap8_frame_l1_bytes(uint32_t w, uint32_t h) {
 static inline uint32_t pxflow_gap8_l1_bytes(uint32_t w, uint32_t h, uint32_t pois,
                                             uint32_t planes) {
   return (2u + planes) * pxflow_gap8_frame_l1_bytes(w, h) + ((pois * 4u + 7u) & ~7u) +
-         pois * (uint32_t)sizeof(pxflow_gap8_record);
+         pois * PXFLOW_RECORD_BYTES;
 }
 
 #endif

@@ -1,6 +1,5 @@
 /* What the parts of the GAP8 flow kernel share: the run's context in L1 and the per-variant
- * hooks. One ELF per variant links flow_main.c, flow_poi.c, flow_estimate.c and one
- * half_<variant>.c. */
+ * hooks. One ELF per variant links flow_main.c, flow_poi.c and one half_<variant>.c. */
 #ifndef PXFLOW_GAP8_FLOW_KERNEL_H
 #define PXFLOW_GAP8_FLOW_KERNEL_H
 
@@ -13,10 +12,10 @@ typedef struct {
   uint32_t feature_threshold, sad_threshold;
   uint32_t cores, split;
   uint32_t pois;
-  const uint8_t *prev, *next;  /* L1 */
-  uint8_t *planes[3];          /* L1: h, g, d of the whole next frame (global variant only) */
-  const uint16_t *poi_xy;      /* L1: x, y of each POI in grid order */
-  pxflow_gap8_record *records; /* L1 */
+  const uint8_t *prev, *next; /* L1 */
+  uint8_t *planes[3];         /* L1: h, g, d of the whole next frame (global variant only) */
+  const uint16_t *poi_xy;     /* L1: x, y of each POI in grid order */
+  pxflow_poi_record *records; /* L1 */
 } flow_ctx;
 
 /* Number of full-frame planes the variant keeps in L1 (3 for global, else 0). */
@@ -39,15 +38,11 @@ uint32_t flow_integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, 
 /* The team's entry point: every POI of this core, as flow_poi.c computes it. */
 void flow_team_entry(void *ctx);
 
-/* Hooks with a plain default (weak, in flow_main.c and flow_estimate.c) that the fast variant
+/* Hooks with a plain default (weak, in flow_main.c) that the fast variant
  * replaces: clearing `bytes` (a multiple of 4) of words, and HF's V / Wt over bins lo..hi
  * (SPEC §5: accumulated in float, but exact, so integer sums converted once give the same
  * bits). */
 void flow_clear_words(void *dst, uint32_t bytes);
 float flow_window_mean(const uint16_t *hist, int lo, int hi);
-
-/* Histograms and the frame estimate of SPEC §5 (HF on or off; no gyro), soft-float. */
-void flow_estimate(const pxflow_gap8_record *records, uint32_t pois, const pxflow_gap8_params *p,
-                   pxflow_gap8_result *out);
 
 #endif

@@ -11,26 +11,12 @@ volatile pxflow_gap8_params pxflow_params __attribute__((section(".data"))) = {0
 
 static uint32_t cycles_now(void) { return pi_perf_read(PI_PERF_CYCLES); }
 
-/* Grid per axis (SPEC §2): lo = S+1, hi = side-(S+1)-8, step = (hi-lo)/B + 1, values < hi. */
-typedef struct {
-  int lo, step;
-  uint32_t count;
-} grid_axis;
-
-static grid_axis make_axis(uint32_t side, const pxflow_gap8_params *p) {
-  grid_axis a;
-  a.lo = (int)p->search_radius + 1;
-  const int hi = (int)side - a.lo - 8;
-  a.step = (hi - a.lo) / (int)p->blocks + 1;
-  a.count = hi > a.lo ? (uint32_t)((hi - a.lo + a.step - 1) / a.step) : 0;
-  return a;
-}
-
-/* Writes the x, y pairs of every POI in record order (y outer, x inner). */
-static void build_grid(const pxflow_gap8_params *p, uint16_t *xy) {
-  const grid_axis ax = make_axis(p->width, p), ay = make_axis(p->height, p);
-  for (uint32_t j = 0, y = ay.lo; j < ay.count; ++j, y += ay.step) {
-    for (uint32_t i = 0, x = ax.lo; i < ax.count; ++i, x += ax.step) {
+/* Writes the x, y pairs of every POI in record order (y outer, x inner): SPEC §2's grid. */
+static void build_grid(const pxflow_param_block *p, uint16_t *xy) {
+  const pxflow_grid_axis ax = pxflow_grid_axis_of(p->width, p->search_radius, p->blocks);
+  const pxflow_grid_axis ay = pxflow_grid_axis_of(p->height, p->search_radius, p->blocks);
+  for (uint32_t j = 0, y = ay.first; j < ay.count; ++j, y += ay.step) {
+    for (uint32_t i = 0, x = ax.first; i < ax.count; ++i, x += ax.step) {
       *xy++ = (uint16_t)x;
       *xy++ = (uint16_t)y;
     }
@@ -43,16 +29,31 @@ __attribute__((weak)) void flow_clear_words(void *dst, uint32_t bytes) {
   for (uint32_t n = 0; n < bytes / 4; ++n) w[n] = 0;
 }
 
+/* Weak: the fast variant sums HF's window in integers and converts once (flow_kernel.h). */
+__attribute__((weak)) float flow_window_mean(const uint16_t *hist, int lo, int hi) {
+  return pxflow_window_mean_float(hist, lo, hi);
+}
+
+/* SPEC §5 on core 0 after the join (the spec core's estimate). The cores have no FPU: every float
+ * operation is a libgcc soft-float call, correctly rounded, so the bits match the host's
+ * estimate_flow (both built with -ffp-contract=off). Not inlined: its cycles are the
+ * "averaging" phase, one call as before. */
+static __attribute__((noinline)) void flow_estimate(const pxflow_poi_record *records, uint32_t pois,
+                                                    const pxflow_gap8_params *p,
+                                                    pxflow_gap8_result *out) {
+  pxflow_estimate_flow(records, pois, &p->spec, flow_window_mean, &out->estimate);
+}
+
 static void run_pair(const pxflow_gap8_params *p, flow_ctx *c, uint32_t pair) {
-  const uint32_t frame = p->width * p->height;
-  const uint32_t rec_bytes = c->pois * (uint32_t)sizeof(pxflow_gap8_record);
+  const uint32_t frame = p->spec.width * p->spec.height;
+  const uint32_t rec_bytes = c->pois * PXFLOW_RECORD_BYTES;
   pxflow_gap8_result r = {0};
   const uint32_t t0 = cycles_now();
   pi_cl_dma_cmd_t prev_cmd, next_cmd, out_cmd;
   const uint32_t src = p->frames_l2 + 2 * pair * frame;
   pi_cl_dma_cmd(src, (uint32_t)c->prev, frame, PI_CL_DMA_DIR_EXT2LOC, &prev_cmd);
   pi_cl_dma_cmd(src + frame, (uint32_t)c->next, frame, PI_CL_DMA_DIR_EXT2LOC, &next_cmd);
-  build_grid(p, (uint16_t *)c->poi_xy);
+  build_grid(&p->spec, (uint16_t *)c->poi_xy);
   flow_clear_words(c->records, rec_bytes);
   const uint32_t t1 = cycles_now();
   pi_cl_dma_cmd_wait(&prev_cmd);
@@ -77,31 +78,31 @@ static void run_pair(const pxflow_gap8_params *p, flow_ctx *c, uint32_t pair) {
 }
 
 static int valid(const pxflow_gap8_params *p) {
-  return p->magic == PXFLOW_GAP8_MAGIC && p->cores >= 1 && p->cores <= 8 && p->blocks >= 1 &&
-         p->search_radius >= 1 && p->search_radius <= 31 && p->width >= 2 * p->search_radius + 10 &&
-         p->height >= 2 * p->search_radius + 10;
+  /* GC may be on: the estimate has no body rates here, and with none the host's is the same. */
+  return p->magic == PXFLOW_GAP8_MAGIC && p->cores >= 1 && p->cores <= 8 &&
+         pxflow_check_params(&p->spec) == PXFLOW_PARAMS_OK;
 }
 
 int main(void) {
   const pxflow_gap8_params p = pxflow_params;
   if (!valid(&p)) return PXFLOW_GAP8_BAD_PARAMS;
   flow_ctx c = {0};
-  c.width = p.width;
-  c.height = p.height;
-  c.search_radius = p.search_radius;
-  c.feature_threshold = p.feature_threshold;
-  c.sad_threshold = p.sad_threshold;
+  c.width = p.spec.width;
+  c.height = p.spec.height;
+  c.search_radius = p.spec.search_radius;
+  c.feature_threshold = p.spec.feature_threshold;
+  c.sad_threshold = p.spec.sad_threshold;
   c.cores = p.cores;
   c.split = p.split;
-  c.pois = make_axis(p.width, &p).count * make_axis(p.height, &p).count;
-  const uint32_t frame = pxflow_gap8_frame_l1_bytes(p.width, p.height);
-  uint8_t *l1 = pi_cl_l1_malloc(0, pxflow_gap8_l1_bytes(p.width, p.height, c.pois, variant_planes));
+  c.pois = pxflow_poi_count(&p.spec);
+  const uint32_t frame = pxflow_gap8_frame_l1_bytes(c.width, c.height);
+  uint8_t *l1 = pi_cl_l1_malloc(0, pxflow_gap8_l1_bytes(c.width, c.height, c.pois, variant_planes));
   if (!l1) return PXFLOW_GAP8_NO_L1;
   c.prev = l1;
   c.next = l1 + frame;
   for (uint32_t k = 0; k < variant_planes; ++k) c.planes[k] = l1 + (2 + k) * frame;
   c.poi_xy = (const uint16_t *)(l1 + (2 + variant_planes) * frame);
-  c.records = (pxflow_gap8_record *)((uint8_t *)c.poi_xy + ((c.pois * 4 + 7) & ~7u));
+  c.records = (pxflow_poi_record *)((uint8_t *)c.poi_xy + ((c.pois * 4 + 7) & ~7u));
   pi_perf_conf(1u << PI_PERF_CYCLES);
   pi_perf_reset();
   pi_perf_start();

@@ -7,8 +7,8 @@
 #include "flow_simd.h"
 
 /* Half-pixel step (sx, sy) of direction k; k = 8 is the integer match. */
-static const int8_t kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
-static const int8_t kStepY[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+static const int8_t kStepX[PXFLOW_DIRECTIONS + 1] = PXFLOW_STEP_X_TABLE;
+static const int8_t kStepY[PXFLOW_DIRECTIONS + 1] = PXFLOW_STEP_Y_TABLE;
 
 /* Four bytes of a column, packed like the firmware's col1..col4 (lanes are independent). */
 static uint32_t column4(const uint8_t *p, uint32_t w) {
@@ -29,8 +29,8 @@ static uint32_t feature(const uint8_t *blk, uint32_t w) {
 }
 
 /* The half-pixel vote from (best, dir 8): k = 0..7 in order, strictly smaller replaces. */
-static void select_direction(pxflow_gap8_record *rec, uint32_t best, const uint32_t sub[8]) {
-  int dir = 8;
+static void select_direction(pxflow_poi_record *rec, uint32_t best, const uint32_t sub[8]) {
+  int dir = PXFLOW_DIR_NONE;
   for (int k = 0; k < 8; ++k) {
     rec->sub[k] = (uint16_t)sub[k];
     if (sub[k] < best) {
@@ -45,25 +45,25 @@ static void select_direction(pxflow_gap8_record *rec, uint32_t best, const uint3
 
 /* Fills the record of POI n; the master cleared it, so undefined fields stay 0. */
 static void flow_poi(const flow_ctx *c, uint32_t n) {
-  pxflow_gap8_record *rec = &c->records[n];
+  pxflow_poi_record *rec = &c->records[n];
   const uint32_t x = c->poi_xy[2 * n], y = c->poi_xy[2 * n + 1];
   const uint32_t w = c->width;
   const uint8_t *blk = c->prev + y * w + x;
   rec->x = (uint16_t)x;
   rec->y = (uint16_t)y;
-  rec->dir = 8;
+  rec->dir = PXFLOW_DIR_NONE;
   rec->feature = (uint16_t)feature(blk, w);
-  if (rec->feature < c->feature_threshold) return; /* PXFLOW_GAP8_DROPPED */
+  if (rec->feature < c->feature_threshold) return; /* PXFLOW_STATUS_DROPPED */
   int bx = 0, by = 0;
   const uint32_t best = flow_integer_search(c, blk, x, y, &bx, &by);
   rec->dx = (int8_t)bx;
   rec->dy = (int8_t)by;
   rec->sad = (uint16_t)best;
   if (best >= c->sad_threshold) {
-    rec->status = PXFLOW_GAP8_REJECTED;
+    rec->status = PXFLOW_STATUS_REJECTED;
     return;
   }
-  rec->status = PXFLOW_GAP8_ACCEPTED;
+  rec->status = PXFLOW_STATUS_ACCEPTED;
   uint32_t sub[8];
   variant_half_sads(c, blk, x + bx, y + by, sub);
   select_direction(rec, best, sub);

@@ -14,11 +14,13 @@
 //
 // Floor averaging everywhere: hadd(), never rhadd() (rhadd rounds up, SPEC sec. 7).
 
+// SPEC's codes and step table are the spec core's (spec/include/pxflow_spec/record.h); this file
+// is compiled at run time from its text, so it spells them, and ctest spec_copies checks them.
 // Half-pixel step (sx, sy) of direction k (SPEC sec. 3 table); k = 8 is the integer match.
 __constant int kStepX[9] = {1, 1, 0, -1, -1, -1, 0, 1, 0};
 __constant int kStepY[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
 
-// PoiRecord::dir and status values, identical to reference/record.hpp (kDirNone, PoiStatus).
+// PoiRecord::dir and status values (the spec core's PXFLOW_DIR_NONE, PXFLOW_STATUS_*).
 #define DIR_NONE 8u
 #define STATUS_DROPPED 0u
 #define STATUS_REJECTED 1u

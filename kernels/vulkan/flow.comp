@@ -214,7 +214,8 @@ void half_pixel_sads(uint blk[16], uint next, uint n, out uint sub[8]) {
   }
 }
 
-// PoiRecord::status and dir values, identical to reference/record.hpp (PoiStatus, kDirNone).
+// PoiRecord::status and dir values and the step table: the spec core's
+// (spec/include/pxflow_spec/record.h), spelled in GLSL and checked by ctest spec_copies.
 const uint kStatusDropped = 0u;   // feature < FT
 const uint kStatusRejected = 1u;  // best integer SAD >= VT
 const uint kStatusAccepted = 2u;

@@ -7,8 +7,9 @@ src=$1 out=$2
 shift 2
 mkdir -p "$out/corpus"
 flags="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all"
-clang -std=c99 $flags -I"$src/dut/include" -c "$src/dut/src/pxdut_framing.c" -o "$out/framing.o"
-clang++ -std=c++20 $flags -I"$src/dut/include" -I"$src/hosts/dut" -I"$src/reference" \
+clang -std=c99 $flags -I"$src/dut/include" -I"$src/spec/include" -c "$src/dut/src/pxdut_framing.c" -o "$out/framing.o"
+clang++ -std=c++20 $flags -I"$src/dut/include" -I"$src/spec/include" -I"$src/hosts/dut" \
+  -I"$src/hosts/core" -I"$src/reference" \
   "$src/tests/dut/fuzz_dut_wire.cpp" "$src/hosts/dut/dut_wire.cpp" "$out/framing.o" \
   -o "$out/fuzz_dut_wire"
 # One seed, an empty COBS frame; libFuzzer finds delimiters, codes and CRCs from there.

@@ -9,6 +9,7 @@ mkdir -p "$out"
 for f in "$dut"/src/*.c; do
   arm-none-eabi-gcc -std=c99 -pedantic -Wall -Wextra -Werror -ffreestanding -Os -mcpu=cortex-m4 \
     -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -ffp-contract=off -fstack-usage -I"$dut/include" \
+    -I"$dut/../spec/include" \
     -c "$f" -o "$out/$(basename "$f" .c).o"
 done
 arm-none-eabi-size -t "$out"/*.o

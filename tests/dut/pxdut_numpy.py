@@ -45,8 +45,19 @@ RECORDS_REPLY_OVERHEAD = 14
 MAX_PACKET = 16384
 MAX_PIXELS = 1 << 24
 MAX_POIS = 65536
+# SPEC's constants, named as the spec core (spec/include/pxflow_spec) names them without its
+# PXFLOW_ (the ctest spec_copies checks every one against the core).
+STATUS_DROPPED, STATUS_REJECTED, STATUS_ACCEPTED = 0, 1, 2
+DIR_NONE = 8  # the integer match won the half-pixel vote
 STEP_X = (1, 1, 0, -1, -1, -1, 0, 1, 0)  # SPEC §3's half-pixel steps, direction 8 = integer
 STEP_Y = (0, 1, 1, 1, 0, -1, -1, -1, 0)
+TILE = 8
+MIN_RADIUS, MAX_RADIUS = 1, 31
+MIN_BLOCKS, MAX_BLOCKS = 1, 255
+MAX_THRESHOLD = 65535
+MAX_FRAME_SIDE = 16384
+# SPEC §4's record: x, y, status, pad, feature, dx, dy, sad, dir, pad, sub[8], hx, hy.
+RECORD_FORMAT = "<HHBBHbbHBB8Hbb"
 
 
 def cobs_encode(data: bytes) -> bytes:
@@ -85,7 +96,7 @@ def frame(msg_type: int, seq: int, body: bytes) -> bytes:
 
 
 def grid_axis(side, s, b):
-    lo, hi = s + 1, side - (s + 1) - 8
+    lo, hi = s + 1, side - (s + 1) - TILE
     if hi <= lo:
         return []
     step = (hi - lo) // b + 1
@@ -114,7 +125,7 @@ def record(prev, nxt, x, y, q):
     s = q["S"]
     feat = feature(prev, x, y)
     if feat < q["FT"]:
-        return (x, y, 0, feat, 0, 0, 0, 8, [0] * 8, 0, 0)
+        return (x, y, STATUS_DROPPED, feat, 0, 0, 0, DIR_NONE, [0] * 8, 0, 0)
     block = prev[y:y + 8, x:x + 8]
     window = nxt[y - s:y + s + 8, x - s:x + s + 8]
     sads = np.abs(sliding_window_view(window, (8, 8)) - block).sum(axis=(2, 3))
@@ -122,27 +133,26 @@ def record(prev, nxt, x, y, q):
     by, bx = first // (2 * s + 1) - s, first % (2 * s + 1) - s
     best = int(sads.flat[first])
     if best >= q["VT"]:
-        return (x, y, 1, feat, bx, by, best, 8, [0] * 8, 0, 0)
+        return (x, y, STATUS_REJECTED, feat, bx, by, best, DIR_NONE, [0] * 8, 0, 0)
     sub = half_sads(block, nxt, x + bx, y + by)
-    direction, least = 8, best
+    direction, least = DIR_NONE, best
     for k in range(8):
         if sub[k] < least:  # strictly better only: ties keep the lower k, and the integer match
             direction, least = k, sub[k]
-    return (x, y, 2, feat, bx, by, best, direction, sub, 2 * bx + STEP_X[direction],
+    return (x, y, STATUS_ACCEPTED, feat, bx, by, best, direction, sub, 2 * bx + STEP_X[direction],
             2 * by + STEP_Y[direction])
 
 
 def pack_record(r):
     x, y, status, feat, dx, dy, sad, direction, sub, hx, hy = r
-    return struct.pack("<HHBBHbbHBB8Hbb", x, y, status, 0, feat, dx, dy, sad, direction, 0, *sub,
-                       hx, hy)
+    return struct.pack(RECORD_FORMAT, x, y, status, 0, feat, dx, dy, sad, direction, 0, *sub, hx, hy)
 
 
 def estimate(records, q):
     """SPEC §5 in float32, one numpy float32 operation per firmware float operation."""
     s, f32 = q["S"], np.float32
     nbins = 2 * (2 * s + 1) + 1
-    accepted = [r for r in records if r[2] == 2]
+    accepted = [r for r in records if r[2] == STATUS_ACCEPTED]
     count = len(accepted)
     if count <= q["MINCOUNT"]:
         return f32(0), f32(0), 0, count
@@ -220,8 +230,10 @@ class Device:
         if len(body) != PARAMS_BODY:
             return self.error(seq, ERR_BAD_MESSAGE, "PARAMS body is 10 x u32")
         w, h, s, t, b, ft, vt, hf, mc, gc = struct.unpack("<10I", body)
-        if t != 8 or gc != 0 or not 1 <= s <= 31 or not 1 <= b <= 255:
-            return self.error(seq, ERR_BAD_PARAMS, "T must be 8, GC 0, S 1..31, B 1..255")
+        if (t != TILE or gc != 0 or not MIN_RADIUS <= s <= MAX_RADIUS
+                or not MIN_BLOCKS <= b <= MAX_BLOCKS or hf > 1
+                or max(ft, vt, mc) > MAX_THRESHOLD or max(w, h) > MAX_FRAME_SIDE):
+            return self.error(seq, ERR_BAD_PARAMS, "a parameter is outside SPEC's limits")
         nx, ny = grid_axis(w, s, b), grid_axis(h, s, b)
         if not nx or not ny:
             return self.error(seq, ERR_BAD_PARAMS, "the grid does not fit the frame")

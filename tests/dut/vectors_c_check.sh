@@ -14,7 +14,7 @@ for f in pxflow_vectors.c pxflow_vectors_check.c; do
       -mcpu=cortex-m4 -mthumb -c "$out/$f" -o "$out/$f.m4.o"
   fi
 done
-cc -std=c99 -ffp-contract=off -I"$out" -I"$src/dut/include" "$src/tests/dut/vectors_main.c" \
+cc -std=c99 -ffp-contract=off -I"$out" -I"$src/dut/include" -I"$src/spec/include" "$src/tests/dut/vectors_main.c" \
   "$out/pxflow_vectors.c" "$out/pxflow_vectors_check.c" "$src/dut/src/pxdut_kernel.c" \
   "$src/dut/src/pxdut_grid.c" -o "$out/vectors_test"
 "$out/vectors_test"

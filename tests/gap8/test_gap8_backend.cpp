@@ -105,7 +105,7 @@ TEST_CASE("gap8 known answer: texture shifted by (+2, -1)", "[gap8][no-sanitizer
   std::vector<PoiRecord> got = sentinel_records(poi_count(p));
   OpCounts counts;
   backend.run({&view, 1}, p, got, counts);
-  const pxflow_gap8_result& r = backend.last_stats().pairs.at(0);
+  const pxflow_estimate& r = backend.last_stats().pairs.at(0).estimate;
   CHECK(r.flow_x == 2.0f);
   CHECK(r.flow_y == -1.0f);
   CHECK(r.quality == 255);

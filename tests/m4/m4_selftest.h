@@ -10,7 +10,7 @@
 /* One generated case (m4_vectors.h, written by m4_vectors_gen.cpp from the host reference). */
 typedef struct {
   const char *name;
-  m4_flow_params params;
+  pxflow_param_block params;
   uint32_t pixels;  /* offset of prev in m4_vec_pixels; next follows it */
   uint32_t records; /* index of its first record in m4_vec_records (32 bytes each) */
   uint32_t pois;

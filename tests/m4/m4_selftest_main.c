@@ -15,9 +15,7 @@
 extern void initialise_monitor_handles(void); /* newlib's rdimon: semihosted stdio */
 
 #define MAX_POIS 1024u
-static m4_flow_record records[MAX_POIS];
-
-typedef char record_layouts_agree[sizeof(pxdut_record) == sizeof(m4_flow_record) ? 1 : -1];
+static pxflow_poi_record records[MAX_POIS];
 
 static uint32_t float_bits(float f) {
   uint32_t u;
@@ -28,33 +26,26 @@ static uint32_t float_bits(float f) {
 static int check_case(const m4_vec_case *c) {
   const uint8_t *prev = m4_vec_pixels + c->pixels;
   const uint8_t *next = prev + c->params.width * c->params.height;
-  if (m4_flow_check(&c->params) != M4_FLOW_OK || m4_flow_poi_count(&c->params) != c->pois ||
-      c->pois > MAX_POIS) {
+  if (pxflow_check_params(&c->params) != PXFLOW_PARAMS_OK ||
+      pxflow_poi_count(&c->params) != c->pois || c->pois > MAX_POIS) {
     printf("FAIL %s: parameters or POI count disagree with the host\n", c->name);
     return 1;
   }
   memset(records, 0xA5, sizeof records); /* a sentinel: an unwritten byte shows */
   m4_flow_frame(&c->params, prev, next, records);
-  const uint8_t *want = m4_vec_records + 32u * c->records;
+  const uint8_t *want = m4_vec_records + PXFLOW_RECORD_BYTES * c->records;
   for (uint32_t n = 0; n < c->pois; ++n) {
     const uint8_t *got = (const uint8_t *)&records[n];
-    for (uint32_t b = 0; b < 32; ++b)
-      if (got[b] != want[32 * n + b]) {
+    for (uint32_t b = 0; b < PXFLOW_RECORD_BYTES; ++b)
+      if (got[b] != want[PXFLOW_RECORD_BYTES * n + b]) {
         printf("FAIL %s: record %lu (x=%u y=%u) byte %lu: 0x%02x, host 0x%02x\n", c->name,
                (unsigned long)n, records[n].x, records[n].y, (unsigned long)b, got[b],
-               want[32 * n + b]);
+               want[PXFLOW_RECORD_BYTES * n + b]);
         return 1;
       }
   }
-  const m4_flow_params *q = &c->params;
-  const pxdut_params p = {q->width,         q->height,
-                          q->search_radius, M4_FLOW_TILE,
-                          q->blocks,        q->feature_threshold,
-                          q->sad_threshold, q->hist_filter,
-                          q->min_count,     0u};
   pxdut_estimate r;
-  /* Same layout, 32 bytes (m4_flow.h, pxdut_types.h); built with -fno-strict-aliasing. */
-  pxdut_estimate_flow((const pxdut_record *)records, c->pois, &p, &r);
+  pxdut_estimate_flow(records, c->pois, &c->params, &r); /* the spec core's types on both sides */
   if (float_bits(r.flow_x) != c->flow_x_bits || float_bits(r.flow_y) != c->flow_y_bits ||
       r.quality != c->quality || r.meancount != c->meancount) {
     printf(

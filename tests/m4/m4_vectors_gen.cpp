@@ -90,10 +90,11 @@ int main(int argc, char** argv) {
     const pxflow::FrameResult& r = results[i];
     const std::size_t n = pxflow::poi_count(c.p);
     os << "    {\"" << c.name << "\", {" << c.p.width << ", " << c.p.height << ", "
-       << c.p.search_radius << ", " << c.p.blocks << ", " << c.p.feature_threshold << ", "
-       << c.p.sad_threshold << ", " << (c.p.hist_filter ? 1 : 0) << ", " << c.p.min_count << "}, "
-       << pix << "u, " << recs << "u, " << n << "u, 0x" << std::hex << bits(r.flow_x) << "u, 0x"
-       << bits(r.flow_y) << std::dec << "u, " << r.quality << ", " << r.meancount << "},\n";
+       << c.p.search_radius << ", " << c.p.tile << ", " << c.p.blocks << ", "
+       << c.p.feature_threshold << ", " << c.p.sad_threshold << ", " << (c.p.hist_filter ? 1 : 0)
+       << ", " << c.p.min_count << ", " << (c.p.gyro_comp ? 1 : 0) << "}, " << pix << "u, " << recs
+       << "u, " << n << "u, 0x" << std::hex << bits(r.flow_x) << "u, 0x" << bits(r.flow_y)
+       << std::dec << "u, " << r.quality << ", " << r.meancount << "},\n";
     pix += 2 * c.pair.prev.size();
     recs += n;
   }

@@ -33,7 +33,7 @@ Measure measure(Gap8Variant variant, int cores, const FramePair& pair, const Par
   const OpCounts counts = gap8_counts(variant, records, p, 1);
   m.interpolations = double(counts.interpolations);
   m.sad_ops = double(counts.sad_ops);
-  m.accepted = r.meancount;
+  m.accepted = r.estimate.meancount;
   return m;
 }
 
