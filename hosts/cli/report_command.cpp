@@ -305,9 +305,9 @@ int run_report(const ReportArgs& a) {
     o.backends = split_list(a.backends);
     o.backend_options = a.backend_options();
     // The bench's own default profile and sweeps, so that the recorded command reruns them.
-    const Params base = profile("px4flow-64");
-    o.points =
-        a.quick ? quick_bench_points(base, "px4flow-64") : default_bench_points(base, "px4flow-64");
+    const Params base = profile(kDefaultProfile);
+    o.points = a.quick ? quick_bench_points(base, std::string(kDefaultProfile))
+                       : default_bench_points(base, std::string(kDefaultProfile));
     set_sweep_threads(o.points, a.threads);
     if (a.quick) o.min_seconds = kQuickMinSeconds;
     in.bench_command = a.pxflow("bench") + backends +
