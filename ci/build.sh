@@ -7,7 +7,9 @@ build=${1:-"$root/build"}
 shift || true
 "$root/ci/install-deps.sh"
 # CI and the README commands require every backend family this machine kind has: a missing SDK
-# fails the configure instead of silently dropping a family.
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPXFLOW_REQUIRE_ALL=ON "$@" >/dev/null
+# fails the configure instead of silently dropping a family. A warning fails the build
+# (PXFLOW_WERROR), in the Release and the sanitizer stage alike.
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPXFLOW_REQUIRE_ALL=ON -DPXFLOW_WERROR=ON \
+  "$@" >/dev/null
 # PXFLOW_BUILD_TARGET: build only that target (the main job needs only the CLI, not the tests).
 cmake --build "$build" -j"$(nproc)" ${PXFLOW_BUILD_TARGET:+--target "$PXFLOW_BUILD_TARGET"}

@@ -47,7 +47,8 @@ endfunction()
 # The link closure of `root`: the project's own targets in link order (each before what it
 # links), the imported targets it reaches and plain linker flags. $<LINK_ONLY:...> (a static
 # library's private dependency) is followed like any other link; any other generator expression
-# is refused, so that nothing a consumer needs is silently left out.
+# is refused, so that nothing a consumer needs is silently left out, but $<BUILD_INTERFACE:...>,
+# which the export drops.
 function(_pxflow_link_closure root out_targets out_imported out_flags)
   foreach(list VISITED POSTORDER IMPORTED FLAGS)
     set_property(GLOBAL PROPERTY _PXFLOW_CLOSURE_${list} "")
@@ -79,6 +80,10 @@ function(_pxflow_visit t)
       continue()
     endif()
     string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" item "${item}")
+    # A build-only link (pxflow_build_flags: the warnings, the standard) is not installed.
+    if(item MATCHES "^\\$<BUILD_INTERFACE:[^$]*>$")
+      continue()
+    endif()
     if(item MATCHES "\\$<")
       message(FATAL_ERROR "pxflow install: ${t} links '${item}', a generator expression the "
                           "install rules cannot follow")
@@ -104,10 +109,22 @@ function(_pxflow_visit t)
   set_property(GLOBAL APPEND PROPERTY _PXFLOW_CLOSURE_POSTORDER ${t})
 endfunction()
 
+# The package that provides the imported targets of a namespace, for pxflowConfig.cmake's
+# find_dependency(): one row per namespace the installed libraries may link, never a guess
+# (CUDA::cudart comes from CUDAToolkit, not from a package CUDA). A family whose SDK brings a
+# namespace not listed adds its row with pxflow_imported_package(<namespace> <package>) in its
+# folder; a namespace without a row fails the configure.
+set_property(GLOBAL PROPERTY PXFLOW_IMPORTED_PACKAGES
+             Threads=Threads OpenCL=OpenCL Vulkan=Vulkan CUDA=CUDAToolkit)
+function(pxflow_imported_package namespace package)
+  set_property(GLOBAL APPEND PROPERTY PXFLOW_IMPORTED_PACKAGES ${namespace}=${package})
+endfunction()
+
 # What a consumer's pxflowConfig.cmake runs to recreate an imported target the libraries link:
-# find_dependency(<namespace>) for <namespace>::<name> (Threads, OpenCL, Vulkan, ...), and
-# pkg_check_modules() again for PkgConfig::<prefix> (the module name cached by that call).
+# find_dependency(<package>) for <namespace>::<name> (the table above), and pkg_check_modules()
+# again for PkgConfig::<prefix> (the module name cached by that call).
 function(_pxflow_find_code imported out)
+  get_property(packages GLOBAL PROPERTY PXFLOW_IMPORTED_PACKAGES)
   set(code "")
   foreach(t IN LISTS imported)
     if(t MATCHES "^PkgConfig::(.+)$")
@@ -121,7 +138,19 @@ function(_pxflow_find_code imported out)
                          "${${prefix}_MODULE_NAME})\n"
                          "endif()\n")
     elseif(t MATCHES "^([^:]+)::")
-      string(APPEND code "find_dependency(${CMAKE_MATCH_1})\n")
+      set(namespace ${CMAKE_MATCH_1})
+      set(package "")
+      foreach(row IN LISTS packages)
+        if(row MATCHES "^${namespace}=(.+)$")
+          set(package ${CMAKE_MATCH_1})
+        endif()
+      endforeach()
+      if(NOT package)
+        message(FATAL_ERROR "pxflow install: the libraries link ${t}, and no package is known "
+                            "for ${namespace}:: (add pxflow_imported_package(${namespace} "
+                            "<package>) where it is found)")
+      endif()
+      string(APPEND code "find_dependency(${package})\n")
     else()
       message(FATAL_ERROR "pxflow install: the libraries link the imported target ${t}, whose "
                           "package a consumer could not know; link it as <Package>::<name>")

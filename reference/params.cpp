@@ -15,7 +15,7 @@ struct NamedProfile {
 // SPEC §1. px4flow-64 is the ISCAS 2022 configuration; px4flow-head is today's firmware.
 const std::vector<NamedProfile>& profiles() {
   static const std::vector<NamedProfile> table = {
-      {"px4flow-64", Params{}},
+      {kDefaultProfile.data(), Params{}},
       {"px4flow-head",
        [] {
          Params p;

@@ -37,6 +37,10 @@ inline constexpr int kMaxThreshold = 65535;
 inline constexpr int kMaxFrameSide = 16384;
 inline constexpr std::int64_t kMaxFramePixels = std::int64_t{1} << 26;  // 64 Mpx
 
+// The default profile (the ISCAS 2022 configuration): --profile's default, the first of
+// profile_names(), and the problem the hosts' studies and reports are about.
+inline constexpr std::string_view kDefaultProfile = "px4flow-64";
+
 // Names of the built-in profiles, default first.
 const std::vector<std::string>& profile_names();
 

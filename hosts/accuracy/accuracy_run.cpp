@@ -160,7 +160,7 @@ std::vector<std::pair<std::string, Params>> problems(const AccuracyOptions& o) {
                          " S=" + std::to_string(p.search_radius) + " B=" + std::to_string(p.blocks),
                      p};
   };
-  std::vector<std::pair<std::string, Params>> out{named(profile("px4flow-64")),
+  std::vector<std::pair<std::string, Params>> out{named(profile(kDefaultProfile)),
                                                   named(check_settings()[2].second)};
   if (o.video_pairs > 0)
     for (const char* video : kVideos) {
@@ -174,7 +174,7 @@ std::vector<std::pair<std::string, Params>> problems(const AccuracyOptions& o) {
 }  // namespace
 
 Params video_setting(int width, int height) {
-  Params p = profile("px4flow-64");
+  Params p = profile(kDefaultProfile);
   p.width = width, p.height = height;
   p.search_radius = 7, p.blocks = 32;  // the full-size setting of pxflow check's real frames
   validate(p);
@@ -203,8 +203,8 @@ AccuracyReport run_accuracy(const AccuracyOptions& o) {
     for (auto& s : sets) r.sets.push_back(std::move(s));
   };
   const auto camera = make_truth_pairs(images, Geometry::kCamera64, o.pairs, o.seed * 100000);
-  add(truth_sets("synthetic, camera 64x64 (4x4 binned)", "px4flow-64", profile("px4flow-64"),
-                 camera, o));
+  add(truth_sets("synthetic, camera 64x64 (4x4 binned)", std::string(kDefaultProfile),
+                 profile(kDefaultProfile), camera, o));
   const auto [window_setting, window_params] = check_settings()[2];  // 320x240 S=7 B=16
   const auto window = make_truth_pairs(images, Geometry::kWindow320, std::max(1, o.pairs / 4),
                                        o.seed * 100000 + 50000);

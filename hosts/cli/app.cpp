@@ -13,6 +13,7 @@
 #include "output_plan.hpp"
 #include "parse_errors.hpp"
 #include "pxflow_app.hpp"
+#include "pxflow_version.h"
 #include "registry.hpp"
 
 namespace pxflow {

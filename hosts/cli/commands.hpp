@@ -31,7 +31,7 @@ Command add_accuracy_command(CLI::App& app);
 
 // Options that describe the problem, shared by every command that runs kernels.
 struct ProblemOptions {
-  std::string profile = "px4flow-64";
+  std::string profile{kDefaultProfile};
   std::vector<std::string> sets;  // KEY=VALUE
 
   void add_to(CLI::App& app);

@@ -321,9 +321,9 @@ void add_bench(ReportInputs& in, const ReportArgs& a) {
   BenchOptions o;
   o.backends = split_list(a.backends);
   o.backend_options = a.backend_options();
-  const Params base = profile("px4flow-64");
-  o.points =
-      a.quick ? quick_bench_points(base, "px4flow-64") : default_bench_points(base, "px4flow-64");
+  const Params base = profile(kDefaultProfile);
+  o.points = a.quick ? quick_bench_points(base, std::string(kDefaultProfile))
+                     : default_bench_points(base, std::string(kDefaultProfile));
   set_sweep_threads(o.points, a.threads);
   if (a.quick) o.min_seconds = kQuickMinSeconds;
   in.bench_command = a.pxflow("bench") + backends_flag(a) +

@@ -7,6 +7,7 @@
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "grid.hpp"
+#include "pxflow_version.h"
 
 namespace pxflow {
 namespace {

@@ -10,7 +10,8 @@ namespace {
 
 BackendRow gap8_row(const Gap8VariantInfo& v) {
   return {std::string("gap8-") + v.name,
-          "nothing (the GAP8 cluster cycle model is built in; 8 cores, 50 MHz)",
+          "nothing (the GAP8 cluster cycle model is built in; 8 cores, " +
+              std::to_string(static_cast<int>(kGap8ClockHz / 1e6)) + " MHz)",
           [name = v.name]() -> std::string {
             return gap8_kernel_elf(name).empty() ? "no embedded GAP8 kernel ELF" : "";
           },

@@ -146,7 +146,7 @@ std::vector<std::pair<std::string, Params>> check_settings() {
     p.width = w, p.height = h, p.search_radius = S, p.blocks = B;
     return p;
   };
-  return {{"px4flow-64", profile("px4flow-64")},
+  return {{std::string(kDefaultProfile), profile(kDefaultProfile)},
           {"px4flow-head", profile("px4flow-head")},
           {"320x240 S=7 B=16", big(320, 240, 7, 16)},
           {"640x480 S=6 B=32 HF off", [&] {
@@ -185,14 +185,15 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o) {
   if (!o.real) return cases;
 
   const auto reals = real_pairs(o);
-  CheckCase binned64{"real/camera-64x64", "px4flow-64", profile("px4flow-64"), {}};
+  CheckCase binned64{
+      "real/camera-64x64", std::string(kDefaultProfile), profile(kDefaultProfile), {}};
   CheckCase binned_head{"real/camera-64x64", "px4flow-head", profile("px4flow-head"), {}};
   for (const auto& [name, fr] : reals) {
     const Frame a = px4flow_camera(fr.first), b = px4flow_camera(fr.second);
     binned64.pairs.push_back(owned("real/" + name + "/camera-64x64", a, b));
     binned_head.pairs.push_back(owned("real/" + name + "/camera-64x64", a, b));
     // Full size, one case each (frames differ in size): the profile's B and a dense grid.
-    Params dense = sized(profile("px4flow-64"), fr.first.width, fr.first.height);
+    Params dense = sized(profile(kDefaultProfile), fr.first.width, fr.first.height);
     cases.push_back(
         {"real/full-size",
          "px4flow-64 " + std::to_string(dense.width) + "x" + std::to_string(dense.height),
@@ -210,7 +211,7 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o) {
   // Known motion with OpenCV on the camera-like 64x64 frame and on a 320x240 window.
   const Frame src = reals.front().second.first;
   const Frame base64 = px4flow_camera(src), base320 = crop(src, 0, 0, 320, 240);
-  CheckCase s64{"synthetic/64x64", "px4flow-64", profile("px4flow-64"), {}};
+  CheckCase s64{"synthetic/64x64", std::string(kDefaultProfile), profile(kDefaultProfile), {}};
   CheckCase s64h{"synthetic/64x64", "px4flow-head", profile("px4flow-head"), {}};
   CheckCase s320{"synthetic/320x240", settings[2].first, settings[2].second, {}};
   std::uint64_t seed = o.seed;

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <thread>
 
+#include "pxflow_version.h"
+
 namespace pxflow {
 namespace {
 

@@ -1,5 +1,7 @@
 #include "json_document.hpp"
 
+#include "pxflow_version.h"
+
 namespace pxflow {
 
 BuildIdentity build_identity() { return {PXFLOW_VERSION, PXFLOW_COMMIT}; }

@@ -60,7 +60,7 @@ void barrier_to_host(VkCommandBuffer cmd) {
 
 VulkanBackend::VulkanBackend(const VulkanConfig& config) : config_(config) {
   ctx_ = std::make_unique<vk::Context>(vk::ContextOptions{config.device, config.validation});
-  pipeline_for(profile("px4flow-64").search_radius);  // a broken pipeline fails create() early
+  pipeline_for(profile(kDefaultProfile).search_radius);  // a broken pipeline fails create() early
   runner_ = std::make_unique<vk::CommandRunner>(*ctx_);
   fail_on_validation_messages();
 }

@@ -1,5 +1,5 @@
 # pxflow_m4_firmware(<name> SOURCES <files...> [INCLUDE_DIRS ...] [DEFINITIONS ...]
-#                    [LINK_OPTIONS ...] [STDIO])
+#                    [COMPILE_OPTIONS ...] [LINK_OPTIONS ...] [STDIO])
 # Builds <name>.elf for QEMU's mps2-an386 (Cortex-M4F) with Debian's arm-none-eabi-gcc: the
 # board's start-up code, link (UART or semihosting), SysTick and semihosted exit
 # (boards/mps2-an386), newlib-nano for memcpy/memset, and with STDIO newlib's rdimon (semihosted
@@ -41,7 +41,8 @@ set(PXFLOW_M4_BOARD_SOURCES ${PXFLOW_M4_BOARD_DIR}/startup.c ${PXFLOW_M4_BOARD_D
     ${PXFLOW_M4_BOARD_DIR}/systick.c)
 
 function(pxflow_m4_firmware name)
-  cmake_parse_arguments(ARG "STDIO" "" "SOURCES;INCLUDE_DIRS;DEFINITIONS;DEPENDS;LINK_OPTIONS" ${ARGN})
+  cmake_parse_arguments(ARG "STDIO" "" "SOURCES;INCLUDE_DIRS;DEFINITIONS;COMPILE_OPTIONS;DEPENDS;LINK_OPTIONS"
+                        ${ARGN})
   if(NOT PXFLOW_M4_HAVE_TOOLCHAIN)
     return()
   endif()
@@ -68,7 +69,7 @@ function(pxflow_m4_firmware name)
   set(elf ${CMAKE_CURRENT_BINARY_DIR}/${name}.elf)
   add_custom_command(
     OUTPUT ${elf}
-    COMMAND ${PXFLOW_M4_CC} ${cflags} ${defs} ${includes} ${specs} -nostartfiles
+    COMMAND ${PXFLOW_M4_CC} ${cflags} ${ARG_COMPILE_OPTIONS} ${defs} ${includes} ${specs} -nostartfiles
             -T ${PXFLOW_M4_BOARD_DIR}/mps2_an386.ld -Wl,--gc-sections ${ARG_LINK_OPTIONS}
             ${PXFLOW_M4_BOARD_SOURCES} ${PXFLOW_M4_KERNEL_SOURCES} ${sources} -o ${elf}
     DEPENDS ${sources} ${PXFLOW_M4_BOARD_SOURCES} ${PXFLOW_M4_KERNEL_SOURCES}

@@ -3,7 +3,9 @@
 # with tests/install/library_family (one pxflow_backend_family() call whose LINK is a library of
 # its own, an SDK's imported target found in its folder and Threads::Threads found higher up)
 # configures, exports that library, links it from pxflow::core, finds the SDK in
-# pxflowConfig.cmake and names both in pxflow.pc, in link order. Configure only.
+# pxflowConfig.cmake (by the package its folder names for the namespace) and names both in
+# pxflow.pc, in link order, while its include folder and definition stay out of the export.
+# Configure only.
 # Usage: family_install.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 src=$1
@@ -20,13 +22,14 @@ grep -q "pxflow: installed libraries: pxflow_core pxflow_library_family_kernel p
 targets=$(echo "$work"/CMakeFiles/Export/*/pxflowTargets.cmake)
 grep -q "add_library(pxflow::library_family_kernel STATIC IMPORTED)" "$targets" \
   || fail "pxflowTargets.cmake does not export the family's library"
-grep -A4 "set_target_properties(pxflow::core PROPERTIES" "$targets" \
-  | grep "INTERFACE_LINK_LIBRARIES" | grep -q "pxflow::library_family_kernel;FakeSdk::fake" \
+grep -A4 "set_target_properties(pxflow::core PROPERTIES" "$targets" | grep "INTERFACE_LINK_LIBRARIES" \
+  | grep -qF '\$<LINK_ONLY:pxflow::library_family_kernel>;\$<LINK_ONLY:FakeSdk::fake>' \
   || fail "pxflow::core does not link the family's library and the SDK"
 grep -q "libpxflow_library_family_kernel.a" "$work/cmake_install.cmake" \
   || fail "cmake --install would not copy the family's library"
-grep -qx "find_dependency(FakeSdk)" "$work/pxflow-package/pxflowConfig.cmake" \
+grep -qx "find_dependency(FakeSdkPackage)" "$work/pxflow-package/pxflowConfig.cmake" \
   || fail "pxflowConfig.cmake does not find the SDK"
 grep -q "^Libs: .*-lpxflow_core -lpxflow_library_family_kernel -lpxflow_own_files -lpxflow_reference .*-L/opt/fakesdk/lib -lfakesdk" \
   "$work/pxflow-package/pxflow.pc" || { grep Libs "$work/pxflow-package/pxflow.pc"; fail "pxflow.pc"; }
+"$src/tests/install/exported_interface.sh" "$work"  # the family's folder and definition stay its own
 echo "family install: ok"

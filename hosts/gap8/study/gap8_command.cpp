@@ -107,7 +107,7 @@ int run_gap8(const Gap8Options& o) {
                        "): " + why +
                        "; make the frames smaller with --crop WxH+X+Y (a window) or --bin N (N x N "
                        "pixels averaged) (see pxflow gap8 --help)");
-  options.paper_problem = p == profile("px4flow-64");
+  options.paper_problem = p == profile(kDefaultProfile);
   const FramePair pair{frames.prev.view(), frames.next.view()};
   const gap8_study::Study study = gap8_study::run_study(pair, frames.name, p, options);
   // `--json -` puts the JSON alone on standard output, so that it can be piped.

@@ -58,7 +58,7 @@ std::optional<PaperFigures> paper(Gap8Variant variant, int cores) {
     f.sad_ops = 91520;
     f.phases = Phases{0.8 * k, 1.6 * k, cores == 1 ? r.flow1 : r.flow8, 4.1 * k, 0};
     f.cycles = cores == 1 ? r.cyc1 : r.cyc8;
-    f.fps = 50e6 / *f.cycles;  // the paper's 50 MHz
+    f.fps = kGap8ClockHz / *f.cycles;  // the paper's clock, the model's
     if (cores == 1) f.instructions = r.instr;
     if (cores == 8) {
       f.speedup = r.speedup8;

@@ -67,7 +67,7 @@ void add_gap8_tables(ReportInputs& in) {
   for (const Gap8VariantInfo& v : gap8_variants())
     if (v.in_paper) options.variants.push_back(v.id);
   options.cores = {1, 2, 3, 4, 5, 6, 7, 8};
-  const Params p = profile("px4flow-64");
+  const Params p = profile(kDefaultProfile);
   gap8_study::NamedFrames frames;
   try {
     frames = gap8_study::default_pair(p);

@@ -10,6 +10,7 @@
 #include "grid.hpp"
 #include "kernel.hpp"
 #include "m4qemu_backend.hpp"
+#include "m4qemu_row.hpp"
 #include "registry.hpp"
 #include "synthetic.hpp"
 
@@ -49,7 +50,7 @@ void add_m4_section(ReportInputs& in) {
   section.key = "cortex-m4";
   section.command = "pxflow bench --backends m4-qemu";
   std::cout << "== Cortex-M4 under QEMU (m4-qemu)\n";
-  const Params p = profile("px4flow-64");
+  const Params p = profile(kDefaultProfile);
   OpenedBackend opened = open_backend(find_backend("m4-qemu"), BackendOptions{});
   if (!opened.backend) return section.tables.push_back(not_measured(opened.why_not));
   const OwnedPair pair = all_accepted_pair(p);
@@ -71,8 +72,8 @@ void add_m4_section(ReportInputs& in) {
       "Cortex-M4 (m4-qemu) beside the ISCAS 2022 paper",
       "The Cortex-M4 kernel (kernels/cortex-m4: the firmware's compute_diff, compute_sad_8x8 and "
       "compute_subpixel with USAD8/USADA8/UHADD8, the estimate on the FPU) on QEMU's "
-      "mps2-an386 under -icount shift=3, on " +
-          pair.name +
+      "mps2-an386 under -icount shift=" +
+          std::to_string(m4qemu::kIcountShift) + ", on " + pair.name +
           " (px4flow-64, all 64 POIs accepted), records checked against ref-original first. "
           "QEMU counts instructions, not cycles: the kernel and the frame estimate between two "
           "reads of the firmware's counter, the same count every run to within the counter's tick "

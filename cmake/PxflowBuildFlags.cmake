@@ -1,0 +1,46 @@
+# pxflow_build_flags: the C++ standard, the warnings and the sanitizers of every target the project
+# compiles, as one INTERFACE target. pxflow_link_build_flags() links it to each compiled target
+# of a folder tree once they all exist, so that no target can be left out; it is a build-only
+# link ($<BUILD_INTERFACE:...>), never exported to an installed consumer.
+include_guard(GLOBAL)
+
+option(PXFLOW_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
+option(PXFLOW_WERROR "Treat warnings as errors (CI: ci/build.sh)" OFF)
+
+# Bit-exact floats: no fused multiply-add contraction anywhere (SPEC §5). The list is also what
+# the provenance reports as the flags every file gets (hosts/CMakeLists.txt).
+set(PXFLOW_COMPILE_OPTIONS -Wall -Wextra -ffp-contract=off)
+if(PXFLOW_WERROR)
+  list(APPEND PXFLOW_COMPILE_OPTIONS -Werror)
+endif()
+if(PXFLOW_SANITIZE)
+  list(APPEND PXFLOW_COMPILE_OPTIONS -fsanitize=address,undefined -fno-sanitize-recover=all
+       -fno-omit-frame-pointer)
+endif()
+add_library(pxflow_build_flags INTERFACE)
+target_compile_features(pxflow_build_flags INTERFACE cxx_std_20)
+target_compile_options(pxflow_build_flags INTERFACE ${PXFLOW_COMPILE_OPTIONS})
+if(PXFLOW_SANITIZE)
+  target_link_options(pxflow_build_flags INTERFACE -fsanitize=address,undefined)
+endif()
+
+# Links pxflow_build_flags to every library, module and executable compiled in `dir` and the
+# folders below it (the top folder when none is given; tests/ is added after it, with its own
+# call).
+function(pxflow_link_build_flags)
+  set(dir ${ARGN})
+  if(NOT dir)
+    set(dir ${PROJECT_SOURCE_DIR})
+  endif()
+  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+  foreach(t IN LISTS targets)
+    get_target_property(type ${t} TYPE)
+    if(type MATCHES "^(STATIC_LIBRARY|SHARED_LIBRARY|MODULE_LIBRARY|OBJECT_LIBRARY|EXECUTABLE)$")
+      target_link_libraries(${t} PRIVATE $<BUILD_INTERFACE:pxflow_build_flags>)
+    endif()
+  endforeach()
+  get_property(folders DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+  foreach(folder IN LISTS folders)
+    pxflow_link_build_flags(${folder})
+  endforeach()
+endfunction()
