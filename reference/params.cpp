@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "errors.hpp"
+#include "param_fields.hpp"
 
 namespace pxflow {
 namespace {
@@ -52,10 +53,28 @@ Params profile(std::string_view name) {
                    "' (known: " + joined(profile_names()) + ")");
 }
 
+std::span<const ParamField> param_fields() {
+  static constexpr ParamField kFields[] = {
+      {"width", &Params::width, nullptr},
+      {"height", &Params::height, nullptr},
+      {"search_radius", &Params::search_radius, nullptr},
+      {"tile", &Params::tile, nullptr},
+      {"blocks", &Params::blocks, nullptr},
+      {"feature_threshold", &Params::feature_threshold, nullptr},
+      {"sad_threshold", &Params::sad_threshold, nullptr},
+      {"hist_filter", nullptr, &Params::hist_filter},
+      {"min_count", &Params::min_count, nullptr},
+      {"gyro_comp", nullptr, &Params::gyro_comp},
+  };
+  return kFields;
+}
+
 const std::vector<std::string>& param_keys() {
-  static const std::vector<std::string> keys = {
-      "width",         "height",      "search_radius", "tile",     "blocks", "feature_threshold",
-      "sad_threshold", "hist_filter", "min_count",     "gyro_comp"};
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> v;
+    for (const ParamField& f : param_fields()) v.push_back(f.key);
+    return v;
+  }();
   return keys;
 }
 
@@ -75,31 +94,12 @@ void set_param(Params& p, std::string_view key, std::string_view value) {
   const std::string what = "--set " + std::string(key);
   // Parse with a wide range here; validate() owns the real limits so that profile values and
   // overrides are checked by the same code.
-  auto num = [&] { return parse_int(value, what, INT32_MIN, INT32_MAX); };
-  auto flag = [&] { return parse_int(value, what, 0, 1) != 0; };
-  if (key == "width")
-    p.width = num();
-  else if (key == "height")
-    p.height = num();
-  else if (key == "search_radius")
-    p.search_radius = num();
-  else if (key == "tile")
-    p.tile = num();
-  else if (key == "blocks")
-    p.blocks = num();
-  else if (key == "feature_threshold")
-    p.feature_threshold = num();
-  else if (key == "sad_threshold")
-    p.sad_threshold = num();
-  else if (key == "hist_filter")
-    p.hist_filter = flag();
-  else if (key == "min_count")
-    p.min_count = num();
-  else if (key == "gyro_comp")
-    p.gyro_comp = flag();
-  else
-    throw InputError("unknown parameter '" + std::string(key) +
-                     "' (known: " + joined(param_keys()) + ")");
+  for (const ParamField& f : param_fields())
+    if (key == f.key)
+      return f.set(p, f.number ? parse_int(value, what, INT32_MIN, INT32_MAX)
+                               : parse_int(value, what, 0, 1));
+  throw InputError("unknown parameter '" + std::string(key) + "' (known: " + joined(param_keys()) +
+                   ")");
 }
 
 void validate(const Params& p) {

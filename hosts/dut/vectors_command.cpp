@@ -25,6 +25,7 @@
 #include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
+#include "param_fields.hpp"
 #include "progress.hpp"
 #include "synthetic.hpp"
 
@@ -135,12 +136,8 @@ Json manifest(const Vectors& v, const VectorsArgs& a) {
     j["seed"] = a.seed;
   else
     j["from"] = a.from;
-  Json params;
-  params["width"] = v.p.width, params["height"] = v.p.height;
-  params["search_radius"] = v.p.search_radius, params["tile"] = v.p.tile;
-  params["blocks"] = v.p.blocks, params["feature_threshold"] = v.p.feature_threshold;
-  params["sad_threshold"] = v.p.sad_threshold, params["hist_filter"] = v.p.hist_filter ? 1 : 0;
-  params["min_count"] = v.p.min_count, params["gyro_comp"] = 0;
+  Json params = Json::object();
+  for (const ParamField& f : param_fields()) params[f.key] = f.get(v.p);
   j["params"] = params;
   j["pairs"] = v.pairs.size();
   j["pois_per_pair"] = poi_count(v.p);
@@ -276,10 +273,12 @@ int verify_vectors(const VectorsArgs& a) {
                      "manifest.json: not a version-1 pxflow-vectors manifest");
   Params p;
   const Json& q = m["params"];
-  p.width = q["width"], p.height = q["height"], p.search_radius = q["search_radius"];
-  p.blocks = q["blocks"], p.feature_threshold = q["feature_threshold"];
-  p.sad_threshold = q["sad_threshold"], p.hist_filter = q["hist_filter"] == 1;
-  p.min_count = q["min_count"];
+  for (const ParamField& f : param_fields()) {
+    if (!q.contains(f.key) || !q[f.key].is_number_integer())
+      throw InputError("vectors verify: " + dir + "manifest.json: params." + f.key +
+                       " is missing or not an integer");
+    f.set(p, q[f.key].get<int>());
+  }
   validate(p);
   const std::size_t pairs = m["pairs"], per = poi_count(p);
   const std::string want_bytes = read_file(dir + "records.bin", "vectors verify");

@@ -3,6 +3,8 @@
 #include <bit>
 #include <cstdio>
 
+#include "param_fields.hpp"
+
 namespace pxflow {
 
 std::string float_bits_hex(float f) {
@@ -20,16 +22,9 @@ Json record_json(const PoiRecord& r) {
 }
 
 Json params_json(const Params& p) {
-  return Json{{"width", p.width},
-              {"height", p.height},
-              {"search_radius", p.search_radius},
-              {"tile", p.tile},
-              {"blocks", p.blocks},
-              {"feature_threshold", p.feature_threshold},
-              {"sad_threshold", p.sad_threshold},
-              {"hist_filter", p.hist_filter ? 1 : 0},
-              {"min_count", p.min_count},
-              {"gyro_comp", p.gyro_comp ? 1 : 0}};
+  Json j = Json::object();
+  for (const ParamField& f : param_fields()) j[f.key] = f.get(p);
+  return j;
 }
 
 Json flow_result_json(const FrameResult& result, std::span<const PoiRecord> records,

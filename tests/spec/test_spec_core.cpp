@@ -12,6 +12,7 @@
 #include "errors.hpp"
 #include "estimate.hpp"
 #include "grid.hpp"
+#include "param_fields.hpp"
 #include "params.hpp"
 #include "pxflow_spec/spec.h"
 #include "spec_params.hpp"
@@ -120,5 +121,24 @@ TEST_CASE("spec core: the estimate's bits are the reference's on random record s
     REQUIRE(std::bit_cast<std::uint32_t>(got.flow_y) == std::bit_cast<std::uint32_t>(want.flow_y));
     REQUIRE(got.quality == want.quality);
     REQUIRE(got.meancount == want.meancount);
+  }
+}
+
+TEST_CASE("spec core: the C++ key table is the parameter block's order", "[spec]") {
+  // Each field set to its own index + 100 in turn: the block's field at the table's position,
+  // and only that one, carries it (flags carry 1).
+  STATIC_REQUIRE(sizeof(pxflow_param_block) == PXFLOW_PARAM_FIELDS * sizeof(std::uint32_t));
+  REQUIRE(param_fields().size() == PXFLOW_PARAM_FIELDS);
+  for (std::size_t i = 0; i < param_fields().size(); ++i) {
+    INFO("key " << param_fields()[i].key);
+    Params p;
+    const Params base = p;
+    param_fields()[i].set(p, param_fields()[i].number ? int(i) + 100 : !param_fields()[i].get(p));
+    const pxflow_param_block q = spec_params(p), b = spec_params(base);
+    std::uint32_t got[PXFLOW_PARAM_FIELDS], was[PXFLOW_PARAM_FIELDS];
+    std::memcpy(got, &q, sizeof got);
+    std::memcpy(was, &b, sizeof was);
+    for (std::size_t k = 0; k < PXFLOW_PARAM_FIELDS; ++k) CHECK((got[k] != was[k]) == (k == i));
+    CHECK(static_cast<int>(got[i]) == param_fields()[i].get(p));
   }
 }
