@@ -147,7 +147,7 @@ SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
   }
   const std::string size = std::to_string(p.width) + "x" + std::to_string(p.height);
   return {video + " " + size + " (real, consecutive frames)",
-          "px4flow-64 S=7 B=32",
+          video_setting_name(p),
           "DIS (agreement, not ground truth)",
           {summarise(m.px_name, s[0], true), summarise("LK", s[1], true),
            summarise("DIS", s[2], false)}};
@@ -179,6 +179,11 @@ Params video_setting(int width, int height) {
   p.search_radius = 7, p.blocks = 32;  // the full-size setting of pxflow check's real frames
   validate(p);
   return p;
+}
+
+std::string video_setting_name(const Params& p) {
+  return std::string(kDefaultProfile) + " S=" + std::to_string(p.search_radius) +
+         " B=" + std::to_string(p.blocks);
 }
 
 void require_backend_runs(const AccuracyOptions& o) {

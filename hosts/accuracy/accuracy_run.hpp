@@ -52,6 +52,8 @@ inline constexpr const char* kVideos[] = {"vtest.avi", "tree.avi"};
 // pxflow's setting for a real video's frames: px4flow-64 at their size with S=7, B=32 (as
 // pxflow check's real frames); the agreement rows and the report's flow pictures use it.
 Params video_setting(int width, int height);
+// Its name, made from it: "px4flow-64 S=7 B=32".
+std::string video_setting_name(const Params& p);
 
 // Throws InputError unless o.backend runs here and supports every set of pairs run_accuracy
 // makes (a backend with a small memory may not take the videos' frames): called before any work.

@@ -120,10 +120,10 @@ void add_pictures(ReportInputs& in, const ReportArgs& a, ReportOutputs& out) {
     b->run({&pair, 1}, p, records, counts);
     const std::string file = picture_file(video);
     out.pictures.at(file)->write(flow_png(pair.prev, p, records, estimate_flow(records, p),
-                                          {vp.name, backend, "px4flow-64 S=7 B=32"}));
-    in.pictures.push_back(
-        {vp.name + ": POIs and vectors by status (" + backend + ", S=7, B=32), frame flow in cyan",
-         file});
+                                          {vp.name, backend, accuracy::video_setting_name(p)}));
+    in.pictures.push_back({vp.name + ": POIs and vectors by status (" + backend + ", " +
+                               accuracy::video_setting_name(p) + "), frame flow in cyan",
+                           file});
   }
 }
 
