@@ -42,7 +42,7 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktra
 # -O1 -g1 (ASan's advice: line tables name every frame of a report) compiles in half the time of
 # -O2 -g (docs/harness.md, "The test suite's time").
 stage "ASan+UBSan" "$root/build-sanitize" "-LE no-sanitizer" "label no-sanitizer" \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPXFLOW_SANITIZE=ON \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPXFLOW_SANITIZE=ON -DPXFLOW_WERROR=OFF \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
 
 echo "== summary"
