@@ -10,7 +10,7 @@
  * The counter hook returns ticks * 5, an instruction count at 125 M per virtual second, and HELLO
  * names the clock "qemu-icount-instructions": it counts instructions, never cycles.
  *
- * M4_DUT_FAULT (0 for the real firmware) builds the fault firmwares of tests/m4: 1 never
+ * M4_DUT_FAULT (0 for the real firmware) builds the fault firmwares of tests/m4qemu: 1 never
  * answers, 2 exits (QEMU ends) in the middle of the first RUN, 3 hangs in the first RUN, 4 sends
  * garbage instead of replies, 5 answers HELLO with protocol version 2, 6 sends RESULTs whose
  * flow_x is one unit in the last place off the estimate the engine computed. */

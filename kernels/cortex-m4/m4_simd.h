@@ -14,7 +14,7 @@
  * keeps the carry that RI5CY's pv.avgu.b drops, it rounds down (not the (a + b + 1) / 2 of
  * x86 pavgb or of URHADD8, which ARMv7-M does not have), it is unsigned (SHADD8 would give
  * (-1 + 1) / 2 = 0 for the bytes 0xFF, 0x01 where UHADD8 gives 0x80), and no carry crosses a
- * lane (each sum_i is its own 9-bit value). tests/m4 checks these cases on the emulated core
+ * lane (each sum_i is its own 9-bit value). tests/m4qemu checks these cases on the emulated core
  * against values worked out from the pseudocode above (m4_selftest_simd.c).
  *
  * Loads: the firmware reads four pixels at any address with *(uint32_t *)&image[off]. ARMv7-M

@@ -2,7 +2,7 @@
 // link delivers garbage, the firmware speaks another protocol version, pxflow is interrupted.
 // Each gives one clear line and a defined exit code within a bounded time, and leaves no QEMU
 // process behind (pgrep on the firmware's path, which is unique to this build folder). The fault
-// firmwares are boards/mps2-an386/dut_main.c built with M4_DUT_FAULT = 1..6 (tests/m4).
+// firmwares are boards/mps2-an386/dut_main.c built with M4_DUT_FAULT = 1..6 (tests/m4qemu).
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
