@@ -9,7 +9,10 @@ option(PXFLOW_WERROR "Treat warnings as errors (CI: ci/build.sh)" OFF)
 
 # Bit-exact floats: no fused multiply-add contraction anywhere (SPEC §5). The list is also what
 # the provenance reports as the flags every file gets (hosts/CMakeLists.txt).
-set(PXFLOW_COMPILE_OPTIONS -Wall -Wextra -ffp-contract=off)
+# PXFLOW_PORTABLE_OPTIONS: what every compiler of the project gets, the cross compilers of the
+# firmware, the GAP8 ELFs and the NEON check included (pxflow_cross_arguments below).
+set(PXFLOW_PORTABLE_OPTIONS -Wall -Wextra -ffp-contract=off)
+set(PXFLOW_COMPILE_OPTIONS ${PXFLOW_PORTABLE_OPTIONS})
 if(PXFLOW_WERROR)
   list(APPEND PXFLOW_COMPILE_OPTIONS -Werror)
 endif()
@@ -49,4 +52,22 @@ function(pxflow_link_build_flags)
   foreach(folder IN LISTS folders)
     pxflow_link_build_flags(${folder})
   endforeach()
+endfunction()
+
+# pxflow_cross_arguments(<prefix> [INCLUDE_DIRS dir...] [DEFINITIONS def...] [SOURCES file...]):
+# the command-line pieces of a cross build that is one compiler call (the Cortex-M4 firmware,
+# the GAP8 ELFs), which CMake's targets cannot hold because one project has one toolchain:
+# <prefix>_INCLUDES (-I...), <prefix>_DEFINES (-D...) and <prefix>_SOURCES (absolute paths).
+function(pxflow_cross_arguments prefix)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "INCLUDE_DIRS;DEFINITIONS;SOURCES")
+  list(TRANSFORM ARG_INCLUDE_DIRS PREPEND -I OUTPUT_VARIABLE includes)
+  list(TRANSFORM ARG_DEFINITIONS PREPEND -D OUTPUT_VARIABLE defines)
+  set(sources "")
+  foreach(s IN LISTS ARG_SOURCES)
+    get_filename_component(abs ${s} ABSOLUTE)
+    list(APPEND sources ${abs})
+  endforeach()
+  set(${prefix}_INCLUDES ${includes} PARENT_SCOPE)
+  set(${prefix}_DEFINES ${defines} PARENT_SCOPE)
+  set(${prefix}_SOURCES ${sources} PARENT_SCOPE)
 endfunction()

@@ -37,22 +37,17 @@ function(pxflow_gap8_program name)
   if(NOT ARG_OUTPUT_DIR)
     set(ARG_OUTPUT_DIR ${CMAKE_CURRENT_BINARY_DIR})
   endif()
-  set(cflags -march=rv32imc -mabi=ilp32 -misa-spec=2.2 -O2 -g -Wall -Wextra -ffreestanding
-      -fno-builtin -fno-tree-loop-distribute-patterns -ffp-contract=off)
+  set(cflags -march=rv32imc -mabi=ilp32 -misa-spec=2.2 -O2 -g ${PXFLOW_PORTABLE_OPTIONS}
+      -ffreestanding -fno-builtin -fno-tree-loop-distribute-patterns)
   set(rt ${PXFLOW_GAP8_RUNTIME_DIR})
   set(elf ${ARG_OUTPUT_DIR}/${name}.elf)
-  set(includes -I${rt})
-  foreach(dir ${ARG_INCLUDE_DIRS})
-    list(APPEND includes -I${dir})
-  endforeach()
-  set(sources)
-  foreach(s ${ARG_SOURCES})
-    get_filename_component(abs ${s} ABSOLUTE)
-    list(APPEND sources ${abs})
-  endforeach()
+  pxflow_cross_arguments(cross INCLUDE_DIRS ${rt} ${ARG_INCLUDE_DIRS} ${PXFLOW_GAP8_FIELDS_DIR}
+                         SOURCES ${ARG_SOURCES})
+  set(includes ${cross_INCLUDES})
+  set(sources ${cross_SOURCES})
   add_custom_command(
     OUTPUT ${elf}
-    COMMAND ${PXFLOW_GAP8_CC} ${cflags} ${includes} -I${PXFLOW_GAP8_FIELDS_DIR} -nostdlib -nostartfiles
+    COMMAND ${PXFLOW_GAP8_CC} ${cflags} ${includes} -nostdlib -nostartfiles
             -T ${rt}/link.ld -Wl,--no-warn-rwx-segments
             ${rt}/crt0.S ${rt}/runtime.c ${sources} -lgcc -o ${elf}
     DEPENDS ${sources} ${rt}/crt0.S ${rt}/runtime.c ${rt}/link.ld ${rt}/pmsis.h

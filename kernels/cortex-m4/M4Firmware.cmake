@@ -46,26 +46,21 @@ function(pxflow_m4_firmware name)
   if(NOT PXFLOW_M4_HAVE_TOOLCHAIN)
     return()
   endif()
-  # -ffp-contract=off: no fused multiply-add, so the FPU's estimate rounds like the host's.
-  set(cflags -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -ffp-contract=off
-      -O2 -g -std=gnu99 -Wall -Wextra -ffunction-sections -fdata-sections)
+  # PXFLOW_PORTABLE_OPTIONS' -ffp-contract=off: no fused multiply-add, so that the FPU's
+  # estimate rounds like the host's.
+  set(cflags -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 ${PXFLOW_PORTABLE_OPTIONS}
+      -O2 -g -std=gnu99 -ffunction-sections -fdata-sections)
   set(specs --specs=nano.specs)
   if(ARG_STDIO)
     list(APPEND specs --specs=rdimon.specs)
   endif()
-  set(includes -I${PXFLOW_M4_KERNEL_DIR} -I${PXFLOW_M4_BOARD_DIR} -I${PXFLOW_SPEC_INCLUDE_DIR})
-  foreach(dir ${ARG_INCLUDE_DIRS})
-    list(APPEND includes -I${dir})
-  endforeach()
-  set(defs)
-  foreach(d ${ARG_DEFINITIONS})
-    list(APPEND defs -D${d})
-  endforeach()
-  set(sources)
-  foreach(s ${ARG_SOURCES})
-    get_filename_component(abs ${s} ABSOLUTE)
-    list(APPEND sources ${abs})
-  endforeach()
+  pxflow_cross_arguments(cross
+    INCLUDE_DIRS ${PXFLOW_M4_KERNEL_DIR} ${PXFLOW_M4_BOARD_DIR} ${PXFLOW_SPEC_INCLUDE_DIR}
+                 ${ARG_INCLUDE_DIRS}
+    DEFINITIONS ${ARG_DEFINITIONS} SOURCES ${ARG_SOURCES})
+  set(includes ${cross_INCLUDES})
+  set(defs ${cross_DEFINES})
+  set(sources ${cross_SOURCES})
   set(elf ${CMAKE_CURRENT_BINARY_DIR}/${name}.elf)
   add_custom_command(
     OUTPUT ${elf}

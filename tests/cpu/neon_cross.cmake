@@ -57,7 +57,7 @@ foreach(source IN LISTS neon_cross_sources)
   add_custom_command(
     OUTPUT ${object}
     COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/neon_cross
-    COMMAND ${PXFLOW_AARCH64_CXX} -std=c++20 -O2 -Wall -Wextra -ffp-contract=off ${flags}
+    COMMAND ${PXFLOW_AARCH64_CXX} -std=c++20 -O2 ${PXFLOW_PORTABLE_OPTIONS} ${flags}
             -I${src}/reference -I${src}/hosts/corpus -I${src}/hosts/harness -I${src}/kernels/cpu
             -I${CMAKE_CURRENT_SOURCE_DIR} -MD -MF ${object}.d -c ${source} -o ${object}
     DEPENDS ${source}
