@@ -33,11 +33,11 @@ endif()
 include(${PROJECT_SOURCE_DIR}/kernels/cpu/isa_table.cmake)
 pxflow_cpu_isas(aarch64 cross)
 set(src ${PROJECT_SOURCE_DIR})
-set(neon_cross_sources
-  ${src}/reference/params.cpp ${src}/reference/grid.cpp ${src}/reference/poi_steps.cpp
-  ${src}/reference/kernel.cpp ${src}/reference/kernel_original.cpp
-  ${src}/reference/kernel_local.cpp ${src}/reference/kernel_global.cpp
-  ${src}/reference/estimate.cpp
+# The reference whole, as its target lists it; of the hosts' libraries only the files the check
+# needs (the rest brings OpenCV, threads and the registry).
+get_target_property(reference_sources pxflow_reference SOURCES)
+list(TRANSFORM reference_sources PREPEND ${src}/reference/)
+set(neon_cross_sources ${reference_sources}
   ${src}/hosts/corpus/synthetic.cpp
   ${src}/hosts/harness/exactness.cpp ${src}/hosts/harness/record_diff.cpp
   ${src}/kernels/cpu/poi_loop.cpp ${src}/kernels/cpu/isa_table.cpp
@@ -58,7 +58,7 @@ foreach(source IN LISTS neon_cross_sources)
     OUTPUT ${object}
     COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/neon_cross
     COMMAND ${PXFLOW_AARCH64_CXX} -std=c++20 -O2 ${PXFLOW_PORTABLE_OPTIONS} ${flags}
-            -I${src}/reference -I${src}/hosts/corpus -I${src}/hosts/harness -I${src}/kernels/cpu
+            -I${src}/reference -I${PXFLOW_SPEC_INCLUDE_DIR} -I${src}/hosts/corpus -I${src}/hosts/harness -I${src}/kernels/cpu
             -I${CMAKE_CURRENT_SOURCE_DIR} -MD -MF ${object}.d -c ${source} -o ${object}
     DEPENDS ${source}
     DEPFILE ${object}.d
