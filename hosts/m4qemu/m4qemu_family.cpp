@@ -1,5 +1,5 @@
-// The m4qemu family: one row, m4-qemu, and the --m4-firmware option (the fault tests of tests/m4qemu
-// run other firmware through the same row).
+// The m4qemu family: one row, m4-qemu, and the --m4-firmware option (the fault tests of
+// tests/m4qemu run other firmware through the same row).
 #include <sys/stat.h>
 #include <unistd.h>
 
