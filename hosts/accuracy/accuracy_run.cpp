@@ -18,6 +18,11 @@
 namespace pxflow::accuracy {
 namespace {
 
+// "S=7 B=32": the parameters a setting's name gives beside its size or profile.
+std::string s_b_text(const Params& p) {
+  return "S=" + std::to_string(p.search_radius) + " B=" + std::to_string(p.blocks);
+}
+
 using Clock = std::chrono::steady_clock;
 
 // Per method: the error and the time of every frame, and how many frames had a flow.
@@ -156,8 +161,7 @@ SetRows agreement_set(const std::string& video, const AccuracyOptions& o) {
 // The setting of each set of pairs run_accuracy makes, with its name ("320x240 S=7 B=16").
 std::vector<std::pair<std::string, Params>> problems(const AccuracyOptions& o) {
   auto named = [](const Params& p) {
-    return std::pair{std::to_string(p.width) + "x" + std::to_string(p.height) +
-                         " S=" + std::to_string(p.search_radius) + " B=" + std::to_string(p.blocks),
+    return std::pair{std::to_string(p.width) + "x" + std::to_string(p.height) + " " + s_b_text(p),
                      p};
   };
   std::vector<std::pair<std::string, Params>> out{named(profile(kDefaultProfile)),
@@ -182,8 +186,7 @@ Params video_setting(int width, int height) {
 }
 
 std::string video_setting_name(const Params& p) {
-  return std::string(kDefaultProfile) + " S=" + std::to_string(p.search_radius) +
-         " B=" + std::to_string(p.blocks);
+  return std::string(kDefaultProfile) + " " + s_b_text(p);
 }
 
 void require_backend_runs(const AccuracyOptions& o) {

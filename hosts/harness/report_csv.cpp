@@ -31,14 +31,12 @@ std::string csv(const std::vector<std::string>& cols, const std::vector<const Js
   return o.str();
 }
 
-std::vector<const Json*> sorted_by_rank(const Json& rows, const char* name_key) {
-  std::vector<const Json*> out;
-  if (rows.is_array())
-    for (const auto& r : rows) out.push_back(&r);
-  std::stable_sort(out.begin(), out.end(), [&](const Json* a, const Json* b) {
-    return registry_rank(a->value(name_key, "")) < registry_rank(b->value(name_key, ""));
+// Rows of backends in registry order (stable: rows of one backend keep theirs).
+void sort_by_rank(std::vector<const Json*>::iterator first,
+                  std::vector<const Json*>::iterator last) {
+  std::stable_sort(first, last, [](const Json* a, const Json* b) {
+    return registry_rank(a->value("backend", "")) < registry_rank(b->value("backend", ""));
   });
-  return out;
 }
 
 bool same_bench_point(const Json& a, const Json& b) {
@@ -57,12 +55,9 @@ std::string bench_csv(const Json& bench) {
     for (std::size_t i = 0; i < all.size();) {
       std::size_t j = i;
       while (j < all.size() && same_bench_point(all[j], all[i])) ++j;
-      std::vector<const Json*> group;
-      for (std::size_t k = i; k < j; ++k) group.push_back(&all[k]);
-      std::stable_sort(group.begin(), group.end(), [](const Json* a, const Json* b) {
-        return registry_rank(a->value("backend", "")) < registry_rank(b->value("backend", ""));
-      });
-      rows.insert(rows.end(), group.begin(), group.end());
+      const std::size_t start = rows.size();
+      for (std::size_t k = i; k < j; ++k) rows.push_back(&all[k]);
+      sort_by_rank(rows.begin() + static_cast<std::ptrdiff_t>(start), rows.end());
       i = j;
     }
   }
@@ -70,9 +65,11 @@ std::string bench_csv(const Json& bench) {
 }
 
 std::string conformance_csv(const Json& check) {
-  return csv(
-      csv_columns(backend_outcome_fields()),
-      check.is_null() ? std::vector<const Json*>{} : sorted_by_rank(check["backends"], "backend"));
+  std::vector<const Json*> rows;
+  if (!check.is_null() && check["backends"].is_array())
+    for (const auto& r : check["backends"]) rows.push_back(&r);
+  sort_by_rank(rows.begin(), rows.end());
+  return csv(csv_columns(backend_outcome_fields()), rows);
 }
 
 std::string accuracy_csv(const Json& accuracy_rows) {

@@ -4,9 +4,12 @@ header is checked against it here: the Python device's constants (tests/dut/pxdu
 stays a standalone file to copy) and docs/dut-protocol.md's tables and quoted sizes.
 usage: wire_table_check.py HEADER PYTHON_DEVICE PROTOCOL_PAGE; one line per disagreement, exit 1.
 """
-import ast
+import os
 import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from python_constants import python_constants  # noqa: E402
 
 
 def header_constants(path):
@@ -24,25 +27,14 @@ def header_constants(path):
     return table, problems
 
 
-def python_constants(path):
-    """NAME -> value of the module's top-level integer assignments (A = 1, A = B = 1, A, B = 1, 2)."""
-    out = {}
-    for node in ast.parse(open(path, encoding="utf-8").read()).body:
-        if not isinstance(node, ast.Assign):
-            continue
-        for target in node.targets:
-            if isinstance(target, ast.Name) and isinstance(node.value, ast.Constant):
-                out[target.id] = node.value.value
-            elif isinstance(target, ast.Tuple) and isinstance(node.value, ast.Tuple):
-                for t, v in zip(target.elts, node.value.elts):
-                    if isinstance(t, ast.Name) and isinstance(v, ast.Constant):
-                        out[t.id] = v.value
-    return {k: v for k, v in out.items() if isinstance(v, int)}
+def int_constants(path):
+    """NAME -> value of the module's top-level integer constants."""
+    return {k: v for k, v in python_constants(path).items() if isinstance(v, int)}
 
 
 def check_python(path, table):
     problems = []
-    consts = python_constants(path)
+    consts = int_constants(path)
     for name, value in consts.items():
         full = "PXDUT_" + name
         if full in table and table[full] != value:

@@ -7,12 +7,14 @@ kStatusDropped, DIR_NONE ...), with the core's values; the Python device also na
 checks and the record layout.
 usage: spec_copies_check.py SPEC_INCLUDE_DIR COPY...; one line per disagreement, exit 1.
 """
-import ast
 import glob
 import os
 import re
 import struct
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from python_constants import python_constants  # noqa: E402
 
 # What every copy must name, and what the Python device names besides.
 EVERY_COPY = ["STATUS_DROPPED", "STATUS_REJECTED", "STATUS_ACCEPTED", "DIR_NONE", "STEP_X",
@@ -52,29 +54,6 @@ def c_like_constants(path):
         out[snake(m.group(1))] = int(m.group(2))
     for m in re.finditer(r"\b(\w+)\[\d*\]\s*=\s*(?:int\[\d*\])?[({]([-\d,\s]+)[)}]", text):
         out[snake(m.group(1))] = tuple(int(v) for v in m.group(2).split(","))
-    return out
-
-
-def python_constants(path):
-    """NAME -> value of the module's top-level constant assignments (ints, int tuples, strings)."""
-    out = {}
-
-    def value(node):
-        try:
-            return ast.literal_eval(node)
-        except ValueError:
-            return None
-
-    for node in ast.parse(open(path, encoding="utf-8").read()).body:
-        if not isinstance(node, ast.Assign):
-            continue
-        for target in node.targets:
-            if isinstance(target, ast.Name):
-                out[target.id] = value(node.value)
-            elif isinstance(target, ast.Tuple) and isinstance(node.value, ast.Tuple):
-                for t, v in zip(target.elts, node.value.elts):
-                    if isinstance(t, ast.Name):
-                        out[t.id] = value(v)
     return out
 
 
