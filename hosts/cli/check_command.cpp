@@ -1,4 +1,7 @@
 // pxflow check: the cross-check of every backend against ref-original.
+#include <unistd.h>
+
+#include <filesystem>
 #include <iostream>
 
 #include "check.hpp"
@@ -16,7 +19,9 @@ namespace {
 constexpr const char* kHelp = " (see pxflow check --help)";
 
 struct CheckArgs {
-  std::string backend, backends, require, json_path, shard;
+  std::string backend, backends, require, json_path, shard, repro_dir;
+  double repro_seconds = ShrinkLimits{}.seconds;
+  bool no_repro = false;
   std::string data_dir = CorpusOptions{}.data_dir;
   std::uint64_t seed = 1;
   long cases = 0;
@@ -24,7 +29,7 @@ struct CheckArgs {
   BackendOptions backend_options;
   std::string globals;  // the global options given (--dut, --disable-isa ...): they shape the run
   CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr,
-              *shard_opt = nullptr;
+              *shard_opt = nullptr, *repro_dir_opt = nullptr;
 };
 
 // --backend NAME runs one backend, --backends LIST several: one meaning each, never both.
@@ -60,7 +65,24 @@ std::string command_line(const CheckArgs& a) {
   if (a.backend_options.threads != 0)
     c += " --threads " + std::to_string(a.backend_options.threads);
   if (!a.json_path.empty()) c += " --json " + shell_word(a.json_path);
+  if (a.no_repro) c += " --no-repro";
+  if (a.repro_dir_opt->count() > 0) c += " --repro-dir " + shell_word(a.repro_dir);
   return c;
+}
+
+// Where reproducers go: --repro-dir, else the --json file's folder, else the working folder. The
+// default is used only where files can be made (a check in a read-only folder still runs).
+OutputFolder* plan_reproducers(const CheckArgs& a, OutputPlan& plan) {
+  if (a.no_repro) return nullptr;
+  std::string dir = a.repro_dir;
+  if (a.repro_dir_opt->count() == 0) {
+    const std::filesystem::path json(a.json_path);
+    dir = a.json_path.empty() || a.json_path == kStdoutPath || !json.has_parent_path()
+              ? "."
+              : json.parent_path().string();
+    if (::access(dir.c_str(), W_OK) != 0) return nullptr;
+  }
+  return &plan.folder("--repro-dir", dir, "pxflow-repro-N");
 }
 
 int run_check_command(const CheckArgs& a) {
@@ -82,7 +104,16 @@ int run_check_command(const CheckArgs& a) {
   OutputPlan plan;
   if (o.corpus.real) plan.read_folder("--data", a.data_dir);
   OutputFile* const json_file = a.json_path.empty() ? nullptr : &plan.file("--json", a.json_path);
+  OutputFolder* const repro = plan_reproducers(a, plan);
   plan.prepare();
+  if (repro) {
+    o.repro.dir = repro->dir();
+    o.repro.write = [repro](const std::string& path, std::string_view bytes) {
+      repro->write(path, bytes);
+    };
+  }
+  o.repro.program = "pxflow" + a.globals;
+  o.repro.limits.seconds = a.repro_seconds;
   o.banner = "pxflow check: seed " + std::to_string(a.seed) +
              (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
                           : ", fixed corpus") +
@@ -132,6 +163,16 @@ Command add_check_command(CLI::App& app) {
   sub->add_flag("--generated-only", a->generated_only,
                 "Skip the real frames (random, hostile, threshold cases only)");
   sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
+  a->repro_dir_opt = sub->add_option(
+      "--repro-dir", a->repro_dir,
+      "Existing folder for the reproducers of mismatches, one pxflow-repro-N per run (default: "
+      "the --json file's folder, else the working folder)");
+  sub->add_flag("--no-repro", a->no_repro,
+                "Write no reproducers (the first differing stage is still named)");
+  sub->add_option("--repro-seconds", a->repro_seconds,
+                  "Time each backend's reproducer may spend shrinking its failing pair")
+      ->check(CLI::Range(0.0, 3600.0))
+      ->capture_default_str();
   add_progress_flag(*sub);
   add_threads_option(*sub, a->backend_options.threads);
   add_device_option(*sub, a->backend_options.device);

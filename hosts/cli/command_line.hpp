@@ -5,14 +5,11 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "shell_word.hpp"
+
 namespace pxflow::cli {
 
-inline std::string shell_word(const std::string& s) {
-  if (!s.empty() && s.find_first_of(" \t\n'\"\\$`*?;&|<>()[]{}!#~") == std::string::npos) return s;
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
+using pxflow::shell_word;
 
 inline std::string given_options(const CLI::App& app) {
   std::string line;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "frame.hpp"
+#include "kernel.hpp"
 #include "params.hpp"
 #include "record.hpp"
 
@@ -86,6 +87,10 @@ struct BackendRow {
   // where this machine lacks it. `check --require all` then reports the row skipped (the
   // machine's limit, not the backend's failure); naming the row in --require still requires it.
   std::function<bool()> host_lacks{};
+  // The row's counting model: the reference variant whose rules (docs/counting.md) its counts
+  // follow whenever it counts (counts.counted). `pxflow check` holds its counts to them
+  // (hosts/harness/check_counts.hpp); a row that counts without naming one fails there.
+  std::optional<RefVariant> counts_like{};
   std::string family{};  // filled in by the registry from the family the row came from
 };
 

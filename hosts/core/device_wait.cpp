@@ -5,22 +5,13 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "counted.hpp"
 #include "errors.hpp"
 
 namespace pxflow {
 namespace {
 
 std::atomic<bool> g_abandoned{false};
-
-// "1,024"
-std::string grouped(std::uint64_t n) {
-  std::string digits = std::to_string(n), out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
 
 std::string seconds_text(double seconds) {
   char buf[32];

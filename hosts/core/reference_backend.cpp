@@ -37,9 +37,11 @@ BackendFamily reference_family() {
   family.name = "reference";
   auto& rows = family.rows;
   for (RefVariant v : {RefVariant::kOriginal, RefVariant::kLocal, RefVariant::kGlobal}) {
-    rows.push_back({std::string(ref_variant_name(v)), "nothing (portable scalar C++)",
-                    [] { return std::string(); },
-                    [v](const BackendOptions&) { return std::make_unique<ReferenceBackend>(v); }});
+    BackendRow& row = rows.emplace_back(
+        std::string(ref_variant_name(v)), "nothing (portable scalar C++)",
+        [] { return std::string(); },
+        [v](const BackendOptions&) { return std::make_unique<ReferenceBackend>(v); });
+    row.counts_like = v;  // each variant counts by its own rules
   }
   return family;
 }

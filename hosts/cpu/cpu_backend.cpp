@@ -80,6 +80,7 @@ BackendRow isa_row(const cpu::IsaInfo& info) {
   row.probe = [isa = row.name] { return cpu::isa_unavailable(isa); };
   row.create = [isa = row.name](const BackendOptions& o) { return create_isa(isa, o); };
   row.host_lacks = [has = info.cpu_has] { return !has(); };
+  row.counts_like = RefVariant::kOriginal;  // poi_loop.cpp charges as ref-original when it counts
   return row;
 }
 
@@ -101,6 +102,7 @@ BackendRow dispatcher_row() {
     return create_isa(isa, o);
   };
   row.preferred = true;
+  row.counts_like = RefVariant::kOriginal;  // as the ISA row it dispatches to
   return row;
 }
 

@@ -8,16 +8,31 @@
 namespace pxflow {
 namespace {
 
+// The reference variant whose counting rules a variant's half-pixel scheme follows.
+RefVariant counts_like(Gap8HalfPixel h) {
+  switch (h) {
+    case Gap8HalfPixel::kPerPixel:
+      return RefVariant::kOriginal;
+    case Gap8HalfPixel::kLocalPlanes:
+      return RefVariant::kLocal;
+    case Gap8HalfPixel::kGlobalPlanes:
+      return RefVariant::kGlobal;
+  }
+  return RefVariant::kOriginal;
+}
+
 BackendRow gap8_row(const Gap8VariantInfo& v) {
-  return {std::string("gap8-") + v.name,
-          "nothing (the GAP8 cluster cycle model is built in; 8 cores, " +
-              std::to_string(static_cast<int>(kGap8ClockHz / 1e6)) + " MHz)",
-          [name = v.name]() -> std::string {
-            return gap8_kernel_elf(name).empty() ? "no embedded GAP8 kernel ELF" : "";
-          },
-          [id = v.id](const BackendOptions& o) -> std::unique_ptr<Backend> {
-            return std::make_unique<Gap8Backend>(id, gap8_host::RunOptions{}, o.threads);
-          }};
+  BackendRow row{std::string("gap8-") + v.name,
+                 "nothing (the GAP8 cluster cycle model is built in; 8 cores, " +
+                     std::to_string(static_cast<int>(kGap8ClockHz / 1e6)) + " MHz)",
+                 [name = v.name]() -> std::string {
+                   return gap8_kernel_elf(name).empty() ? "no embedded GAP8 kernel ELF" : "";
+                 },
+                 [id = v.id](const BackendOptions& o) -> std::unique_ptr<Backend> {
+                   return std::make_unique<Gap8Backend>(id, gap8_host::RunOptions{}, o.threads);
+                 }};
+  row.counts_like = counts_like(v.half_pixel);
+  return row;
 }
 
 }  // namespace

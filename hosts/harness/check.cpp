@@ -9,6 +9,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "check_counts.hpp"
 #include "counted.hpp"
 #include "errors.hpp"
 #include "estimate.hpp"
@@ -90,7 +91,7 @@ std::string block_dump(const FrameView& f, int x, int y) {
 
 class Checker {
  public:
-  Checker(const CheckOptions& o, std::ostream& out) : o_(o), out_(out) {}
+  Checker(const CheckOptions& o, std::ostream& out) : o_(o), out_(out), explainer_(o.repro) {}
 
   // Runs one case on one contender; returns false when it failed.
   bool run_case(Contender& k, const CheckCase& c, const ReferenceAnswer& e) {
@@ -120,7 +121,14 @@ class Checker {
     const Comparison cmp =
         compare_with_reference(label(k, c), names, c.params, e, got, o_.max_lines_per_case, detail);
     for (const std::string& line : cmp.lines) emit(k, line);
-    if (cmp.ok()) {
+    if (!cmp.ok())
+      for (const std::string& line :
+           explainer_.explain(label(k, c), c, e, got, in_process_runner(*k.backend)))
+        emit(k, line);
+    const std::string counts_line = counts_verdict(label(k, c), k.row->counts_like, counts,
+                                                   e.records, c.params, c.pairs.size());
+    if (!counts_line.empty()) emit(k, counts_line);
+    if (cmp.ok() && counts_line.empty()) {
       ++k.outcome.passed;
       return true;
     }
@@ -153,6 +161,7 @@ class Checker {
 
   const CheckOptions& o_;
   std::ostream& out_;
+  MismatchExplainer explainer_;
 };
 
 }  // namespace

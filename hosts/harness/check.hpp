@@ -9,6 +9,7 @@
 #include "backend.hpp"
 #include "check_campaign.hpp"
 #include "check_corpus.hpp"
+#include "check_repro.hpp"
 #include "result_fields.hpp"
 #include "result_json.hpp"
 
@@ -23,6 +24,7 @@ struct CheckOptions {
   int max_lines_per_case = 5;
   BackendOptions backend_options;
   CorpusOptions corpus;
+  ReproOptions repro;  // the reproducers of mismatches (check_repro.hpp); none without a writer
   // Printed once the backends are chosen and opened, so that bad input (an unknown or absent
   // backend, a device that does not exist) leaves no partial output.
   std::string banner;

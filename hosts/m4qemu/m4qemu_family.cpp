@@ -131,6 +131,7 @@ BackendRow m4_qemu_row() {
     if (const std::string why = lazy->probe(); !why.empty()) throw BackendError(why);
     return std::make_unique<M4QemuBackend>(lazy->device);
   };
+  row.counts_like = RefVariant::kOriginal;  // m4_counts(): the firmware interpolates per pixel
   return row;
 }
 

@@ -38,7 +38,8 @@ FaultRun run_fault(const std::string& mode, bool require = true, const std::stri
                                    "--backends",
                                    "ref-original,f",
                                    "--cases",
-                                   cases};
+                                   cases,
+                                   "--no-repro"};  // no reproducer folder in the test's folder
   if (require) args.insert(args.end(), {"--require", "f"});
   f.t = timed_pxflow(args);
   return f;

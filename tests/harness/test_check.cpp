@@ -1,8 +1,11 @@
 // pxflow check against backends that are wrong on purpose: the mismatch line, the counts, the
 // exit code, skips, --require, n/a cases, fuzz campaigns and the JSON file.
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "run_program.hpp"
 
@@ -25,7 +28,7 @@ std::string last_line(const std::string& out) {
 }  // namespace
 
 TEST_CASE("a backend that flips one bit fails with one line naming the field", "[check]") {
-  const auto r = check({"--backends", "test-bitflip", "--generated-only"});
+  const auto r = check({"--backends", "test-bitflip", "--generated-only", "--no-repro"});
   INFO(r.out);
   CHECK(r.exit_code == 1);
   // poi 3 of the first random px4flow-64 pair; sub[2] only differs when the POI was accepted,
@@ -39,7 +42,7 @@ TEST_CASE("a backend that flips one bit fails with one line naming the field", "
 }
 
 TEST_CASE("an unwritten record is caught by the sentinel", "[check]") {
-  const auto r = check({"--backends", "test-unwritten", "--generated-only"});
+  const auto r = check({"--backends", "test-unwritten", "--generated-only", "--no-repro"});
   CHECK(r.exit_code == 1);
   CHECK(r.out.find("poi=5 (x=35,y=5) field=record expected=written got=never written") !=
         std::string::npos);
@@ -148,4 +151,89 @@ TEST_CASE("bench times only checked backends and writes the documented JSON rows
 #endif
   CHECK(run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--batch", "0"}).exit_code == 2);
   CHECK(run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--sizes", "8x8"}).exit_code == 2);
+}
+
+TEST_CASE("counts are checked: a backend that miscounts fails with one line naming both",
+          "[check]") {
+  const auto r = check({"--backends", "test-miscount,test-small-only", "--generated-only"});
+  INFO(r.out);
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("field=") == std::string::npos);  // its records are right
+  // Its counts are 512 SAD ops above ref-original's counting model, in every case.
+  const std::string needle = "counts differ from ref-original's: sad_ops ";
+  const auto at = r.out.find("FAIL test-miscount case=");
+  REQUIRE(at != std::string::npos);
+  const auto line_end = r.out.find('\n', at);
+  const std::string line = r.out.substr(at, line_end - at);
+  const auto n = line.find(needle);
+  REQUIRE(n != std::string::npos);
+  auto number = [](std::string s) {
+    s.erase(std::remove(s.begin(), s.end(), ','), s.end());
+    return std::stol(s);
+  };
+  std::istringstream words(line.substr(n + needle.size()));
+  std::string got, vs, want;
+  words >> got >> vs >> want;
+  CHECK(vs == "vs");
+  CHECK(number(got) == number(want) + 512);
+  // test-small-only, ref-original's kernel, counts right: its 8 cases pass.
+  CHECK(r.out.find("FAIL test-small-only") == std::string::npos);
+  CHECK(last_line(r.out) == "8 passed, 16 failed, 0 skipped");
+}
+
+namespace {
+
+// The command after `marker` on its line, split at spaces, "pxflow" replaced by the test binary.
+std::vector<std::string> printed_command(const std::string& out, const std::string& marker) {
+  const auto at = out.find(marker);
+  if (at == std::string::npos) return {};
+  const auto from = at + marker.size();
+  std::istringstream words(out.substr(from, out.find('\n', from) - from));
+  std::vector<std::string> args;
+  for (std::string w; words >> w;) args.push_back(w);
+  if (args.empty() || args.front() != "pxflow") return {};
+  args.erase(args.begin());
+  return args;
+}
+
+}  // namespace
+
+TEST_CASE("a planted half-pixel bug: the stage in words and a reproducer that shows it",
+          "[check]") {
+  pxflow::test::TempDir dir;
+  const auto r =
+      check({"--backends", "test-half-step-swap", "--generated-only", "--repro-dir", dir.path("")});
+  INFO(r.out);
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find(" first differing stage: half-pixel refinement: sub[0] (half step (1,0))") !=
+        std::string::npos);
+  const std::string folder = dir.path("pxflow-repro-1/test-half-step-swap");
+  CHECK(r.out.find("reproducer in " + folder) != std::string::npos);
+  // One pair of 2S+11 pixels a side (S = 4 in the first failing case): one POI.
+  CHECK(std::filesystem::file_size(folder + "/prev.raw") == 19 * 19);
+  CHECK(std::filesystem::file_size(folder + "/next.raw") == 19 * 19);
+  const auto mine = printed_command(r.out, " reproducer shows it: ");
+  const auto theirs = printed_command(r.out, " reproducer against: ");
+  REQUIRE(!mine.empty());
+  REQUIRE(!theirs.empty());
+  const auto a = run_program(PXFLOW_WITH_TEST_ROWS, mine);
+  const auto b = run_program(PXFLOW_WITH_TEST_ROWS, theirs);
+  INFO(a.err << b.err);
+  REQUIRE(a.exit_code == 0);
+  REQUIRE(b.exit_code == 0);
+  const auto pois_a = nlohmann::json::parse(a.out)["pois"];
+  const auto pois_b = nlohmann::json::parse(b.out)["pois"];
+  CHECK(pois_a.size() == 1);
+  CHECK(pois_a != pois_b);  // the difference, on one small pair
+  CHECK(pois_a[0]["sub"] != pois_b[0]["sub"]);
+
+  // A second run never replaces the first one's folder.
+  const auto again =
+      check({"--backends", "test-half-step-swap", "--generated-only", "--repro-dir", dir.path("")});
+  CHECK(again.out.find("reproducer in " + dir.path("pxflow-repro-2/")) != std::string::npos);
+  // --no-repro: the stage is still named, no folder is made.
+  const auto off = check({"--backends", "test-half-step-swap", "--generated-only", "--no-repro",
+                          "--repro-dir", dir.path("")});
+  CHECK(off.out.find("first differing stage: half-pixel refinement") != std::string::npos);
+  CHECK(!std::filesystem::exists(dir.path("pxflow-repro-3")));
 }

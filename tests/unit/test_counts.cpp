@@ -2,6 +2,7 @@
 // follow the statuses elsewhere (docs/counting.md).
 #include <catch2/catch.hpp>
 
+#include "counting_model.hpp"
 #include "run_helpers.hpp"
 #include "synthetic.hpp"
 
@@ -55,6 +56,14 @@ TEST_CASE("counts follow the statuses: dropped, rejected and accepted POIs", "[c
       CHECK(orig.interpolations == 768 * accepted);
       CHECK(local.interpolations == 300 * accepted);
       CHECK(global.interpolations == 3 * 64 * 64);  // per frame, before any matching
+      // The model `pxflow check` holds backends to gives each variant's own counts.
+      for (const auto& [v, c] :
+           {std::pair{RefVariant::kOriginal, orig}, std::pair{RefVariant::kLocal, local},
+            std::pair{RefVariant::kGlobal, global}}) {
+        const OpCounts m = model_counts(v, recs, p, 1);
+        CHECK(m.sad_ops == c.sad_ops);
+        CHECK(m.interpolations == c.interpolations);
+      }
     }
   }
 }

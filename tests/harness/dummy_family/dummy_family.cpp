@@ -21,6 +21,7 @@ class DummyBackend final : public Backend {
 BackendFamily dummy_family() {
   BackendRow row{"dummy-original", "nothing (test family)", [] { return std::string(); },
                  [](const BackendOptions&) { return std::make_unique<DummyBackend>(); }};
+  row.counts_like = RefVariant::kOriginal;
   return {"dummy", {row}, {}, {}};
 }
 

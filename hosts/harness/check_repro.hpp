@@ -1,0 +1,51 @@
+// What `pxflow check` adds to a mismatch so that a porter can go from "failed" to the faulty line
+// of their kernel: the first stage that differs, in words, and (once per backend and run) a
+// minimal reproducer written as raw frames with the `pxflow flow` commands that show the
+// difference on it (shrink.hpp makes it).
+#pragma once
+#include <functional>
+#include <set>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "backend.hpp"
+#include "check_corpus.hpp"
+#include "exactness.hpp"
+#include "shrink.hpp"
+
+namespace pxflow {
+
+struct ReproOptions {
+  // Writes a whole file at `path`, relative to `dir`, through the command's output plan. Empty:
+  // no reproducers (pxflow check --no-repro, or a library caller that wants none).
+  std::function<void(const std::string& path, std::string_view bytes)> write;
+  std::string dir = ".";  // an existing folder; each run makes its own pxflow-repro-N in it
+  std::string program = "pxflow";  // the printed commands' start, with the run's global options
+  ShrinkLimits limits;             // per backend
+};
+
+class MismatchExplainer {
+ public:
+  explicit MismatchExplainer(ReproOptions o) : o_(std::move(o)) {}
+
+  // The lines to add after a failed comparison of `got` with `want` on case `c`: the first
+  // differing stage, then for the backend's first failure of the run, its reproducer's folder
+  // and commands (or why there is none).
+  std::vector<std::string> explain(const CaseLabel& label, const CheckCase& c,
+                                   const ReferenceAnswer& want, std::span<const PoiRecord> got,
+                                   const PairRunner& run);
+
+ private:
+  std::vector<std::string> write_reproducer(const CaseLabel& label, const Reproducer& r);
+  ReproOptions o_;
+  std::set<std::string> shrunk_;  // backends that have had their reproducer
+  std::string run_dir_;  // this run's pxflow-repro-N (in dir), made at the first reproducer
+};
+
+// A runner on a backend opened in this process: its records for the batch, or the error it threw
+// or the limit it declared (Backend::unsupported).
+PairRunner in_process_runner(Backend& b);
+
+}  // namespace pxflow
