@@ -5,6 +5,7 @@
 
 #include "exactness.hpp"
 #include "grid.hpp"
+#include "interrupt.hpp"
 
 namespace pxflow {
 namespace {
@@ -30,6 +31,8 @@ class Shrinker {
   // first POI that does is then remembered with both records.
   bool fails(const Candidate& c) {
     if (spent()) return false;
+    // Ctrl-C stops the shrinking too, not only the next case.
+    stop_if_interrupted("the shrinking of a reproducer (" + std::to_string(runs_) + " runs)");
     ++runs_;
     const FramePair view = c.pair.view();
     const std::span<const FramePair> pairs(&view, 1);
