@@ -121,10 +121,12 @@ class Checker {
     const Comparison cmp =
         compare_with_reference(label(k, c), names, c.params, e, got, o_.max_lines_per_case, detail);
     for (const std::string& line : cmp.lines) emit(k, line);
-    if (!cmp.ok())
-      for (const std::string& line :
-           explainer_.explain(label(k, c), c, e, got, in_process_runner(*k.backend)))
-        emit(k, line);
+    if (!cmp.ok()) {
+      const Explanation why =
+          explainer_.explain(label(k, c), c, e, got, in_process_runner(*k.backend));
+      emit(k, why.stage);
+      for (const std::string& line : why.reproducer) out_ << line << '\n' << std::flush;
+    }
     const std::string counts_line = counts_verdict(label(k, c), k.row->counts_like, counts,
                                                    e.records, c.params, c.pairs.size());
     if (!counts_line.empty()) emit(k, counts_line);

@@ -40,10 +40,9 @@ std::string flow_command(const std::string& program, const std::string& row, con
 
 }  // namespace
 
-std::vector<std::string> MismatchExplainer::explain(const CaseLabel& label, const CheckCase& c,
-                                                    const ReferenceAnswer& want,
-                                                    std::span<const PoiRecord> got,
-                                                    const PairRunner& run) {
+Explanation MismatchExplainer::explain(const CaseLabel& label, const CheckCase& c,
+                                       const ReferenceAnswer& want, std::span<const PoiRecord> got,
+                                       const PairRunner& run) {
   const std::size_t per = poi_count(c.params);
   for (std::size_t pair = 0; pair < c.pairs.size(); ++pair)
     for (std::size_t n = 0; n < per; ++n) {
@@ -52,17 +51,17 @@ std::vector<std::string> MismatchExplainer::explain(const CaseLabel& label, cons
       if (differing_stage(w, g) == Stage::kSame) continue;
       const OwnedPair& op = c.pairs[pair];
       const std::string where = label.prefix() + " pair=" + op.name + " poi=" + std::to_string(n);
-      std::vector<std::string> lines = {
-          where + " first differing stage: " + stage_words(op.view(), c.params, w, g)};
-      if (!o_.write || !shrunk_.insert(label.who).second) return lines;
+      Explanation e{where + " first differing stage: " + stage_words(op.view(), c.params, w, g),
+                    {}};
+      if (!o_.write || !shrunk_.insert(label.who).second) return e;
       const std::optional<Reproducer> r = shrink_mismatch(op, c.params, n, run, o_.limits);
-      if (!r)
-        lines.push_back(where + " no reproducer: the difference did not recur on this pair alone");
+      if (r)
+        e.reproducer = write_reproducer(label, *r);
       else
-        for (std::string& l : write_reproducer(label, *r)) lines.push_back(std::move(l));
-      return lines;
+        e.reproducer = {where + " no reproducer: the difference did not recur on this pair alone"};
+      return e;
     }
-  return {label.prefix() + " first differing stage: frame estimate (every record agrees)"};
+  return {label.prefix() + " first differing stage: frame estimate (every record agrees)", {}};
 }
 
 std::vector<std::string> MismatchExplainer::write_reproducer(const CaseLabel& label,

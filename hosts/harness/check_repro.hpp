@@ -26,16 +26,22 @@ struct ReproOptions {
   ShrinkLimits limits;             // per backend
 };
 
+// What follows a failed comparison's mismatch lines.
+struct Explanation {
+  // The first differing stage: a failure line like the others (the results file keeps it; the
+  // same in every shard of a campaign as in the whole run).
+  std::string stage;
+  // For the backend's first failure of the run: its reproducer's folder and commands, or why
+  // there is none. Printed only: they name this run's files, which a merged result cannot.
+  std::vector<std::string> reproducer;
+};
+
 class MismatchExplainer {
  public:
   explicit MismatchExplainer(ReproOptions o) : o_(std::move(o)) {}
 
-  // The lines to add after a failed comparison of `got` with `want` on case `c`: the first
-  // differing stage, then for the backend's first failure of the run, its reproducer's folder
-  // and commands (or why there is none).
-  std::vector<std::string> explain(const CaseLabel& label, const CheckCase& c,
-                                   const ReferenceAnswer& want, std::span<const PoiRecord> got,
-                                   const PairRunner& run);
+  Explanation explain(const CaseLabel& label, const CheckCase& c, const ReferenceAnswer& want,
+                      std::span<const PoiRecord> got, const PairRunner& run);
 
  private:
   std::vector<std::string> write_reproducer(const CaseLabel& label, const Reproducer& r);

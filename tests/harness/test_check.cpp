@@ -236,4 +236,9 @@ TEST_CASE("a planted half-pixel bug: the stage in words and a reproducer that sh
                           "--repro-dir", dir.path("")});
   CHECK(off.out.find("first differing stage: half-pixel refinement") != std::string::npos);
   CHECK(!std::filesystem::exists(dir.path("pxflow-repro-3")));
+  // A --repro-dir that does not exist is bad input, before any work.
+  const auto missing =
+      check({"--backends", "ref-local", "--generated-only", "--repro-dir", dir.path("missing")});
+  CHECK(missing.exit_code == 2);
+  CHECK(missing.err_lines() == 1);
 }
