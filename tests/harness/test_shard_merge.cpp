@@ -332,12 +332,14 @@ TEST_CASE("check --shard, --backend and --json -: the options and their errors",
   CHECK(r.err.find("(see pxflow check --help)") != std::string::npos);
 
   // --backend NAME, the JSON on stdout, the mismatch lines and the summary on stderr.
-  r = pxflow_run({"check", "--backend", "test-bitflip", "--generated-only", "--json", "-"});
+  r = pxflow_run(
+      {"check", "--backend", "test-bitflip", "--generated-only", "--json", "-", "--no-repro"});
   CHECK(r.exit_code == 1);
   const json j = json::parse(r.out);
   CHECK(j["backends"].size() == 1);
   CHECK(j["backends"][0]["backend"] == "test-bitflip");
-  CHECK(j["command"] == "pxflow check --backend test-bitflip --seed 1 --generated-only --json -");
+  CHECK(j["command"] ==
+        "pxflow check --backend test-bitflip --seed 1 --generated-only --json - --no-repro");
   CHECK(j["shard"] == json({{"index", 1}, {"count", 1}, {"first_case", 0}, {"end_case", 16}}));
   CHECK(r.err.find("FAIL test-bitflip case=") != std::string::npos);
   CHECK(last_line(r.err).find(" failed, 0 skipped") != std::string::npos);
