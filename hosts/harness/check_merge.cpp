@@ -68,6 +68,7 @@ BackendOutcome merge_backend(const std::vector<const BackendOutcome*>& parts,
     reference |= b.state == BackendState::kReference;
     m.passed += b.passed, m.failed += b.failed, m.not_applicable += b.not_applicable;
     m.pairs += b.pairs, m.seconds += b.seconds;
+    m.limits.insert(m.limits.end(), b.limits.begin(), b.limits.end());  // shards: disjoint cases
     auto add = [](std::vector<std::string>& to, const std::string& v) {
       if (!v.empty() && std::find(to.begin(), to.end(), v) == to.end()) to.push_back(v);
     };
