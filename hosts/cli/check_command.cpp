@@ -75,9 +75,10 @@ int run_check_command(const CheckArgs& a) {
   o.corpus.seed = a.seed;
   o.corpus.data_dir = a.data_dir;
   if (a.limits_only && a.cases > 0)
-    throw InputError("--limits-only: the limit cases are part of the fixed corpus, not of a fuzz "
-                     "campaign (--cases)" +
-                     std::string(kHelp));
+    throw InputError(
+        "--limits-only: the limit cases are part of the fixed corpus, not of a fuzz "
+        "campaign (--cases)" +
+        std::string(kHelp));
   o.corpus.limits_only = a.limits_only;
   o.corpus.real = !a.generated_only && !a.limits_only;
   o.command = command_line(a);

@@ -196,8 +196,10 @@ void FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
     throw BackendError("gap8: kernel exited with status " + std::to_string(result.exit_code));
 
   const std::uint8_t planted = 0;
-  if (options.plant_past_l2_records) mem.Write(l2_records_end + options.plant_past_l2_records - 1, &planted, 1);
-  if (options.plant_past_l1_records) mem.Write(l1_records_end + options.plant_past_l1_records - 1, &planted, 1);
+  if (options.plant_past_l2_records)
+    mem.Write(l2_records_end + options.plant_past_l2_records - 1, &planted, 1);
+  if (options.plant_past_l1_records)
+    mem.Write(l1_records_end + options.plant_past_l1_records - 1, &planted, 1);
   auto zone = [&](const Zone& z) {
     std::vector<std::uint8_t> bytes(z.bytes);
     mem.Read(z.at, bytes.data(), z.bytes);
@@ -214,8 +216,9 @@ void FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
     throw BackendError("gap8 model: the kernel's L1 allocations end at " + std::to_string(l1_next) +
                        ", outside its records' end and the heap's");
   check_guard_after(zone({l1_next, l1_heap_end - l1_next}), pois,
-                    l1_next == l1_records_end ? "gap8 model (L1 records)"
-                                              : "gap8 model (L1, past the tables after the records)");
+                    l1_next == l1_records_end
+                        ? "gap8 model (L1 records)"
+                        : "gap8 model (L1, past the tables after the records)");
   mem.Read(block.records_l2, out.data(), static_cast<std::uint32_t>(rec_bytes * n));
   const std::size_t first = stats.pairs.size();
   stats.pairs.resize(first + n);

@@ -62,7 +62,7 @@ class FlowRunner {
   std::uint32_t io_base_ = 0;  // first free L2 byte after the image's .bss
   std::uint32_t l1_heap_start_ = 0, l1_heap_bytes_ = 0;
   std::uint32_t l1_next_addr_ = 0;  // the runtime's L1 allocator's next free byte (an L2 word)
-  std::uint32_t planes_ = 0;  // full-frame planes of the variant in L1
+  std::uint32_t planes_ = 0;        // full-frame planes of the variant in L1
 };
 
 }  // namespace pxflow::gap8_host

@@ -78,9 +78,8 @@ std::vector<LimitRow> limit_rows(const std::vector<Contender>& contenders) {
   std::vector<LimitRow> rows;
   for (const Contender& k : contenders)
     if (k.backend)
-      rows.push_back({k.row->name, [b = k.backend.get()](const Params& p) {
-                        return b->unsupported(p);
-                      }});
+      rows.push_back(
+          {k.row->name, [b = k.backend.get()](const Params& p) { return b->unsupported(p); }});
   return rows;
 }
 

@@ -52,12 +52,15 @@ std::vector<LimitProbe> spec_corners() {
   Params no_hf = d;
   no_hf.hist_filter = false;
   return {
-      {"smallest-frame", {}, at(min_side(kMinSearchRadius), min_side(kMinSearchRadius),
-                            kMinSearchRadius, B)},
+      {"smallest-frame",
+       {},
+       at(min_side(kMinSearchRadius), min_side(kMinSearchRadius), kMinSearchRadius, B)},
       {"smallest-frame", {}, at(min_side(S), min_side(S), S, B)},
-      {"largest-radius-smallest-frame", {},
+      {"largest-radius-smallest-frame",
+       {},
        at(min_side(kMaxSearchRadius), min_side(kMaxSearchRadius), kMaxSearchRadius, B)},
-      {"odd-size", {}, at(65, 63, S, B)},
+      {"odd-size", {}, at(65, 64, S, B)},  // an odd width alone, an odd height alone, both
+      {"odd-size", {}, at(64, 63, S, B)},
       {"odd-size", {}, at(63, 65, S, B)},
       {"smallest-radius", {}, at(64, 64, kMinSearchRadius, B)},
       {"smallest-blocks", {}, at(64, 64, S, kMinBlocks)},
@@ -74,7 +77,8 @@ std::vector<LimitProbe> spec_corners() {
 // The row's own edges at the default profile: the largest square frame, the widest and tallest
 // strip at the smallest other side, the largest radius and grid (64x64) it accepts. The radius
 // is searched at the smallest frame S = 31 allows (one POI): lavapipe needs minutes for the 49
-// POIs of 128x128 at S = 31 (docs/harness.md).
+// POIs of 128x128 at S = 31 (docs/harness.md). A row refusing that frame (m4-qemu: 4096 pixels)
+// is searched at the largest square up to it that it accepts, with one POI (B = 1).
 void row_probes(const LimitRow& r, std::vector<LimitProbe>& out) {
   auto ok = [&](const Params& p) { return valid(p) && r.unsupported(p).empty(); };
   const Params d = profile(kDefaultProfile);
@@ -92,11 +96,18 @@ void row_probes(const LimitRow& r, std::vector<LimitProbe>& out) {
     add("widest", at(*w, m, S, B));
   if (auto h = largest_accepted(m, kMaxFrameSide, [&](int h) { return ok(at(m, h, S, B)); }))
     add("tallest", at(m, *h, S, B));
-  const int side = min_side(kMaxSearchRadius);
+  int side = min_side(kMaxSearchRadius), grid = B;
+  if (!ok(at(side, side, kMinSearchRadius, grid))) {
+    grid = kMinBlocks;
+    side = largest_accepted(min_side(kMinSearchRadius), side, [&](int n) {
+             return ok(at(n, n, kMinSearchRadius, grid));
+           }).value_or(0);
+  }
   if (auto s = largest_accepted(kMinSearchRadius, kMaxSearchRadius,
-                                [&](int s) { return ok(at(side, side, s, B)); }))
-    add("largest-radius", at(side, side, *s, B));
-  if (auto b = largest_accepted(kMinBlocks, kMaxBlocks, [&](int b) { return ok(at(64, 64, S, b)); }))
+                                [&](int s) { return ok(at(side, side, s, grid)); }))
+    add("largest-radius", at(side, side, *s, grid));
+  if (auto b =
+          largest_accepted(kMinBlocks, kMaxBlocks, [&](int b) { return ok(at(64, 64, S, b)); }))
     add("largest-blocks", at(64, 64, S, *b));
 }
 

@@ -77,8 +77,8 @@ void print_limits(const CheckReport& r, std::ostream& out) {
   for (const auto& b : r.backends) {
     if (b.limits.empty()) continue;
     const std::string own = own_limits(b);
-    out << "  " << b.name << ": " << b.limits.size()
-        << (own.empty() ? "" : ", its own: " + own) << "\n";
+    out << "  " << b.name << ": " << b.limits.size() << (own.empty() ? "" : ", its own: " + own)
+        << "\n";
   }
 }
 
