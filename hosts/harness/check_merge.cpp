@@ -28,9 +28,11 @@ std::vector<std::pair<std::string, std::string>> identity(const CheckReport& r) 
           {"--cases", std::to_string(c.fuzz_pairs)},
           {"--generated-only", c.generated_only ? "yes" : "no"},
           {"corpus version", std::to_string(c.corpus_version)},
+          // Before the fingerprint: the limit cases come from the selected rows, so other rows
+          // mean other inputs too, and the rows are what the user changed.
+          {"backends", joined(c.backends)},
           {"corpus fingerprint", c.fingerprint},
           {"settings", joined(c.settings)},
-          {"backends", joined(c.backends)},
           {"--require", joined(c.require)},
           {"campaign cases", std::to_string(c.cases)},
           {"shard count", std::to_string(r.shard.count)}};
