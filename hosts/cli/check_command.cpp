@@ -25,7 +25,7 @@ struct CheckArgs {
   std::string data_dir = CorpusOptions{}.data_dir;
   std::uint64_t seed = 1;
   long cases = 0;
-  bool verbose = false, generated_only = false;
+  bool verbose = false, generated_only = false, limits_only = false;
   BackendOptions backend_options;
   std::string globals;  // the global options given (--dut, --disable-isa ...): they shape the run
   CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr,
@@ -60,6 +60,7 @@ std::string command_line(const CheckArgs& a) {
   c += " --seed " + std::to_string(a.seed);
   if (a.shard_opt->count() > 0) c += " --shard " + a.shard;
   if (a.generated_only) c += " --generated-only";
+  if (a.limits_only) c += " --limits-only";
   if (a.data_opt->count() > 0) c += " --data " + shell_word(a.data_dir);
   if (!a.backend_options.device.empty()) c += " --device " + shell_word(a.backend_options.device);
   if (a.backend_options.threads != 0)
@@ -95,7 +96,13 @@ int run_check_command(const CheckArgs& a) {
   o.backend_options = a.backend_options;
   o.corpus.seed = a.seed;
   o.corpus.data_dir = a.data_dir;
-  o.corpus.real = !a.generated_only;
+  if (a.limits_only && a.cases > 0)
+    throw InputError(
+        "--limits-only: the limit cases are part of the fixed corpus, not of a fuzz "
+        "campaign (--cases)" +
+        std::string(kHelp));
+  o.corpus.limits_only = a.limits_only;
+  o.corpus.real = !a.generated_only && !a.limits_only;
   o.command = command_line(a);
   const BuildIdentity built = build_identity();
   o.pxflow_version = built.version;
@@ -162,6 +169,9 @@ Command add_check_command(CLI::App& app) {
   a->data_opt = add_data_option(*sub, a->data_dir);
   sub->add_flag("--generated-only", a->generated_only,
                 "Skip the real frames (random, hostile, threshold cases only)");
+  sub->add_flag("--limits-only", a->limits_only,
+                "Only the limit cases: each backend at the edges its unsupported() declares, and "
+                "SPEC's corners (docs/harness.md)");
   sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
   a->repro_dir_opt = sub->add_option(
       "--repro-dir", a->repro_dir,

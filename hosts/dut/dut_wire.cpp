@@ -233,6 +233,11 @@ void parse_records(std::span<const std::uint8_t> body, std::uint32_t first, std:
                    std::span<PoiRecord> out) {
   Reader r(body, "RECORDS reply");
   const std::uint32_t got_first = r.u32("first"), got_count = r.u32("count");
+  // Bytes past the records asked for are the stream's guard zone (guard_zone.hpp's message).
+  const std::size_t asked = std::size_t{PXDUT_RECORD_BYTES} * count;
+  if (got_first == first && count > 0 && body.size() > 8 + asked)
+    throw WireError("wrote past its output (" + std::to_string(body.size() - 8 - asked) +
+                    " bytes after record " + std::to_string(first + count - 1) + ")");
   if (got_first != first || got_count != count)
     throw WireError("RECORDS reply holds records " + std::to_string(got_first) + " + " +
                     std::to_string(got_count) + ", asked for " + std::to_string(first) + " + " +

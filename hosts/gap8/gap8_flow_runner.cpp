@@ -12,6 +12,7 @@
 #include "gap8/elf_loader.h"
 #include "gap8_kernel_elf.hpp"
 #include "grid.hpp"
+#include "guard_zone.hpp"
 #include "spec_params.hpp"
 
 namespace pxflow::gap8_host {
@@ -53,6 +54,14 @@ std::uint32_t symbol(const gap8::ElfImage& image, const std::string& name) {
   return it->second;
 }
 
+// The model's result areas sit between guard zones (guard_zone.hpp): in L2 a guard between the
+// frames and the records, one between the records and the kernel's results, one after those; in
+// L1 the free heap past the kernel's last allocation: the records are its last but for the fast
+// variant's tables, which it places after them when they fit (kernels/gap8/fast_tables.c), so
+// the whole free heap is filled and, after the run, checked from the allocator's final mark
+// (gap8_model/runtime/runtime.c's l1_next) to the heap's end.
+constexpr std::uint32_t kL2Guards = 3 * kGuardBytes;
+
 std::uint32_t pair_io_bytes(const Params& p) {
   const std::uint64_t frame = std::uint64_t(p.width) * p.height;
   return align_up(2 * frame) + align_up(poi_count(p) * sizeof(PoiRecord)) +
@@ -70,7 +79,9 @@ FlowRunner::FlowRunner(Gap8Variant variant) {
   entry_ = image.entry;
   params_addr_ = symbol(image, "pxflow_params");
   io_base_ = align_up(symbol(image, "__bss_end"));
-  l1_heap_bytes_ = symbol(image, "__l1_heap_end") - symbol(image, "__l1_heap_start");
+  l1_heap_start_ = symbol(image, "__l1_heap_start");
+  l1_heap_bytes_ = symbol(image, "__l1_heap_end") - l1_heap_start_;
+  l1_next_addr_ = symbol(image, "l1_next");
   planes_ = info.half_pixel == Gap8HalfPixel::kGlobalPlanes ? 3 : 0;
   // Only the loaded part of L2 is copied into each new cluster: the rest is zero anyway.
   l2_image_.resize(io_base_ - GAP8_L2_BASE);
@@ -83,15 +94,17 @@ std::string FlowRunner::unsupported(const Params& p) const {
   if (frame > GAP8_L1_SIZE) return "does not fit L1: a frame alone is larger than the 64 KiB TCDM";
   const std::uint32_t need = align_up(
       pxflow_gap8_l1_bytes(p.width, p.height, static_cast<std::uint32_t>(poi_count(p)), planes_));
-  if (need > l1_heap_bytes_)
-    return "does not fit L1: " + what + " need " + std::to_string(need) + " bytes, the L1 heap " +
-           "beside 8 core stacks has " + std::to_string(l1_heap_bytes_);
-  if (pair_io_bytes(p) > GAP8_L2_BASE + GAP8_L2_SIZE - io_base_) return "does not fit L2";
+  if (need + kGuardBytes > l1_heap_bytes_)
+    return "does not fit L1: " + what + " need " + std::to_string(need) + " bytes and " +
+           std::to_string(kGuardBytes) + " of guard, the L1 heap beside 8 core stacks has " +
+           std::to_string(l1_heap_bytes_);
+  if (pair_io_bytes(p) + kL2Guards > GAP8_L2_BASE + GAP8_L2_SIZE - io_base_)
+    return "does not fit L2";
   return {};
 }
 
 std::size_t FlowRunner::pairs_per_chunk(const Params& p) const {
-  return (GAP8_L2_BASE + GAP8_L2_SIZE - io_base_) / pair_io_bytes(p);
+  return (GAP8_L2_BASE + GAP8_L2_SIZE - io_base_ - kL2Guards) / pair_io_bytes(p);
 }
 
 BatchStats FlowRunner::run(std::span<const FramePair> pairs, const Params& p,
@@ -139,8 +152,12 @@ void FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
   block.cores = options.cores;
   block.split = options.chunked ? PXFLOW_GAP8_SPLIT_CHUNKED : PXFLOW_GAP8_SPLIT_ROUND_ROBIN;
   block.frames_l2 = io_base_;
-  block.records_l2 = io_base_ + align_up(std::uint64_t(2) * frame * n);
-  block.results_l2 = block.records_l2 + align_up(std::uint64_t(rec_bytes) * n);
+  block.records_l2 = io_base_ + align_up(std::uint64_t(2) * frame * n) + kGuardBytes;
+  block.results_l2 = block.records_l2 + align_up(std::uint64_t(rec_bytes) * n) + kGuardBytes;
+  const std::uint32_t results_end =
+      block.results_l2 + static_cast<std::uint32_t>(n * sizeof(pxflow_gap8_result));
+  const std::uint32_t l1_records_end =
+      l1_heap_start_ + align_up(pxflow_gap8_l1_bytes(p.width, p.height, pois, planes_));
 
   gap8::ClusterConfig config;
   config.cores = options.cores;
@@ -157,12 +174,51 @@ void FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
       for (int y = 0; y < p.height; ++y, at += p.width) mem.Write(at, f.row(y), p.width);
     }
   }
+  // Guards: the gaps between the L2 areas (up to the next area's start) and after the last.
+  const std::uint32_t l2_records_end = block.records_l2 + rec_bytes * static_cast<std::uint32_t>(n);
+  struct Zone {
+    std::uint32_t at, bytes;
+  };
+  const std::uint32_t frames_end = io_base_ + 2 * frame * static_cast<std::uint32_t>(n);
+  const Zone before_l2{frames_end, block.records_l2 - frames_end};
+  const Zone after_l2{l2_records_end, block.results_l2 - l2_records_end};
+  const Zone after_results{results_end, kGuardBytes};
+  const std::uint32_t l1_heap_end = l1_heap_start_ + l1_heap_bytes_;
+  const Zone free_l1{l1_records_end, l1_heap_end - l1_records_end};
+  const std::vector<std::uint8_t> sentinel(std::max(kGuardBytes * 2, std::size_t{free_l1.bytes}),
+                                           kGuardByte);
+  for (const Zone& z : {before_l2, after_l2, after_results, free_l1})
+    mem.Write(z.at, sentinel.data(), z.bytes);
   cluster.Start(entry_);
   const gap8::RunResult result = cluster.Run();
   if (result.fault) throw BackendError("gap8: kernel faulted: " + result.fault->Message());
   if (result.exit_code != 0)
     throw BackendError("gap8: kernel exited with status " + std::to_string(result.exit_code));
 
+  const std::uint8_t planted = 0;
+  if (options.plant_past_l2_records)
+    mem.Write(l2_records_end + options.plant_past_l2_records - 1, &planted, 1);
+  if (options.plant_past_l1_records)
+    mem.Write(l1_records_end + options.plant_past_l1_records - 1, &planted, 1);
+  auto zone = [&](const Zone& z) {
+    std::vector<std::uint8_t> bytes(z.bytes);
+    mem.Read(z.at, bytes.data(), z.bytes);
+    return bytes;
+  };
+  const std::uint32_t records = pois * static_cast<std::uint32_t>(n);
+  check_guard_before(zone(before_l2), "gap8 model (L2 records)");
+  check_guard_after(zone(after_l2), records, "gap8 model (L2 records)");
+  check_guard_after(zone(after_results), n, "gap8 model (L2 results, per pair)");
+  // In L1 the records of the last pair run are the last allocation, or the fast tables are.
+  std::uint32_t l1_next = 0;
+  mem.Read(l1_next_addr_, &l1_next, sizeof l1_next);
+  if (l1_next < l1_records_end || l1_next > l1_heap_end)
+    throw BackendError("gap8 model: the kernel's L1 allocations end at " + std::to_string(l1_next) +
+                       ", outside its records' end and the heap's");
+  check_guard_after(zone({l1_next, l1_heap_end - l1_next}), pois,
+                    l1_next == l1_records_end
+                        ? "gap8 model (L1 records)"
+                        : "gap8 model (L1, past the tables after the records)");
   mem.Read(block.records_l2, out.data(), static_cast<std::uint32_t>(rec_bytes * n));
   const std::size_t first = stats.pairs.size();
   stats.pairs.resize(first + n);

@@ -22,6 +22,9 @@ struct RunOptions {
   int cores = 8;           // cluster size and team size, 1..8
   bool contention = true;  // TCDM bank conflicts modelled
   bool chunked = false;    // POIs split in contiguous chunks instead of round robin
+  // Tests only: after the run, a byte stored this many bytes (1-based) past the end of the L2
+  // or L1 records, a planted overrun the guard zones must report.
+  std::uint32_t plant_past_l2_records = 0, plant_past_l1_records = 0;
 };
 
 // What one batch cost on the model, and what the kernel reported per pair.
@@ -57,8 +60,9 @@ class FlowRunner {
   std::uint32_t entry_ = 0;
   std::uint32_t params_addr_ = 0;
   std::uint32_t io_base_ = 0;  // first free L2 byte after the image's .bss
-  std::uint32_t l1_heap_bytes_ = 0;
-  std::uint32_t planes_ = 0;  // full-frame planes of the variant in L1
+  std::uint32_t l1_heap_start_ = 0, l1_heap_bytes_ = 0;
+  std::uint32_t l1_next_addr_ = 0;  // the runtime's L1 allocator's next free byte (an L2 word)
+  std::uint32_t planes_ = 0;        // full-frame planes of the variant in L1
 };
 
 }  // namespace pxflow::gap8_host

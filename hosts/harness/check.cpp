@@ -74,6 +74,16 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
   return out;
 }
 
+// The opened rows' predicates, whose limits the fixed corpus adds cases for.
+std::vector<LimitRow> limit_rows(const std::vector<Contender>& contenders) {
+  std::vector<LimitRow> rows;
+  for (const Contender& k : contenders)
+    if (k.backend)
+      rows.push_back(
+          {k.row->name, [b = k.backend.get()](const Params& p) { return b->unsupported(p); }});
+  return rows;
+}
+
 std::string block_dump(const FrameView& f, int x, int y) {
   std::ostringstream s;
   for (int r = 0; r < 8; ++r) {
@@ -99,6 +109,7 @@ class Checker {
       ++k.outcome.not_applicable;
       return true;
     }
+    if (is_limit_case(c)) k.outcome.limits.push_back(limit_entry(c));
     std::vector<FramePair> views;
     std::vector<std::string> names;
     for (const auto& p : c.pairs) views.push_back(p.view()), names.push_back(p.name);
@@ -210,7 +221,7 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
 
   // The fixed corpus is built whole in every shard (its fingerprint covers every case); a fuzz
   // campaign's batches are made one at a time, so that 100,000 pairs never sit in memory.
-  Campaign campaign({o.fuzz_pairs, o.corpus});
+  Campaign campaign({o.fuzz_pairs, o.corpus, limit_rows(contenders)});
   if (o.shard.count > campaign.cases())
     throw InputError("--shard " + o.shard.text() + ": the campaign has " +
                      counted(campaign.cases(), "case") + " (" +

@@ -48,6 +48,8 @@ struct BackendOutcome {
   long pairs = 0;
   double seconds = 0;                 // host time inside run()
   std::vector<std::string> failures;  // the mismatch lines printed
+  // The limit cases it ran, n/a ones not (check_limits.hpp: limit_entry()).
+  std::vector<std::string> limits;
 };
 
 // What campaign a results file belongs to: shards merge only when all of it is equal.

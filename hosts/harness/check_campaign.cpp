@@ -76,7 +76,8 @@ Campaign::Campaign(const CampaignOptions& o) : fuzz_pairs_(o.fuzz_pairs), seed_(
       settings_.push_back(c.setting);
     }
   } else {
-    corpus_ = build_check_corpus(o.corpus);
+    if (!o.corpus.limits_only) corpus_ = build_check_corpus(o.corpus);
+    for (CheckCase& c : limit_cases(o.limit_rows, seed_)) corpus_.push_back(std::move(c));
     cases_ = static_cast<long>(corpus_.size());
     for (const CheckCase& c : corpus_) {
       h.add(c);

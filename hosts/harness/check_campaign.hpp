@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "check_corpus.hpp"
+#include "check_limits.hpp"
 
 namespace pxflow {
 
@@ -32,6 +33,8 @@ CaseRange shard_range(long cases, const Shard& s);
 struct CampaignOptions {
   long fuzz_pairs = 0;  // > 0: a fuzz campaign of that many random pairs; 0: the fixed corpus
   CorpusOptions corpus;
+  // The selected rows whose limits the fixed corpus adds cases for (check_limits.hpp).
+  std::vector<LimitRow> limit_rows;
 };
 
 class Campaign {

@@ -23,12 +23,14 @@ struct CheckCase {
 // The version of what build_check_corpus() and a fuzz campaign's batches contain. Raise it with
 // every change to the cases, their order, their pairs or their parameters: check files record it
 // and `pxflow merge` refuses shards of different versions.
-inline constexpr int kCheckCorpusVersion = 1;
+inline constexpr int kCheckCorpusVersion = 2;  // 2: the limit cases (check_limits.hpp)
 
 struct CorpusOptions {
   std::uint64_t seed = 1;
   std::string data_dir = kSampleDataDir;
   bool real = true;  // false: generated inputs only (no files needed)
+  // Only the limit cases (check_limits.hpp): CI's sanitizer stage runs them alone.
+  bool limits_only = false;
 };
 
 // The fixed corpus. Throws InputError when a real frame cannot be read (say which file and that

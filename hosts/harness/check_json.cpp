@@ -26,6 +26,7 @@ const std::array kBackendOutcomeFields{
     member_field<&BackendOutcome::implementation>("implementation"),
     member_field<&BackendOutcome::device>("device"),
     member_field<&BackendOutcome::failures>("failures", false),  // lines: results.json only
+    member_field<&BackendOutcome::limits>("limits", false),
 };
 
 Json campaign_json(const CampaignInfo& c) {

@@ -28,9 +28,11 @@ std::vector<std::pair<std::string, std::string>> identity(const CheckReport& r) 
           {"--cases", std::to_string(c.fuzz_pairs)},
           {"--generated-only", c.generated_only ? "yes" : "no"},
           {"corpus version", std::to_string(c.corpus_version)},
+          // Before the fingerprint: the limit cases come from the selected rows, so other rows
+          // mean other inputs too, and the rows are what the user changed.
+          {"backends", joined(c.backends)},
           {"corpus fingerprint", c.fingerprint},
           {"settings", joined(c.settings)},
-          {"backends", joined(c.backends)},
           {"--require", joined(c.require)},
           {"campaign cases", std::to_string(c.cases)},
           {"shard count", std::to_string(r.shard.count)}};
@@ -68,6 +70,7 @@ BackendOutcome merge_backend(const std::vector<const BackendOutcome*>& parts,
     reference |= b.state == BackendState::kReference;
     m.passed += b.passed, m.failed += b.failed, m.not_applicable += b.not_applicable;
     m.pairs += b.pairs, m.seconds += b.seconds;
+    m.limits.insert(m.limits.end(), b.limits.begin(), b.limits.end());  // shards: disjoint cases
     auto add = [](std::vector<std::string>& to, const std::string& v) {
       if (!v.empty() && std::find(to.begin(), to.end(), v) == to.end()) to.push_back(v);
     };

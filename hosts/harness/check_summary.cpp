@@ -51,6 +51,37 @@ std::string scope(const CheckReport& r) {
   return ran + format(" in %.2f s", r.seconds);
 }
 
+// "limits/KIND of ROW,ROW SETTING": the entries found from this row's own predicate, short.
+std::string own_limits(const BackendOutcome& b) {
+  std::string s;
+  for (const std::string& e : b.limits) {
+    const auto of = e.find(" of ");
+    if (of == std::string::npos) continue;
+    const auto rows_end = e.find(' ', of + 4);
+    std::string rows(1, ',');  // ",a,b," holds ",NAME," when the row is one of them
+    rows.append(e, of + 4, rows_end - of - 4).push_back(',');
+    std::string name(1, ',');
+    name.append(b.name).push_back(',');
+    if (rows.find(name) == std::string::npos) continue;
+    s += (s.empty() ? "" : "; ") + e.substr(7, of - 7) + e.substr(rows_end);
+  }
+  return s;
+}
+
+// Which limit cases each row ran (check_limits.hpp); the check file lists them all.
+void print_limits(const CheckReport& r, std::ostream& out) {
+  bool any = false;
+  for (const auto& b : r.backends) any |= !b.limits.empty();
+  if (!any) return;
+  out << "limit cases run (n/a ones not; its own: found from the row's unsupported()):\n";
+  for (const auto& b : r.backends) {
+    if (b.limits.empty()) continue;
+    const std::string own = own_limits(b);
+    out << "  " << b.name << ": " << b.limits.size() << (own.empty() ? "" : ", its own: " + own)
+        << "\n";
+  }
+}
+
 }  // namespace
 
 std::string missing_shards_text(const std::vector<int>& missing, int count) {
@@ -70,6 +101,7 @@ void print_check_summary(const CheckReport& r, std::ostream& out) {
                   b.passed + b.failed, b.pairs, b.not_applicable, b.seconds)
         << (n.empty() ? "" : "  " + n) << "\n";
   }
+  print_limits(r, out);
   out << scope(r) << "\n";
   out << r.passed << " passed, " << r.failed << " failed, " << r.skipped << " skipped\n";
   if (r.compared == 0)

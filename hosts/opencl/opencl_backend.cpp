@@ -145,9 +145,11 @@ void OpenclBackend::run_chunks(std::span<const FramePair> pairs, const Params& p
     const std::size_t n = std::min(per_chunk, pairs.size() - first);
     set_arguments(p, n * pois);
     const auto in = upload(pairs.subspan(first, n), p);
+    records_.arm(queue_.get(), n * pois * sizeof(PoiRecord));
     const auto kernel = launch(n * pois);
     await_kernel(kernel.get(), DeviceWork{n, pois, p.search_radius});
     const auto back = download(out.subspan(first * pois, n * pois));
+    records_.check(queue_.get(), n * pois * sizeof(PoiRecord), n * pois, "opencl");
     account(in.get(), kernel.get(), back.get());
   }
 }
@@ -162,14 +164,7 @@ void OpenclBackend::reserve_buffers(std::size_t frame_bytes, std::size_t record_
     cl::check(err, "clCreateBuffer (" + std::to_string(frame_bytes) + " bytes of frames)");
     frames_capacity_ = frame_bytes;
   }
-  if (record_bytes > records_capacity_) {
-    records_.reset();
-    records_capacity_ = 0;
-    records_.reset(
-        clCreateBuffer(program_->context.get(), CL_MEM_WRITE_ONLY, record_bytes, nullptr, &err));
-    cl::check(err, "clCreateBuffer (" + std::to_string(record_bytes) + " bytes of records)");
-    records_capacity_ = record_bytes;
-  }
+  records_.reserve(program_->context.get(), program_->device.device, record_bytes);
 }
 
 }  // namespace pxflow

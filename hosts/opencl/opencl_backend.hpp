@@ -9,6 +9,7 @@
 #include <string>
 
 #include "backend.hpp"
+#include "cl_guarded_buffer.hpp"
 #include "cl_program.hpp"
 #include "device_wait.hpp"
 
@@ -90,8 +91,9 @@ class OpenclBackend final : public Backend {
   std::shared_ptr<const cl::DeviceProgram> program_;
   cl::Owned<cl_command_queue> queue_;
   cl::Owned<cl_kernel> kernel_;
-  cl::Owned<cl_mem> frames_, records_;
-  std::size_t frames_capacity_ = 0, records_capacity_ = 0;
+  cl::Owned<cl_mem> frames_;
+  cl::GuardedBuffer records_;  // the records between guard zones, checked after every launch
+  std::size_t frames_capacity_ = 0;
   std::size_t group_size_ = 0;
   Limits limits_;
   OpenclTiming timing_;

@@ -30,7 +30,7 @@ void set_arg(cl_kernel kernel, cl_uint index, const T& value) {
 void OpenclBackend::set_arguments(const Params& p, std::size_t total_pois) {
   cl_kernel k = kernel_.get();
   set_arg(k, 0, frames_.get());
-  set_arg(k, 1, records_.get());
+  set_arg(k, 1, records_.records());
   set_arg(k, 2, cl_int{p.width});
   set_arg(k, 3, cl_int{p.height});
   set_arg(k, 4, cl_int{p.search_radius});
@@ -102,14 +102,14 @@ void OpenclBackend::abandon(const std::string& line) {
   (void)queue_.release();
   (void)kernel_.release();
   (void)frames_.release();
-  (void)records_.release();
+  records_.leak();
 }
 
 // Runs only once the kernel completed (await_kernel), so this blocking read never waits on a
 // kernel, and nothing is left to write into `out` once run() returned or threw.
 cl::Owned<cl_event> OpenclBackend::download(std::span<PoiRecord> out) {
   cl_event event = nullptr;
-  cl::check(clEnqueueReadBuffer(queue_.get(), records_.get(), CL_TRUE, 0, out.size_bytes(),
+  cl::check(clEnqueueReadBuffer(queue_.get(), records_.records(), CL_TRUE, 0, out.size_bytes(),
                                 out.data(), 0, nullptr, &event),
             "reading the records back from '" + device_name() + "'");
   return cl::Owned<cl_event>{event};

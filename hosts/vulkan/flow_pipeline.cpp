@@ -115,7 +115,7 @@ void FlowPipeline::create_descriptor_set() {
   check(vkAllocateDescriptorSets(device_, &alloc, &set_), "vkAllocateDescriptorSets");
 }
 
-void FlowPipeline::bind_buffers(VkBuffer frames, VkBuffer records) {
+void FlowPipeline::bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize records_offset) {
   if (frames_view_) vkDestroyBufferView(device_, frames_view_, nullptr);
   frames_view_ = VK_NULL_HANDLE;
   auto view = zeroed<VkBufferViewCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO);
@@ -123,7 +123,7 @@ void FlowPipeline::bind_buffers(VkBuffer frames, VkBuffer records) {
   view.format = VK_FORMAT_R32_UINT;  // one texel = one word of 4 pixels
   view.range = VK_WHOLE_SIZE;
   check(vkCreateBufferView(device_, &view, nullptr, &frames_view_), "vkCreateBufferView");
-  VkDescriptorBufferInfo records_info{records, 0, VK_WHOLE_SIZE};
+  VkDescriptorBufferInfo records_info{records, records_offset, VK_WHOLE_SIZE};
   VkWriteDescriptorSet writes[2] = {};
   for (std::uint32_t b = 0; b < 2; ++b) {
     writes[b].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;

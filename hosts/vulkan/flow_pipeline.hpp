@@ -38,9 +38,10 @@ class FlowPipeline {
   // Invocations per work-group (the shader's local_size_x), within the device's limits.
   std::uint32_t local_size() const { return local_size_; }
 
-  // Points the descriptor set at the buffers (frames through a texel buffer view made here);
-  // call when they change, never while in use.
-  void bind_buffers(VkBuffer frames, VkBuffer records);
+  // Points the descriptor set at the buffers (frames through a texel buffer view made here; the
+  // records from `records_offset`, past the guard before them, to the buffer's end); call when
+  // they change, never while in use.
+  void bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize records_offset);
 
   // Records binding the pipeline and its descriptor set into `cmd`.
   void bind(VkCommandBuffer cmd) const;

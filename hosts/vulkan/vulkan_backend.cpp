@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <span>
 
 #include "batch_plan.hpp"
 #include "command_runner.hpp"
@@ -10,6 +11,7 @@
 #include "counted.hpp"
 #include "flow_pipeline.hpp"
 #include "grid.hpp"
+#include "guard_zone.hpp"
 #include "host_buffer.hpp"
 #include "vk_error.hpp"
 
@@ -149,30 +151,42 @@ vk::FlowPipeline& VulkanBackend::pipeline_for(int search_radius) {
 }
 
 void VulkanBackend::ensure_buffers(std::uint64_t frame_bytes, std::uint64_t record_bytes) {
-  if (frames_ && records_ && frames_->size() >= frame_bytes && records_->size() >= record_bytes)
-    return;
+  const std::uint64_t align =
+      std::max<std::uint64_t>(1, ctx_->properties().limits.minStorageBufferOffsetAlignment);
+  records_front_ = (kGuardBytes + align - 1) / align * align;
+  const std::uint64_t guarded = records_front_ + record_bytes + kGuardBytes;
+  if (frames_ && records_ && frames_->size() >= frame_bytes && records_->size() >= guarded) return;
   records_.reset();
   frames_.reset();
   frames_ = std::make_unique<vk::HostBuffer>(*ctx_, frame_bytes);
-  records_ = std::make_unique<vk::HostBuffer>(*ctx_, record_bytes);
+  records_ = std::make_unique<vk::HostBuffer>(*ctx_, guarded);
 }
 
 void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
                               std::span<PoiRecord> out) {
   const vk::BatchLayout layout = vk::batch_layout(p);
-  ensure_buffers(pairs.size() * layout.pair_bytes, out.size_bytes());
+  const std::size_t overrun_pairs =
+      (config_.overrun_items + layout.pois_per_pair - 1) / layout.pois_per_pair;
+  ensure_buffers((pairs.size() + overrun_pairs) * layout.pair_bytes, out.size_bytes());
   for (std::size_t n = 0; n < pairs.size(); ++n) {
     std::byte* prev = frames_->data() + n * layout.pair_bytes;
     pack_frame(pairs[n].prev, prev, layout.words_per_frame);
     pack_frame(pairs[n].next, prev + layout.pair_bytes / 2, layout.words_per_frame);
   }
   vk::FlowPipeline& pipeline = pipeline_for(p.search_radius);
-  pipeline.bind_buffers(frames_->buffer(), records_->buffer());  // no submission is pending here
+  // No submission is pending here.
+  pipeline.bind_buffers(frames_->buffer(), records_->buffer(), records_front_);
+  auto* const guarded = reinterpret_cast<std::uint8_t*>(records_->data());
+  const std::span<std::uint8_t> before(guarded, records_front_);
+  const std::span<std::uint8_t> after(guarded + records_front_ + out.size_bytes(),
+                                      records_->size() - records_front_ - out.size_bytes());
+  fill_guard(before);
+  fill_guard(after);
   const std::uint32_t local = pipeline.local_size();
   const std::uint32_t max_groups = config_.max_groups_per_dispatch
                                        ? config_.max_groups_per_dispatch
                                        : ctx_->properties().limits.maxComputeWorkGroupCount[0];
-  const std::uint64_t items = out.size();
+  const std::uint64_t items = out.size() + config_.overrun_items;
   const std::uint64_t per_dispatch = std::uint64_t(max_groups) * local;
   vk::FlowPushConstants pc = push_constants(p, layout);
   runner_->run(
@@ -188,7 +202,9 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
         barrier_to_host(cmd);
       },
       DeviceWork{pairs.size(), layout.pois_per_pair, p.search_radius});
-  std::memcpy(out.data(), records_->data(), out.size_bytes());
+  std::memcpy(out.data(), guarded + records_front_, out.size_bytes());
+  check_guard_before(before, "vulkan");
+  check_guard_after(after, out.size(), "vulkan");
 }
 
 void VulkanBackend::fail_on_validation_messages() const {

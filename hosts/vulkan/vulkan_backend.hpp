@@ -28,6 +28,9 @@ struct VulkanConfig {
   // lavapipe and under GPU watchdogs.
   std::uint64_t max_chunk_work = 1ull << 31;
   std::uint32_t max_groups_per_dispatch = 0;  // 0 = the device's maxComputeWorkGroupCount[0]
+  // Tests only: dispatch this many items past the output (with frames for them), a planted
+  // overrun the guard after the records must catch.
+  std::uint32_t overrun_items = 0;
 };
 
 class VulkanBackend final : public Backend {
@@ -67,7 +70,10 @@ class VulkanBackend final : public Backend {
   std::map<int, std::unique_ptr<vk::FlowPipeline>> pipelines_;  // by search radius
   std::unique_ptr<vk::CommandRunner> runner_;
   std::unique_ptr<vk::HostBuffer> frames_;
+  // The records between guard zones (hosts/core/guard_zone.hpp): records_front_ bytes of guard
+  // (the device's storage buffer offset alignment), the records, kGuardBytes of guard.
   std::unique_ptr<vk::HostBuffer> records_;
+  std::uint64_t records_front_ = 0;
   std::optional<double> last_device_seconds_;
   std::size_t last_chunks_ = 0;
   std::size_t last_dispatches_ = 0;

@@ -37,7 +37,8 @@ TEST_CASE("a backend that flips one bit fails with one line naming the field", "
   CHECK(r.out.find("poi=3 (x=23,y=5) field=sub[2]") != std::string::npos);
   CHECK(r.out.find("pair=") != std::string::npos);
   CHECK(r.out.find("seed=") != std::string::npos);
-  CHECK(last_line(r.out).find("0 passed") == 0);
+  // Every generated case fails (some limit cases, FT = 65535 say, accept no POI: nothing to flip).
+  CHECK(r.out.find("test-bitflip   failed") != std::string::npos);
   CHECK(last_line(r.out).find(" failed, 0 skipped") != std::string::npos);
 }
 
@@ -53,8 +54,8 @@ TEST_CASE("correct backends pass: the summary line counts cases", "[check]") {
   INFO(r.out);
   CHECK(r.exit_code == 0);
   CHECK(r.out.find("FAIL") == std::string::npos);
-  // 4 settings x 4 generated cases, 2 backends
-  CHECK(last_line(r.out) == "32 passed, 0 failed, 0 skipped");
+  // 4 settings x 4 generated cases and 17 limit cases (check_limits.hpp), 2 backends
+  CHECK(last_line(r.out) == "66 passed, 0 failed, 0 skipped");
 }
 
 TEST_CASE("a backend that cannot run is skipped with its reason, or fails when required",
@@ -62,7 +63,7 @@ TEST_CASE("a backend that cannot run is skipped with its reason, or fails when r
   auto r = check({"--backends", "test-unavailable,ref-local", "--generated-only"});
   CHECK(r.exit_code == 0);
   CHECK(r.out.find("skip test-unavailable (no such device here (test row))") != std::string::npos);
-  CHECK(last_line(r.out) == "16 passed, 0 failed, 16 skipped");
+  CHECK(last_line(r.out) == "33 passed, 0 failed, 33 skipped");
   r = check({"--backends", "test-unavailable,ref-local", "--require", "test-unavailable",
              "--generated-only"});
   CHECK(r.exit_code == 1);
@@ -88,8 +89,29 @@ TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   const auto r = check({"--backends", "test-small-only", "--generated-only"});
   INFO(r.out);
   CHECK(r.exit_code == 0);
-  CHECK(last_line(r.out) == "8 passed, 0 failed, 0 skipped");  // the 8 cases at 64x64
-  CHECK(r.out.find("       8 ") != std::string::npos);         // the n/a column
+  // The 8 generated cases at 64x64 and the 16 limit cases within 64x64 (its own edges among
+  // them: the largest square it accepts, 64x64, and the strips 64x19 and 19x64).
+  CHECK(last_line(r.out) == "24 passed, 0 failed, 0 skipped");
+  CHECK(r.out.find(" 270    11 ") != std::string::npos);  // pairs, then the n/a column
+  CHECK(r.out.find("test-small-only: 16, its own: ") != std::string::npos);
+  CHECK(r.out.find("largest-square 64x64 S=4 B=8; widest 64x19 S=4 B=8; tallest 19x64") !=
+        std::string::npos);
+  // The check file lists them per backend; --limits-only runs them alone.
+  pxflow::test::TempDir dir;
+  const auto only =
+      check({"--backends", "test-small-only", "--limits-only", "--json", dir.path("l.json")});
+  CHECK(only.exit_code == 0);
+  CHECK(last_line(only.out) == "16 passed, 0 failed, 0 skipped");
+  std::ifstream in(dir.path("l.json"));
+  const auto j = nlohmann::json::parse(in);
+  const auto limits = j["backends"][0]["limits"].get<std::vector<std::string>>();
+  CHECK(limits.size() == 16);
+  CHECK(std::find(limits.begin(), limits.end(),
+                  "limits/largest-square of test-small-only 64x64 S=4 B=8") != limits.end());
+  const auto fuzz = check({"--limits-only", "--cases", "5"});
+  CHECK(fuzz.exit_code == 2);
+  CHECK(fuzz.err.find("--limits-only: the limit cases are part of the fixed corpus") !=
+        std::string::npos);
 }
 
 TEST_CASE("fuzz campaign, JSON file, and bad arguments", "[check]") {

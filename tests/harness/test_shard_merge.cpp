@@ -78,7 +78,7 @@ void require_same_results(const json& whole, const json& merged) {
     const json &w = whole["backends"][b], &g = merged["backends"][b];
     INFO(w["backend"]);
     for (const char* key : {"backend", "state", "reason", "implementation", "device", "passed",
-                            "failed", "not_applicable", "pairs", "failures"})
+                            "failed", "not_applicable", "pairs", "failures", "limits"})
       CHECK(w[key] == g[key]);
   }
 }
@@ -124,11 +124,12 @@ TEST_CASE("shard: the fixed corpus splits too, with skips, n/a and a required ba
                        5, 1);
   require_same_results(whole, merged);
   CHECK(whole["campaign"]["kind"] == "fixed-corpus");
-  CHECK(whole["campaign"]["cases"] == 16);
-  CHECK(whole["backends"][2]["not_applicable"] == 8);   // test-small-only above 64x64
+  // 16 generated cases and 21 limit cases (check_limits.hpp) of the three rows that opened.
+  CHECK(whole["campaign"]["cases"] == 37);
+  CHECK(whole["backends"][2]["not_applicable"] == 13);  // test-small-only above 64x64
   CHECK(whole["backends"][3]["failures"].size() == 1);  // "required but cannot run", once
   CHECK(whole["backends"][3]["failed"] == 0);           // no case ran ...
-  CHECK(whole["failed"].get<long>() >= 16);             // ... but all 16 count as failed
+  CHECK(whole["failed"].get<long>() >= 37);             // ... but all 37 count as failed
   CHECK(merged["merged_from"].size() == 5);
 
   // Without the requirement the unavailable backend is skipped in every shard: skipped merged.
@@ -136,30 +137,30 @@ TEST_CASE("shard: the fixed corpus splits too, with skips, n/a and a required ba
   const auto [w2, m2] = whole_and_merged(
       dir2, {"--backends", "ref-local,test-unavailable", "--generated-only"}, 2, 0);
   require_same_results(w2, m2);
-  CHECK(w2["skipped"] == 16);
+  CHECK(w2["skipped"] == 33);  // 16 generated cases and 17 limit cases
   CHECK(m2["backends"][1]["state"] == "skipped");
 }
 
 TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the campaign", "[shard]") {
   TempDir dir;
-  // The generated corpus is 4 cases per setting: shard 4/4 holds the 640x480 ones, n/a for
-  // test-small-only.
+  // The generated corpus is 4 cases per setting, then 19 limit cases: of 7 shards of these 35
+  // cases, shard 3/7 holds cases 10..14, the 320x240 and 640x480 ones, n/a for test-small-only.
   std::vector<std::string> merge = {"merge", dir.path("m.json")};
-  for (int k = 1; k <= 4; ++k) {
+  for (int k = 1; k <= 7; ++k) {
     const std::string file = dir.path(numbered_json("s", k));
     const RunResult r = pxflow_run({"check", "--backend", "test-small-only", "--generated-only",
-                                    "--shard", std::to_string(k) + "/4", "--json", file});
+                                    "--shard", std::to_string(k) + "/7", "--json", file});
     INFO(r.out);
     CHECK(r.exit_code == 0);
     const json j = read(file);
-    CHECK(j["verdict"] == (k <= 2 ? "passed" : "nothing-checked"));
-    if (k > 2)
+    CHECK(j["verdict"] == (k != 3 ? "passed" : "nothing-checked"));
+    if (k == 3)
       CHECK(r.out.find("compared nothing: exit 0, pxflow merge judges") != std::string::npos);
     merge.push_back(file);
   }
   const RunResult m = pxflow_run(merge);
   CHECK(m.exit_code == 0);
-  CHECK(read(dir.path("m.json"))["passed"] == 8);
+  CHECK(read(dir.path("m.json"))["passed"] == 24);
   // A campaign in which no shard compared anything tested nothing: merge exits 1.
   std::vector<std::string> skipped = {"merge", "-"};
   for (int k = 1; k <= 2; ++k) {
@@ -268,7 +269,8 @@ TEST_CASE("merge: the merged file is a check file pxflow report accepts", "[shar
                                   "--no-accuracy", "--backends", "ref-original"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 0);
-  CHECK(slurp(dir.path("report/report.md")).find("16 cases (300 frame pairs)") !=
+  // 16 generated and 17 limit cases.
+  CHECK(slurp(dir.path("report/report.md")).find("33 cases (332 frame pairs)") !=
         std::string::npos);
 }
 
@@ -340,7 +342,7 @@ TEST_CASE("check --shard, --backend and --json -: the options and their errors",
   CHECK(j["backends"][0]["backend"] == "test-bitflip");
   CHECK(j["command"] ==
         "pxflow check --backend test-bitflip --seed 1 --generated-only --json - --no-repro");
-  CHECK(j["shard"] == json({{"index", 1}, {"count", 1}, {"first_case", 0}, {"end_case", 16}}));
+  CHECK(j["shard"] == json({{"index", 1}, {"count", 1}, {"first_case", 0}, {"end_case", 33}}));
   CHECK(r.err.find("FAIL test-bitflip case=") != std::string::npos);
   CHECK(last_line(r.err).find(" failed, 0 skipped") != std::string::npos);
 }
@@ -351,8 +353,9 @@ TEST_CASE("check: progress counts the fixed corpus against its total, the summar
       pxflow_run({"check", "--backend", "ref-local", "--generated-only", "--progress"});
   INFO(r.err);
   CHECK(r.exit_code == 0);
-  CHECK(r.err.find("check: 1 of 16 cases, 96 of 300 pairs") != std::string::npos);
-  CHECK(r.out.find("16 cases, 300 pairs in ") != std::string::npos);
+  // 16 generated cases of 300 pairs, 17 limit cases of 32 (check_limits.hpp).
+  CHECK(r.err.find("check: 1 of 33 cases, 96 of 332 pairs") != std::string::npos);
+  CHECK(r.out.find("33 cases, 332 pairs in ") != std::string::npos);
   const RunResult s = pxflow_run(
       {"check", "--backend", "ref-local", "--cases", "600", "--shard", "2/2", "--progress"});
   CHECK(s.exit_code == 0);
@@ -371,7 +374,7 @@ TEST_CASE("check names the implementation the cpu row dispatched to", "[shard]")
   CHECK(!isa.empty());
   CHECK(isa != "cpu");           // one of the ISA rows: swar, sse2, ..., avx512bw
   CHECK(b["device"] == "host");  // as flow --json says it
-  CHECK(r.err.find("passed          16     300     0") != std::string::npos);
+  CHECK(r.err.find("passed          33     332     0") != std::string::npos);  // 17 limit cases
   CHECK(r.err.find("s  " + isa + "\n") != std::string::npos);  // the summary's "runs as" column
 }
 #endif

@@ -113,3 +113,19 @@ TEST_CASE("vulkan: a frame pair beyond the buffer limit is refused untouched", "
                     [](std::uint8_t b) { return b == kUnwrittenSentinel; }));
   CHECK(make_vulkan()->unsupported(p).empty());
 }
+
+TEST_CASE("vulkan: a dispatch past the records hits the guard after them", "[vulkan]") {
+  // The guard zones (hosts/core/guard_zone.hpp): one item more than the output, written by the
+  // real shader into the guard, is the backend's failure; the same run without it passes.
+  const Params p = make_params("px4flow-64", 64, 64);
+  const OwnedPair pair = random_pair(64, 64, 4, 3);
+  const FramePair view = pair.view();
+  std::vector<PoiRecord> out(poi_count(p));
+  OpCounts counts;
+  CHECK_NOTHROW(make_vulkan()->run({&view, 1}, p, out, counts));
+  VulkanConfig config;
+  config.overrun_items = 1;
+  auto vk = make_vulkan(config);
+  CHECK_THROWS_WITH(vk->run({&view, 1}, p, out, counts),
+                    Contains("vulkan: wrote past its output (") && Contains(" after record 63)"));
+}
