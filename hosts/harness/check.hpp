@@ -9,6 +9,7 @@
 #include "backend.hpp"
 #include "check_campaign.hpp"
 #include "check_corpus.hpp"
+#include "isolated_row.hpp"
 #include "result_fields.hpp"
 #include "result_json.hpp"
 
@@ -22,6 +23,9 @@ struct CheckOptions {
   bool verbose = false;               // dump the 8x8 blocks behind each mismatch
   int max_lines_per_case = 5;
   BackendOptions backend_options;
+  // Every row but the reference runs in a worker process (isolated_row.hpp): its command line
+  // and the allowance of a case.
+  IsolationOptions isolation;
   CorpusOptions corpus;
   // Printed once the backends are chosen and opened, so that bad input (an unknown or absent
   // backend, a device that does not exist) leaves no partial output.
