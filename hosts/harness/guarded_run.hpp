@@ -33,7 +33,7 @@ class GuardedRun {
 
   // Guard bytes on each side of the output, at least (a multiple of a record).
   static constexpr std::size_t kGuardRecords = 4;
-  static constexpr std::uint8_t kGuardByte = 0xA5;
+  static constexpr std::uint8_t kGuardByte = 0x5A;  // not the sentinel records' 0xA5
 
  private:
   std::uint8_t* map_ = nullptr;
