@@ -145,6 +145,7 @@ Command add_check_command(CLI::App& app) {
                   "Seconds a backend may take for one case before it is called hung (default: "
                   "an allowance scaled to the case's work and the backend's measured speed; "
                   "docs/harness.md, Isolation)")
+      ->type_name("SECONDS")
       ->check(CLI::Range(0.001, 1e6));
   // Hidden: the worker mode of the check's own worker processes (hosts/harness/check_worker.hpp).
   sub->add_option(worker::kWorkerOption, a->worker_row)->group("");
