@@ -1,7 +1,6 @@
 #include "isolated_row.hpp"
 
 #include <algorithm>
-#include <cstdio>
 
 #include "device_wait.hpp"
 #include "errors.hpp"
@@ -16,12 +15,6 @@ using worker::Reply;
 Clock::time_point after(double seconds) {
   return Clock::now() +
          std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-}
-
-std::string seconds_text(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", s);
-  return buf;
 }
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
@@ -46,7 +39,7 @@ IsolatedRow::Opened IsolatedRow::opened() {
     o.failed = true;
     o.why = "its check worker " +
             (gone.kind == Reply::Kind::kTimedOut
-                 ? "did not open the backend within " + seconds_text(kOpenSeconds) + " s"
+                 ? "did not open the backend within " + setting_text(kOpenSeconds) + " s"
                  : gone.text + " while opening the backend");
     worker_.reset();
     return o;
@@ -107,7 +100,7 @@ IsolatedRow::CaseRun IsolatedRow::run(const CheckCase& c, long index, double ref
       return out;
     case Reply::Kind::kTimedOut:
       worker_.reset();
-      out.failure = "did not finish " + which + " within " + seconds_text(allowed) + " s" +
+      out.failure = "did not finish " + which + " within " + setting_text(allowed) + " s" +
                     (options_.case_timeout > 0 ? " (--case-timeout)"
                                                : " (its allowance; --case-timeout sets another)");
       return out;

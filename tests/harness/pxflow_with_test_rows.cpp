@@ -1,7 +1,10 @@
-// pxflow with three extra registry rows that exist only in this test program, to prove that the
+// pxflow with extra registry rows that exist only in this test program, to prove that the
 // checker catches what it must: a backend that flips one bit, one that leaves a record unwritten,
-// one that cannot run, and one with a documented size limit.
+// one that cannot run, one with a documented size limit, one that crashes and one that hangs.
+#include <chrono>
+#include <csignal>
 #include <cstring>
+#include <thread>
 
 #include "grid.hpp"
 #include "kernel.hpp"
@@ -12,14 +15,17 @@ namespace {
 
 using namespace pxflow;
 
-// Runs ref-original, then damages the output the way `Fault` says.
-enum class Fault { kFlipBit, kSkipRecord, kNone };
+// Runs ref-original, then damages the output the way `Fault` says; or crashes, or never returns.
+enum class Fault { kFlipBit, kSkipRecord, kNone, kCrash, kHang };
 
 class Damaged final : public Backend {
  public:
   Damaged(Fault f, int max_side) : fault_(f), max_side_(max_side) {}
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
            OpCounts& c) override {
+    if (fault_ == Fault::kCrash) std::raise(SIGSEGV);
+    if (fault_ == Fault::kHang)
+      for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
     const std::size_t per = poi_count(p);
     for (std::size_t n = 0; n < pairs.size(); ++n) {
       auto recs = out.subspan(n * per, per);
@@ -55,6 +61,8 @@ int main(int argc, char** argv) {
   add_backend_row(row("test-unwritten", Fault::kSkipRecord, 1 << 20));
   add_backend_row(row("test-unavailable", Fault::kNone, 1 << 20, "no such device here (test row)"));
   add_backend_row(row("test-small-only", Fault::kNone, 64));
+  add_backend_row(row("test-crash", Fault::kCrash, 1 << 20));
+  add_backend_row(row("test-hang", Fault::kHang, 1 << 20));
   // A row whose hardware this machine lacks (as an ISA row on an older CPU).
   BackendRow lacking =
       row("test-no-hardware", Fault::kNone, 1 << 20, "this CPU lacks it (test row)");

@@ -1,8 +1,14 @@
 // pxflow check against backends that are wrong on purpose: the mismatch line, the counts, the
 // exit code, skips, --require, n/a cases, fuzz campaigns and the JSON file.
+#include <signal.h>
+#include <sys/wait.h>
+
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
 
 #include "run_program.hpp"
 
@@ -87,6 +93,43 @@ TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   CHECK(r.exit_code == 0);
   CHECK(last_line(r.out) == "8 passed, 0 failed, 0 skipped");  // the 8 cases at 64x64
   CHECK(r.out.find("       8 ") != std::string::npos);         // the n/a column
+}
+
+TEST_CASE("a backend that crashes or hangs is its row's failure line; the others are checked",
+          "[check]") {
+  const auto r = check(
+      {"--backends", "test-crash,test-hang,ref-local", "--cases", "1", "--case-timeout", "2"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("FAIL test-crash case=random[px4flow-64] killed by SIGSEGV in case 0 'random' "
+                   "pair 0 'random/") != std::string::npos);
+  CHECK(r.out.find("FAIL test-hang case=random[px4flow-64] did not finish case 0 'random' within "
+                   "2 s (--case-timeout)\n") != std::string::npos);
+  CHECK(r.out.find("\nref-local      passed ") != std::string::npos);
+  CHECK(last_line(r.out) == "1 passed, 2 failed, 0 skipped");
+}
+
+TEST_CASE("Ctrl-C stops a check waiting on a worker: exit 130, nothing failed", "[check]") {
+  pxflow::test::TempDir dir;
+  const pid_t pid = pxflow::test::start_program(
+      PXFLOW_WITH_TEST_ROWS, {"check", "--backends", "test-hang", "--cases", "1"}, dir.path("out"),
+      dir.path("err"));
+  // The banner comes once the workers have opened their backends: then the check waits.
+  std::string out;
+  for (int i = 0; i < 600 && out.find("pxflow check:") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::ifstream in(dir.path("out"));
+    out.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  std::ifstream in(dir.path("err"));
+  const std::string err(std::istreambuf_iterator<char>(in), {});
+  INFO(out << err);
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 130));
+  CHECK(err.find("pxflow: interrupted: SIGINT") != std::string::npos);
+  CHECK(out.find("FAIL") == std::string::npos);
 }
 
 TEST_CASE("fuzz campaign, JSON file, and bad arguments", "[check]") {
