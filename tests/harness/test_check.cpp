@@ -101,9 +101,9 @@ TEST_CASE("a backend that crashes or hangs is its row's failure line; the others
       {"--backends", "test-crash,test-hang,ref-local", "--cases", "1", "--case-timeout", "2"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 1);
-  CHECK(r.out.find("FAIL test-crash case=random[px4flow-64] killed by SIGSEGV in case 0 'random' "
+  CHECK(r.out.find("FAIL test-crash case=fuzz[px4flow-64] killed by SIGSEGV in case 0 'fuzz' "
                    "pair 0 'random/") != std::string::npos);
-  CHECK(r.out.find("FAIL test-hang case=random[px4flow-64] did not finish case 0 'random' within "
+  CHECK(r.out.find("FAIL test-hang case=fuzz[px4flow-64] did not finish case 0 'fuzz' within "
                    "2 s (--case-timeout)\n") != std::string::npos);
   CHECK(r.out.find("\nref-local      passed ") != std::string::npos);
   CHECK(last_line(r.out) == "1 passed, 2 failed, 0 skipped");
