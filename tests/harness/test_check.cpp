@@ -95,7 +95,7 @@ TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   CHECK(r.out.find("       8 ") != std::string::npos);         // the n/a column
 }
 
-TEST_CASE("a backend that crashes or hangs is its row's failure line; the others are checked",
+TEST_CASE("a backend that crashes or hangs is its row's failure line, the others are checked",
           "[check]") {
   const auto r = check(
       {"--backends", "test-crash,test-hang,ref-local", "--cases", "1", "--case-timeout", "2"});
@@ -112,20 +112,22 @@ TEST_CASE("a backend that crashes or hangs is its row's failure line; the others
 TEST_CASE("Ctrl-C stops a check waiting on a worker: exit 130, nothing failed", "[check]") {
   pxflow::test::TempDir dir;
   const pid_t pid = pxflow::test::start_program(
-      PXFLOW_WITH_TEST_ROWS, {"check", "--backends", "test-hang", "--cases", "1"}, dir.path("out"),
-      dir.path("err"));
-  // The banner comes once the workers have opened their backends: then the check waits.
-  std::string out;
-  for (int i = 0; i < 600 && out.find("pxflow check:") == std::string::npos; ++i) {
+      PXFLOW_WITH_TEST_ROWS, {"check", "--backends", "test-hang", "--cases", "1", "--progress"},
+      dir.path("out"), dir.path("err"));
+  // The progress line (stderr, unbuffered) comes once the workers have opened their backends and
+  // the case is sent: then the check waits on the hanging worker.
+  std::string progress;
+  for (int i = 0; i < 600 && progress.find("check: 1 of") == std::string::npos; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    std::ifstream in(dir.path("out"));
-    out.assign(std::istreambuf_iterator<char>(in), {});
+    std::ifstream in(dir.path("err"));
+    progress.assign(std::istreambuf_iterator<char>(in), {});
   }
   kill(pid, SIGINT);
   int status = 0;
   waitpid(pid, &status, 0);
-  std::ifstream in(dir.path("err"));
+  std::ifstream in(dir.path("err")), out_file(dir.path("out"));
   const std::string err(std::istreambuf_iterator<char>(in), {});
+  const std::string out(std::istreambuf_iterator<char>(out_file), {});
   INFO(out << err);
   CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 130));
   CHECK(err.find("pxflow: interrupted: SIGINT") != std::string::npos);

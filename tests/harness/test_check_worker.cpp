@@ -26,7 +26,7 @@ TEST_CASE("a case crosses the wire with its params and packed frames", "[worker]
         std::vector<std::uint8_t>{0, 1, 2, 3, 4, 7, 8, 9, 10, 11, 14, 15, 16, 17, 18});
 }
 
-TEST_CASE("hello and done come back equal; a cut message is refused", "[worker]") {
+TEST_CASE("hello and done come back equal, a cut message is refused", "[worker]") {
   const Hello h{Hello::State::kCannotRun, "no device", "impl", "dev"};
   const Hello back = decode_hello(encode(h));
   CHECK((back.state == h.state && back.why == h.why && back.implementation == h.implementation &&
