@@ -5,8 +5,10 @@
 #include <iostream>
 
 #include "check.hpp"
+#include "check_worker.hpp"
 #include "command_line.hpp"
 #include "commands.hpp"
+#include "device_wait.hpp"
 #include "errors.hpp"
 #include "json_document.hpp"
 #include "list_option.hpp"
@@ -25,6 +27,9 @@ struct CheckArgs {
   std::string data_dir = CorpusOptions{}.data_dir;
   std::uint64_t seed = 1;
   long cases = 0;
+  double case_timeout = 0;
+  std::string worker_row;  // the hidden --check-worker ROW: serve that row to a checking pxflow
+  std::vector<std::string> worker_command;
   bool verbose = false, generated_only = false, limits_only = false;
   BackendOptions backend_options;
   std::string globals;  // the global options given (--dut, --disable-isa ...): they shape the run
@@ -65,6 +70,7 @@ std::string command_line(const CheckArgs& a) {
   if (!a.backend_options.device.empty()) c += " --device " + shell_word(a.backend_options.device);
   if (a.backend_options.threads != 0)
     c += " --threads " + std::to_string(a.backend_options.threads);
+  if (a.case_timeout > 0) c += " --case-timeout " + setting_text(a.case_timeout);
   if (!a.json_path.empty()) c += " --json " + shell_word(a.json_path);
   if (a.no_repro) c += " --no-repro";
   if (a.repro_dir_opt->count() > 0) c += " --repro-dir " + shell_word(a.repro_dir);
@@ -87,6 +93,7 @@ OutputFolder* plan_reproducers(const CheckArgs& a, OutputPlan& plan) {
 }
 
 int run_check_command(const CheckArgs& a) {
+  if (!a.worker_row.empty()) return worker::serve(a.worker_row, a.backend_options);
   CheckOptions o;
   o.backends = chosen_backends(a);
   o.require = split_list(a.require);
@@ -94,6 +101,7 @@ int run_check_command(const CheckArgs& a) {
   if (a.shard_opt->count() > 0) o.shard = parse_shard("--shard", a.shard);
   o.verbose = a.verbose;
   o.backend_options = a.backend_options;
+  o.isolation = {a.worker_command, a.case_timeout};
   o.corpus.seed = a.seed;
   o.corpus.data_dir = a.data_dir;
   if (a.limits_only && a.cases > 0)
@@ -184,11 +192,20 @@ Command add_check_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 3600.0))
       ->capture_default_str();
   add_progress_flag(*sub);
+  sub->add_option("--case-timeout", a->case_timeout,
+                  "Seconds a backend may take for one case before it is called hung (default: "
+                  "an allowance scaled to the case's work and the backend's measured speed; "
+                  "docs/harness.md, Isolation)")
+      ->type_name("SECONDS")
+      ->check(CLI::Range(0.001, 1e6));
+  // Hidden: the worker mode of the check's own worker processes (hosts/harness/check_worker.hpp).
+  sub->add_option(worker::kWorkerOption, a->worker_row)->group("");
   add_threads_option(*sub, a->backend_options.threads);
   add_device_option(*sub, a->backend_options.device);
   return {sub,
           [a, sub] {
             a->globals = global_options(*sub);
+            a->worker_command = check_worker_command(*sub, a->backend_options);
             return run_check_command(*a);
           },
           kCheckExamples};

@@ -3,7 +3,13 @@
 // "pxflow --disable-isa avx512bw bench --backends cpu --batch 1,16 --json b.json".
 #pragma once
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include "backend.hpp"
+#include "guarded_child.hpp"
 
 #include "shell_word.hpp"
 
@@ -11,18 +17,27 @@ namespace pxflow::cli {
 
 using pxflow::shell_word;
 
-inline std::string given_options(const CLI::App& app) {
-  std::string line;
+// The options given to `app`, each with its value (none for a flag), an option given several
+// times once per value.
+inline std::vector<std::pair<std::string, std::optional<std::string>>> given_option_list(
+    const CLI::App& app) {
+  std::vector<std::pair<std::string, std::optional<std::string>>> given;
   for (const CLI::Option* opt : app.get_options()) {
     if (opt->count() == 0 || opt->get_name() == "--help" || opt->get_name() == "--version")
       continue;
-    const std::string name = opt->get_name();
-    if (opt->get_items_expected_min() == 0) {  // a flag
-      line.append(" ").append(name);
-      continue;
-    }
-    for (const std::string& value : opt->results())
-      line.append(" ").append(name).append(" ").append(shell_word(value));
+    if (opt->get_items_expected_min() == 0)  // a flag
+      given.push_back({opt->get_name(), std::nullopt});
+    else
+      for (const std::string& value : opt->results()) given.push_back({opt->get_name(), value});
+  }
+  return given;
+}
+
+inline std::string given_options(const CLI::App& app) {
+  std::string line;
+  for (const auto& [name, value] : given_option_list(app)) {
+    line.append(" ").append(name);
+    if (value) line.append(" ").append(shell_word(*value));
   }
   return line;
 }
@@ -38,6 +53,23 @@ inline std::string global_options(const CLI::App& sub) {
 
 inline std::string given_command_line(const CLI::App& sub) {
   return "pxflow" + global_options(sub) + " " + sub.get_name() + given_options(sub);
+}
+
+// The command line of `pxflow check`'s workers (isolated_row.hpp): this binary, the global
+// options given with `sub` (they shape the rows: --dut, --disable-isa, --device-timeout), then
+// `check` with the backends' options; the worker adds --check-worker ROW.
+inline std::vector<std::string> check_worker_command(const CLI::App& sub,
+                                                     const BackendOptions& options) {
+  std::vector<std::string> argv = {own_executable()};
+  if (const CLI::App* parent = sub.get_parent())
+    for (const auto& [name, value] : given_option_list(*parent)) {
+      argv.push_back(name);
+      if (value) argv.push_back(*value);
+    }
+  argv.push_back("check");
+  if (options.threads != 0) argv.insert(argv.end(), {"--threads", std::to_string(options.threads)});
+  if (!options.device.empty()) argv.insert(argv.end(), {"--device", options.device});
+  return argv;
 }
 
 }  // namespace pxflow::cli

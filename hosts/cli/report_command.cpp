@@ -38,8 +38,9 @@ struct ReportArgs {
   bool quick = false, no_accuracy = false;
   std::vector<std::pair<CliExtension, bool>> extensions;  // each with its skip flag's value
   std::string command;                                    // as run (command_line.hpp)
-  std::string globals;          // the global options given (--dut, --disable-isa ...), as typed
-  std::set<std::string> given;  // the report's own options given ("--seed", "--quick")
+  std::string globals;  // the global options given (--dut, --disable-isa ...), as typed
+  std::vector<std::string> check_workers;  // the check's worker command (command_line.hpp)
+  std::set<std::string> given;             // the report's own options given ("--seed", "--quick")
 
   // "pxflow --dut ... check": a command this report runs, with the global options that shape it.
   std::string pxflow(const std::string& subcommand) const {
@@ -302,6 +303,7 @@ void add_check(ReportInputs& in, const ReportArgs& a) {
   o.corpus.seed = a.seed;
   o.corpus.data_dir = a.data_dir;
   o.backend_options = a.backend_options();
+  o.isolation.worker_command = a.check_workers;
   in.check_command = a.pxflow("check") + " --seed " + std::to_string(a.seed) + backends_flag(a) +
                      a.shared_flags() +
                      (a.data_dir == kSampleDataDir ? "" : " --data " + shell_word(a.data_dir));
@@ -405,6 +407,7 @@ Command add_report_command(CLI::App& app) {
           [a, sub] {
             a->command = given_command_line(*sub);
             a->globals = global_options(*sub);
+            a->check_workers = check_worker_command(*sub, a->backend_options());
             for (const CLI::Option* o : sub->get_options())
               if (o->count() > 0) a->given.insert(o->get_name());
             return run_report(*a);

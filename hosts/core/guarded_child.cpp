@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cstring>
 #include <ctime>
+#include <filesystem>
 #include <thread>
 
 // Between fork and exec (or _exit) a process forked from a multithreaded pxflow may only make
@@ -225,6 +226,44 @@ void GuardedChild::stop() {
   }
   if (lifeline_ >= 0) ::close(lifeline_);
   pid_ = guardian_ = lifeline_ = -1;
+}
+
+PipedChild start_piped_child(const std::vector<std::string>& argv) {
+  int to_child[2] = {-1, -1}, from_child[2] = {-1, -1};
+  if (pipe2(to_child, O_CLOEXEC) != 0 || pipe2(from_child, O_CLOEXEC) != 0) {
+    const std::string why = os_error("cannot start " + (argv.empty() ? "" : argv[0]) + ": pipe");
+    close_pipe(to_child), close_pipe(from_child);
+    throw SpawnError(why);
+  }
+  PipedChild c;
+  try {
+    c.child = std::make_unique<GuardedChild>(argv, to_child[0], from_child[1]);
+  } catch (const SpawnError&) {
+    close_pipe(to_child), close_pipe(from_child);
+    throw;
+  }
+  ::close(to_child[0]);
+  ::close(from_child[1]);
+  c.to_child = to_child[1];
+  c.from_child = from_child[0];
+  return c;
+}
+
+std::string ended_text(int status) {
+  if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) {
+    const char* name = sigabbrev_np(WTERMSIG(status));
+    return "killed by " +
+           (name ? "SIG" + std::string(name) : "signal " + std::to_string(WTERMSIG(status)));
+  }
+  return "ended with wait status " + std::to_string(status);
+}
+
+std::string own_executable() {
+  std::error_code e;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", e);
+  if (e) throw SpawnError("cannot find the pxflow binary (/proc/self/exe): " + e.message());
+  return self.string();
 }
 
 }  // namespace pxflow

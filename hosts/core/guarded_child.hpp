@@ -7,6 +7,7 @@
 #include <sys/types.h>
 
 #include <chrono>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -45,5 +46,22 @@ class GuardedChild {
   bool reaped_ = false;
   int status_ = 0;
 };
+
+// A GuardedChild with a pipe each way: pxflow writes to `to_child` (the child's stdin) and reads
+// `from_child` (its stdout). Both descriptors are pxflow's to close (close-on-exec).
+struct PipedChild {
+  std::unique_ptr<GuardedChild> child;
+  int to_child = -1;
+  int from_child = -1;
+};
+// Throws SpawnError ("cannot start PROGRAM: why").
+PipedChild start_piped_child(const std::vector<std::string>& argv);
+
+// How a child ended, from its wait status: "exited with status 3", "killed by SIGSEGV".
+std::string ended_text(int wait_status);
+
+// The running pxflow binary (/proc/self/exe), to re-execute itself (pxflow check's workers);
+// throws SpawnError when it cannot be read.
+std::string own_executable();
 
 }  // namespace pxflow

@@ -127,22 +127,13 @@ class ExecLink : public FdLink {
 }  // namespace
 
 std::unique_ptr<Link> open_exec_link(const std::vector<std::string>& args) {
-  int to_child[2], from_child[2];
-  if (pipe2(to_child, O_CLOEXEC) != 0) throw LinkError(os_error("pipe"));
-  if (pipe2(from_child, O_CLOEXEC) != 0) {
-    ::close(to_child[0]), ::close(to_child[1]);
-    throw LinkError(os_error("pipe"));
-  }
-  std::unique_ptr<GuardedChild> child;
+  PipedChild c;
   try {
-    child = std::make_unique<GuardedChild>(args, to_child[0], from_child[1]);
+    c = start_piped_child(args);
   } catch (const SpawnError& e) {
-    for (const int fd : {to_child[0], to_child[1], from_child[0], from_child[1]}) ::close(fd);
     throw LinkError(e.what());
   }
-  ::close(to_child[0]);
-  ::close(from_child[1]);
-  return std::make_unique<ExecLink>(from_child[0], to_child[1], std::move(child), args[0]);
+  return std::make_unique<ExecLink>(c.from_child, c.to_child, std::move(c.child), args[0]);
 }
 
 std::unique_ptr<Link> open_tcp_link(const std::string& host, const std::string& port,

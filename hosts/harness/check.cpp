@@ -24,7 +24,7 @@ namespace {
 
 struct Contender {
   const BackendRow* row;
-  std::unique_ptr<Backend> backend;  // null when skipped
+  std::unique_ptr<IsolatedRow> backend;  // its worker; null when skipped or the reference
   BackendOutcome outcome;
 };
 
@@ -46,6 +46,7 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
   std::vector<const BackendRow*> rows;
   for (const auto& c : out) rows.push_back(c.row);
   check_device_option(rows, o.backend_options.device);
+  // Every worker starts before any is waited for: the backends open side by side.
   for (auto& c : out) {
     c.outcome.name = c.row->name;
     if (c.row->name == kReferenceBackend) {
@@ -53,25 +54,39 @@ std::vector<Contender> select_backends(const CheckOptions& o) {
       c.outcome.state = BackendState::kReference;
       continue;
     }
-    OpenedBackend opened = open_backend(*c.row, o.backend_options);
-    c.backend = std::move(opened.backend);
-    if (c.backend) {  // what runs behind the row (Backend::describe())
-      const std::string implementation = c.backend->describe().implementation;
-      c.outcome.implementation = implementation.empty() ? c.row->name : implementation;
-      c.outcome.device = device_or_host(c.backend->describe());
+    c.backend = std::make_unique<IsolatedRow>(c.row->name, o.isolation);
+    c.backend->start();
+  }
+  for (auto& c : out) {
+    if (!c.backend) continue;
+    const IsolatedRow::Opened opened = c.backend->opened();
+    if (opened.ok) {  // what runs behind the row (Backend::describe(), in the worker)
+      c.outcome.implementation = opened.implementation;
+      c.outcome.device = opened.device;
+      continue;
     }
-    const std::string why = opened.why_not;
-    if (!why.empty()) {
-      const bool named =
-          std::find(o.require.begin(), o.require.end(), c.row->name) != o.require.end();
-      const bool required = named || (all && !(c.row->host_lacks && c.row->host_lacks()));
-      c.outcome.state = required ? BackendState::kFailed : BackendState::kSkipped;
-      c.outcome.reason = why;
-      if (required)
-        c.outcome.failures.push_back("FAIL " + c.row->name + ": required but cannot run: " + why);
-    }
+    c.backend.reset();
+    const bool named =
+        std::find(o.require.begin(), o.require.end(), c.row->name) != o.require.end();
+    const bool required =
+        opened.failed || named || (all && !(c.row->host_lacks && c.row->host_lacks()));
+    c.outcome.state = required ? BackendState::kFailed : BackendState::kSkipped;
+    c.outcome.reason = opened.why;
+    if (opened.failed)
+      c.outcome.failures.push_back("FAIL " + c.row->name + ": " + opened.why);
+    else if (required)
+      c.outcome.failures.push_back("FAIL " + c.row->name +
+                                   ": required but cannot run: " + opened.why);
   }
   return out;
+}
+
+// The reproducer's runs of a row, in its worker (a crash there ends the shrinking, not the check).
+PairRunner worker_runner(IsolatedRow& row) {
+  return [&row](std::span<const FramePair> pairs, const Params& p) {
+    IsolatedRow::PairsRun r = row.run_pairs(pairs, p);
+    return RunOutcome{std::move(r.records), std::move(r.error)};
+  };
 }
 
 // The opened rows' predicates, whose limits the fixed corpus adds cases for.
@@ -103,28 +118,22 @@ class Checker {
  public:
   Checker(const CheckOptions& o, std::ostream& out) : o_(o), out_(out), explainer_(o.repro) {}
 
-  // Runs one case on one contender; returns false when it failed.
-  bool run_case(Contender& k, const CheckCase& c, const ReferenceAnswer& e) {
-    if (const std::string why = k.backend->unsupported(c.params); !why.empty()) {
+  // Runs one case on one contender; returns false when it failed. `index`: the case's number
+  // in the campaign; `reference_seconds`: ref-original's time on it (the hang allowance).
+  bool run_case(Contender& k, const CheckCase& c, const ReferenceAnswer& e, long index,
+                double reference_seconds) {
+    IsolatedRow::CaseRun run = k.backend->run(c, index, reference_seconds);
+    if (run.not_applicable) {
       ++k.outcome.not_applicable;
       return true;
     }
     if (is_limit_case(c)) k.outcome.limits.push_back(limit_entry(c));
-    std::vector<FramePair> views;
+    if (!run.failure.empty()) return fail(k, c, run.failure);
+    if (run.not_run) return true;
     std::vector<std::string> names;
-    for (const auto& p : c.pairs) views.push_back(p.view()), names.push_back(p.name);
-    std::vector<PoiRecord> got = sentinel_records(e.records.size());
-    OpCounts counts;
-    const auto t0 = std::chrono::steady_clock::now();
-    try {
-      k.backend->run(views, c.params, got, counts);
-    } catch (const Interrupted&) {
-      throw;  // Ctrl-C inside a backend (a device link waiting): the run stops, nothing failed
-    } catch (const std::exception& ex) {
-      return fail(k, c, std::string("error: ") + ex.what());
-    }
-    k.outcome.seconds +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (const auto& p : c.pairs) names.push_back(p.name);
+    const std::vector<PoiRecord>& got = run.records;
+    k.outcome.seconds += run.seconds;
     k.outcome.pairs += static_cast<long>(c.pairs.size());
     RecordDetail detail;
     if (o_.verbose)
@@ -134,11 +143,11 @@ class Checker {
     for (const std::string& line : cmp.lines) emit(k, line);
     if (!cmp.ok()) {
       const Explanation why =
-          explainer_.explain(label(k, c), c, e, got, in_process_runner(*k.backend));
+          explainer_.explain(label(k, c), c, e, got, worker_runner(*k.backend));
       emit(k, why.stage);
       for (const std::string& line : why.reproducer) out_ << line << '\n' << std::flush;
     }
-    const std::string counts_line = counts_verdict(label(k, c), k.row->counts_like, counts,
+    const std::string counts_line = counts_verdict(label(k, c), k.row->counts_like, run.counts,
                                                    e.records, c.params, c.pairs.size());
     if (!counts_line.empty()) emit(k, counts_line);
     if (cmp.ok() && counts_line.empty()) {
@@ -261,9 +270,17 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
              of_pairs);
     std::vector<FramePair> views;
     for (const auto& p : c.pairs) views.push_back(p.view());
+    const auto r0 = std::chrono::steady_clock::now();
     const ReferenceAnswer e = reference_answer(views, c.params);
-    for (auto& k : contenders)
-      if (k.backend) checker.run_case(k, c, e);
+    const double reference_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - r0).count();
+    try {
+      for (auto& k : contenders)
+        if (k.backend) checker.run_case(k, c, e, index, reference_seconds);
+    } catch (const Interrupted&) {
+      stop_if_interrupted(counted(report.cases - 1, "finished case"));  // says what was done
+      throw;
+    }
   }
   progress("");  // clears the live line
 

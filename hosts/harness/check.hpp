@@ -10,6 +10,7 @@
 #include "check_campaign.hpp"
 #include "check_corpus.hpp"
 #include "check_repro.hpp"
+#include "isolated_row.hpp"
 #include "result_fields.hpp"
 #include "result_json.hpp"
 
@@ -23,6 +24,9 @@ struct CheckOptions {
   bool verbose = false;               // dump the 8x8 blocks behind each mismatch
   int max_lines_per_case = 5;
   BackendOptions backend_options;
+  // Every row but the reference runs in a worker process (isolated_row.hpp): its command line
+  // and the allowance of a case.
+  IsolationOptions isolation;
   CorpusOptions corpus;
   ReproOptions repro;  // the reproducers of mismatches (check_repro.hpp); none without a writer
   // Printed once the backends are chosen and opened, so that bad input (an unknown or absent

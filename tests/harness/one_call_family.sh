@@ -3,7 +3,9 @@
 # pxflow_backend_family() call, a copy of ref-original) through PXFLOW_EXTRA_FAMILY_DIRS, with no
 # other file edited, lists its row in `pxflow backends` and passes `pxflow check` with it
 # required; a required family whose SDK is missing fails the configure; one that is not
-# required is off with its reason. Usage: one_call_family.sh SOURCE_DIR WORK_DIR
+# required is off with its reason. The same build adds tests/harness/broken_family, whose rows
+# broken_family_check.sh checks (the fixture one_call_build: one extra build, not two).
+# Usage: one_call_family.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 src=$1
 work=$2
@@ -14,7 +16,8 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # -O1: the test proves what the build contains, not how fast it runs; -O1 compiles in about
 # half -O3's time (docs/harness.md, "The test suite's time").
 common=(-S "$src" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-O1 -DCMAKE_C_FLAGS=-O1 -DBUILD_TESTING=OFF -DPXFLOW_WITH_ALL=OFF
-        -DPXFLOW_WITH_DUMMY=ON "-DPXFLOW_EXTRA_FAMILY_DIRS=$src/tests/harness/dummy_family"
+        -DPXFLOW_WITH_DUMMY=ON -DPXFLOW_WITH_BROKEN=ON
+        "-DPXFLOW_EXTRA_FAMILY_DIRS=$src/tests/harness/dummy_family;$src/tests/harness/broken_family"
         "${launcher[@]}")
 fail() { echo "FAIL: $*" >&2; exit 1; }
 

@@ -1,8 +1,11 @@
 // pxflow with extra registry rows that exist only in this test program, to prove that the checker
 // catches what it must: a backend that flips one bit, one that leaves a record unwritten, one
 // that miscounts its work, one with a planted half-pixel bug (for the reproducer), one that
-// cannot run, and one with a documented size limit.
+// cannot run, one with a documented size limit, one that crashes and one that hangs.
+#include <chrono>
+#include <csignal>
 #include <cstring>
+#include <thread>
 
 #include "grid.hpp"
 #include "kernel.hpp"
@@ -14,8 +17,8 @@ namespace {
 
 using namespace pxflow;
 
-// Runs ref-original, then damages the output the way `Fault` says.
-enum class Fault { kFlipBit, kSkipRecord, kMiscount, kSwapHalfSteps, kNone };
+// Runs ref-original, then damages the output the way `Fault` says; or crashes, or never returns.
+enum class Fault { kFlipBit, kSkipRecord, kMiscount, kSwapHalfSteps, kNone, kCrash, kHang };
 
 // The planted bug of a CPU-like kernel: for a match to the right (dx > 0) it takes the left and
 // right half steps (directions 0 and 4) for each other, then votes as SPEC §3 says.
@@ -32,6 +35,9 @@ class Damaged final : public Backend {
   Damaged(Fault f, int max_side) : fault_(f), max_side_(max_side) {}
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
            OpCounts& c) override {
+    if (fault_ == Fault::kCrash) std::raise(SIGSEGV);
+    if (fault_ == Fault::kHang)
+      for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
     const std::size_t per = poi_count(p);
     for (std::size_t n = 0; n < pairs.size(); ++n) {
       auto recs = out.subspan(n * per, per);
@@ -75,6 +81,8 @@ int main(int argc, char** argv) {
   add_backend_row(row("test-half-step-swap", Fault::kSwapHalfSteps, 1 << 20));
   add_backend_row(row("test-unavailable", Fault::kNone, 1 << 20, "no such device here (test row)"));
   add_backend_row(row("test-small-only", Fault::kNone, 64));
+  add_backend_row(row("test-crash", Fault::kCrash, 1 << 20));
+  add_backend_row(row("test-hang", Fault::kHang, 1 << 20));
   // A row whose hardware this machine lacks (as an ISA row on an older CPU).
   BackendRow lacking =
       row("test-no-hardware", Fault::kNone, 1 << 20, "this CPU lacks it (test row)");

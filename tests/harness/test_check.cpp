@@ -1,11 +1,16 @@
 // pxflow check against backends that are wrong on purpose: the mismatch line, the counts, the
 // exit code, skips, --require, n/a cases, fuzz campaigns and the JSON file.
+#include <signal.h>
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "run_program.hpp"
 
@@ -112,6 +117,45 @@ TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   CHECK(fuzz.exit_code == 2);
   CHECK(fuzz.err.find("--limits-only: the limit cases are part of the fixed corpus") !=
         std::string::npos);
+}
+
+TEST_CASE("a backend that crashes or hangs is its row's failure line, the others are checked",
+          "[check]") {
+  const auto r = check(
+      {"--backends", "test-crash,test-hang,ref-local", "--cases", "1", "--case-timeout", "2"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("FAIL test-crash case=fuzz[px4flow-64] killed by SIGSEGV in case 0 'fuzz' "
+                   "pair 0 'random/") != std::string::npos);
+  CHECK(r.out.find("FAIL test-hang case=fuzz[px4flow-64] did not finish case 0 'fuzz' within "
+                   "2 s (--case-timeout)\n") != std::string::npos);
+  CHECK(r.out.find("\nref-local      passed ") != std::string::npos);
+  CHECK(last_line(r.out) == "1 passed, 2 failed, 0 skipped");
+}
+
+TEST_CASE("Ctrl-C stops a check waiting on a worker: exit 130, nothing failed", "[check]") {
+  pxflow::test::TempDir dir;
+  const pid_t pid = pxflow::test::start_program(
+      PXFLOW_WITH_TEST_ROWS, {"check", "--backends", "test-hang", "--cases", "1", "--progress"},
+      dir.path("out"), dir.path("err"));
+  // The progress line (stderr, unbuffered) comes once the workers have opened their backends and
+  // the case is sent: then the check waits on the hanging worker.
+  std::string progress;
+  for (int i = 0; i < 600 && progress.find("check: 1 of") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::ifstream in(dir.path("err"));
+    progress.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  std::ifstream in(dir.path("err")), out_file(dir.path("out"));
+  const std::string err(std::istreambuf_iterator<char>(in), {});
+  const std::string out(std::istreambuf_iterator<char>(out_file), {});
+  INFO(out << err);
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 130));
+  CHECK(err.find("pxflow: interrupted: SIGINT") != std::string::npos);
+  CHECK(out.find("FAIL") == std::string::npos);
 }
 
 TEST_CASE("fuzz campaign, JSON file, and bad arguments", "[check]") {
