@@ -3,6 +3,7 @@
 
   mutate.py list --seed 2026 --per-family 40           the mutants a campaign would run
   mutate.py run --seed 2026 --per-family 40 --out DIR  apply, rebuild, check, report
+  mutate.py report --out DIR                           rescore DIR against equivalent.txt
   mutate.py self-test --pxflow build/pxflow            every operator on every file, in memory
 
 `run` edits the kernel files of the source tree in place, one mutant at a time, and always puts
@@ -231,7 +232,7 @@ def command_run(args):
     signal.signal(signal.SIGTERM, on_term)
     results, started = [], time.time()
     meta = {"seed": args.seed, "per_family": args.per_family, "families": families,
-            "command": " ".join(["tests/mutation/mutate.py"] + sys.argv[2:])}
+            "command": " ".join(["tests/mutation/mutate.py"] + sys.argv[1:])}
     try:
         artifacts, checks = baseline(args, [target_of(p) for p in sorted({m.path for m in chosen})], log)
         meta["baseline"] = {",".join(k): v for k, v in checks.items()}
@@ -254,6 +255,24 @@ def command_run(args):
         report.write(args.out, meta, results, time.time() - started)
         if not args.no_restore_build:
             ninja(args.build, sorted({x for f in families for x in FAMILIES[f].link_targets}), log)
+    return 0
+
+
+def command_report(args):
+    """Results rescored against today's equivalent.txt (a review after the campaign)."""
+    with open(os.path.join(args.out, "results.json"), encoding="utf-8") as f:
+        doc = json.load(f)
+    equivalents = load_equivalents()
+    for r in doc["mutants"]:
+        reviewed = r["status"] == "equivalent" and r["detail"].startswith("reviewed: ")
+        if reviewed or r["status"] == "survived":
+            if r["id"] in equivalents:
+                r["status"], r["detail"] = "equivalent", "reviewed: " + equivalents[r["id"]]
+            else:
+                r["status"], r["detail"] = "survived", ""
+    meta = {k: doc[k] for k in ("seed", "per_family", "families", "command", "baseline") if k in doc}
+    report.write(args.out, meta, doc["mutants"], doc["seconds"])
+    print(open(os.path.join(args.out, "results.md"), encoding="utf-8").read().split("\n## ")[0])
     return 0
 
 
@@ -283,6 +302,8 @@ def main():
                      help="seconds a check may run at most (a hang is a kill)")
     run.add_argument("--no-restore-build", action="store_true",
                      help="leave the build as the last mutant left it (faster)")
+    rep = sub.add_parser("report", help="rescore a campaign's results against equivalent.txt")
+    rep.add_argument("--out", required=True, help="the campaign's folder (results.json)")
     st = sub.add_parser("self-test")
     st.add_argument("--pxflow", help="the binary whose rows the table must name")
     st.add_argument("--dut-ref", help="the pxflow-dut-ref the table's dut family must run")
@@ -292,6 +313,8 @@ def main():
     if args.command == "self-test":
         import self_test
         return self_test.main(args)
+    if args.command == "report":
+        return command_report(args)
     if args.command == "list":
         return command_list(args)
     return command_run(args)
