@@ -1,8 +1,9 @@
 """Trivially equivalent mutants: the compiled code is the unmutated build's, byte for byte.
 
-An ELF file (object or firmware) is compared by its sections but the debug ones: the GAP8 and
-Cortex-M4 firmware is built with -g, whose line tables record columns, which most mutants move.
-Any other file (SPIR-V) is compared whole.
+An object file is compared by its sections but the debug ones (the line tables record columns,
+which most mutants move). A linked program (the GAP8 and Cortex-M4 firmware) by the sections it
+loads only: its symbol names also hold the compiler's temporary object names (ccXXXXXX.o, one
+compile-and-link command), which differ from build to build. Any other file (SPIR-V) whole.
 """
 
 import glob
@@ -10,6 +11,7 @@ import hashlib
 import os
 import struct
 
+_SHF_ALLOC = 0x2  # a section of the loaded image
 _SKIPPED_PREFIXES = (".debug", ".rela.debug", ".rel.debug", ".zdebug", ".comment", ".note.gnu.build-id")
 
 
@@ -42,8 +44,9 @@ def digest(path):
     if data[:4] != b"\x7fELF":
         h.update(data)
         return h.hexdigest()
+    linked = struct.unpack_from("<H" if data[5] == 1 else ">H", data, 0x10)[0] in (2, 3)
     for name, kind, flags, addr, body in _elf_sections(data):
-        if name.startswith(_SKIPPED_PREFIXES):
+        if name.startswith(_SKIPPED_PREFIXES) or (linked and not flags & _SHF_ALLOC):
             continue
         h.update(repr((name, kind, flags, addr, len(body))).encode())
         h.update(body)
