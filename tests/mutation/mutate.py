@@ -1,0 +1,324 @@
+#!/usr/bin/env python3
+"""Mutation testing of the in-tree kernels against `pxflow check` (docs/harness.md).
+
+  mutate.py list --seed 2026 --per-family 40           the mutants a campaign would run
+  mutate.py run --seed 2026 --per-family 40 --out DIR  apply, rebuild, check, report
+  mutate.py report --out DIR                           rescore DIR against equivalent.txt
+  mutate.py self-test --pxflow build/pxflow            every operator on every file, in memory
+
+`run` edits the kernel files of the source tree in place, one mutant at a time, and always puts
+them back (also on Ctrl-C or SIGTERM); rebuilds only the targets that compile the file; a mutant
+whose compiled code is byte-identical to the unmutated build's is equivalent without a run; else
+`pxflow check --backends ref-original,ROWS --require ROWS` on the default corpus, stopped at its
+first FAIL line: killed (a FAIL line, a non-zero exit, a crash or a hang), survived (exit 0), or
+build-failed. A survivor listed in equivalent.txt (reviewed by a human) counts as equivalent.
+"""
+
+import argparse
+import json
+import os
+import random
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import operators  # noqa: E402
+import report  # noqa: E402
+import tce  # noqa: E402
+from targets import FAMILIES, OPTION_ROWS, TARGETS  # noqa: E402
+
+SOURCE = os.path.dirname(os.path.dirname(HERE))
+EQUIVALENTS = os.path.join(HERE, "equivalent.txt")
+
+
+class Stop(Exception):
+    """SIGTERM, turned into an exception so that the finally blocks restore the files."""
+
+
+def read(path):
+    with open(path, encoding="utf-8") as f:
+        return f.read()
+
+
+def write(path, text):
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+
+
+def load_equivalents(path=EQUIVALENTS):
+    """{mutant id: reason} from equivalent.txt: `ID  reason`, # comments."""
+    found = {}
+    for n, line in enumerate(read(path).splitlines(), 1):
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        ident, _, reason = line.partition(" ")
+        if not reason.strip():
+            raise SystemExit(f"mutate.py: error: {path}:{n}: '{ident}' has no reason")
+        found[ident] = reason.strip()
+    return found
+
+
+def all_mutants(source, families=None):
+    """{target path: (text, [Mutant])} for the table's files (of the given families)."""
+    result = {}
+    for t in TARGETS:
+        if families and t.family not in families:
+            continue
+        text = read(os.path.join(source, t.path))
+        result[t.path] = (text, operators.mutants(t.path, text))
+    return result
+
+
+def select(source, seed, per_family, families):
+    """per_family mutants of each family, seeded: operators taken in turn, so that the rare
+    ones (min/max, ==) are drawn as well as the many constants."""
+    chosen = []
+    by_path = all_mutants(source, families)
+    for family in families:
+        pool = {}
+        for t in TARGETS:
+            if t.family == family:
+                for m in by_path[t.path][1]:
+                    pool.setdefault(m.op, []).append(m)
+        rng = random.Random(f"{seed}:{family}")
+        queues = []
+        for op in sorted(pool):
+            items = list(pool[op])
+            rng.shuffle(items)
+            queues.append(items)
+        rng.shuffle(queues)
+        picked = []
+        while len(picked) < per_family and any(queues):
+            for q in queues:
+                if q and len(picked) < per_family:
+                    picked.append(q.pop())
+        chosen.extend(picked)
+    chosen.sort(key=lambda m: (m.path, m.start, m.op))
+    return chosen, by_path
+
+
+def target_of(path):
+    return next(t for t in TARGETS if t.path == path)
+
+
+def ninja(build, targets, log):
+    r = subprocess.run(["ninja", "-C", build, *targets], stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    if r.returncode != 0:
+        log.write(r.stdout)
+    return r.returncode == 0, r.stdout
+
+
+def check_command(build, target):
+    family = FAMILIES[target.family]
+    rows = ",".join(target.rows)
+    extra = [a.format(build=os.path.abspath(build)) for a in family.check_args]
+    return [os.path.join(build, "pxflow"), "check", *extra, "--backends", "ref-original," + rows,
+            "--require", rows]
+
+
+def run_check(cmd, timeout):
+    """(outcome, detail, seconds): stops at the first FAIL line."""
+    start = time.monotonic()
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            errors="replace", start_new_session=True)
+    timed_out = threading.Event()
+
+    def kill():
+        timed_out.set()
+        os.killpg(proc.pid, signal.SIGKILL)
+
+    timer = threading.Timer(timeout, kill)
+    timer.start()
+    first_fail, tail = None, []
+    try:
+        for line in proc.stdout:
+            tail = (tail + [line.rstrip()])[-5:]
+            if line.startswith("FAIL "):
+                first_fail = line.rstrip()
+                try:
+                    os.killpg(proc.pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
+                break
+        proc.wait()
+    finally:
+        timer.cancel()
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    seconds = time.monotonic() - start
+    if first_fail:
+        return "killed", first_fail, seconds
+    if timed_out.is_set():
+        return "killed", f"no verdict after {timeout:.0f} s (hang)", seconds
+    if proc.returncode == 0:
+        return "survived", "", seconds
+    if proc.returncode < 0:
+        return "killed", f"check died of signal {-proc.returncode}", seconds
+    return "killed", f"exit {proc.returncode}: " + " | ".join(tail), seconds
+
+
+def baseline(args, targets, log):
+    """Build the unmutated tree, record its artifacts, check every row group once."""
+    families = sorted({t.family for t in targets})
+    builds = sorted({x for f in families for x in FAMILIES[f].compile_targets + FAMILIES[f].link_targets})
+    ok, out = ninja(args.build, builds, log)
+    if not ok:
+        raise SystemExit("mutate.py: error: the unmutated tree does not build (see the log)")
+    artifacts = {f: tce.snapshot(args.build, FAMILIES[f].artifacts) for f in families}
+    for f in families:
+        if FAMILIES[f].artifacts and not artifacts[f]:
+            raise SystemExit(f"mutate.py: error: no build output of family {f} in {args.build}")
+    checks = {}
+    for t in targets:
+        key = t.rows
+        if key in checks:
+            continue
+        outcome, detail, seconds = run_check(check_command(args.build, t), args.max_timeout)
+        checks[key] = {"ok": outcome == "survived", "detail": detail, "seconds": seconds}
+        print(f"baseline {','.join(key)}: {'passed' if outcome == 'survived' else detail} "
+              f"({seconds:.1f} s)", flush=True)
+    return artifacts, checks
+
+
+def run_mutant(args, m, text, artifacts, checks, log):
+    t = target_of(m.path)
+    family = FAMILIES[t.family]
+    base = checks[t.rows]
+    result = {"id": m.id, "path": m.path, "op": m.op, "family": t.family, "rows": list(t.rows),
+              "diff": m.diff(text)}
+    if not base["ok"]:
+        return dict(result, status="not-run", detail="the unmutated check fails: " + base["detail"])
+    path = os.path.join(args.source, m.path)
+    start = time.monotonic()
+    try:
+        write(path, m.apply(text))
+        ok, _ = ninja(args.build, list(family.compile_targets), log)
+        if ok and family.artifacts and tce.snapshot(args.build, family.artifacts) == artifacts[t.family]:
+            return dict(result, status="equivalent", detail="identical compiled code")
+        if ok:
+            ok, _ = ninja(args.build, list(family.link_targets), log)
+        if not ok:
+            return dict(result, status="build-failed", detail="does not compile")
+        build_s = time.monotonic() - start
+        timeout = min(args.max_timeout, max(20.0, 5 * base["seconds"]))
+        outcome, detail, seconds = run_check(check_command(args.build, t), timeout)
+        if t.family == "opencl" and "required but cannot run" in detail:
+            outcome, detail = "build-failed", detail  # PoCL compiles the kernel at run time
+        return dict(result, status=outcome, detail=detail, build_s=round(build_s, 1),
+                    check_s=round(seconds, 1))
+    finally:
+        write(path, text)
+
+
+def command_run(args):
+    families = args.families.split(",") if args.families else sorted(FAMILIES)
+    chosen, by_path = select(args.source, args.seed, args.per_family, families)
+    equivalents = load_equivalents()
+    os.makedirs(args.out, exist_ok=True)
+    log = open(os.path.join(args.out, "build.log"), "w")
+    originals = {p: by_path[p][0] for p in {m.path for m in chosen}}
+
+    def on_term(signum, frame):
+        raise Stop()
+
+    signal.signal(signal.SIGTERM, on_term)
+    results, started = [], time.time()
+    meta = {"seed": args.seed, "per_family": args.per_family, "families": families,
+            "command": " ".join(["tests/mutation/mutate.py"] + sys.argv[1:])}
+    try:
+        artifacts, checks = baseline(args, [target_of(p) for p in sorted({m.path for m in chosen})], log)
+        meta["baseline"] = {",".join(k): v for k, v in checks.items()}
+        for n, m in enumerate(chosen, 1):
+            r = run_mutant(args, m, by_path[m.path][0], artifacts, checks, log)
+            if r["status"] == "survived" and m.id in equivalents:
+                r["status"], r["detail"] = "equivalent", "reviewed: " + equivalents[m.id]
+            results.append(r)
+            print(f"[{n}/{len(chosen)}] {r['status']:12} {m.id}  {r.get('detail', '')[:110]}",
+                  flush=True)
+            report.write(args.out, meta, results, time.time() - started)
+    except (KeyboardInterrupt, Stop):
+        print("mutate.py: interrupted; the files are restored", file=sys.stderr)
+        return 130
+    finally:
+        for p, text in originals.items():
+            full = os.path.join(args.source, p)
+            if read(full) != text:
+                write(full, text)
+        report.write(args.out, meta, results, time.time() - started)
+        if not args.no_restore_build:
+            ninja(args.build, sorted({x for f in families for x in FAMILIES[f].link_targets}), log)
+    return 0
+
+
+def command_report(args):
+    """Results rescored against today's equivalent.txt (a review after the campaign)."""
+    with open(os.path.join(args.out, "results.json"), encoding="utf-8") as f:
+        doc = json.load(f)
+    equivalents = load_equivalents()
+    for r in doc["mutants"]:
+        reviewed = r["status"] == "equivalent" and r["detail"].startswith("reviewed: ")
+        if reviewed or r["status"] == "survived":
+            if r["id"] in equivalents:
+                r["status"], r["detail"] = "equivalent", "reviewed: " + equivalents[r["id"]]
+            else:
+                r["status"], r["detail"] = "survived", ""
+    meta = {k: doc[k] for k in ("seed", "per_family", "families", "command", "baseline") if k in doc}
+    report.write(args.out, meta, doc["mutants"], doc["seconds"])
+    print(open(os.path.join(args.out, "results.md"), encoding="utf-8").read().split("\n## ")[0])
+    return 0
+
+
+def command_list(args):
+    families = args.families.split(",") if args.families else sorted(FAMILIES)
+    chosen, by_path = select(args.source, args.seed, args.per_family, families)
+    for m in chosen:
+        print(m.id)
+        print(m.diff(by_path[m.path][0]))
+    return 0
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    for name in ("run", "list"):
+        p = sub.add_parser(name)
+        p.add_argument("--seed", type=int, default=2026)
+        p.add_argument("--per-family", type=int, default=40)
+        p.add_argument("--families", default="", help="comma-separated (default: all): "
+                       + ",".join(sorted(FAMILIES)))
+        p.add_argument("--source", default=SOURCE)
+        p.add_argument("--build", default=os.path.join(SOURCE, "build"))
+    run = sub.choices["run"]
+    run.add_argument("--out", required=True, help="folder for results.json, results.md, build.log")
+    run.add_argument("--max-timeout", type=float, default=120.0,
+                     help="seconds a check may run at most (a hang is a kill)")
+    run.add_argument("--no-restore-build", action="store_true",
+                     help="leave the build as the last mutant left it (faster)")
+    rep = sub.add_parser("report", help="rescore a campaign's results against equivalent.txt")
+    rep.add_argument("--out", required=True, help="the campaign's folder (results.json)")
+    st = sub.add_parser("self-test")
+    st.add_argument("--pxflow", help="the binary whose rows the table must name")
+    st.add_argument("--dut-ref", help="the pxflow-dut-ref the table's dut family must run")
+    st.add_argument("--cc", help="a C compiler: compile one mutant in a temporary folder")
+    st.add_argument("--source", default=SOURCE)
+    args = parser.parse_args()
+    if args.command == "self-test":
+        import self_test
+        return self_test.main(args)
+    if args.command == "report":
+        return command_report(args)
+    if args.command == "list":
+        return command_list(args)
+    return command_run(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,112 @@
+"""Which registry rows each mutated kernel file is checked with, and what to rebuild.
+
+The one table of the mutation tool (mutate.py): a kernel file -> its family and the rows built
+from it. A family says which build outputs hold the compiled file (compared byte for byte before
+and after a mutation: identical code is a trivially equivalent mutant, no check run) and which
+targets must be rebuilt before `pxflow check` sees the mutant.
+"""
+
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class Family:
+    name: str
+    # the registry family of its rows (`pxflow backends --json -`), "" for a --dut row
+    registry: str
+    # ninja targets (relative to the build folder) that compile the file: built first, then the
+    # artifacts are compared with the unmutated build's.
+    compile_targets: tuple
+    # globs (relative to the build folder) of the compiled outputs; empty when the source is
+    # compiled at run time (OpenCL C: PoCL compiles the embedded text).
+    artifacts: tuple
+    # what `pxflow check` runs: rebuilt after the artifacts differ.
+    link_targets: tuple = ("pxflow",)
+    # extra `pxflow check` arguments (the dut reference device is a --dut row).
+    check_args: tuple = ()
+
+
+GAP8_ELVES = tuple(f"kernels/gap8/pxflow_gap8_{v}.elf" for v in ("original", "local", "global", "fast"))
+REF_OBJECTS = ("reference/CMakeFiles/pxflow_reference.dir/*.o",)
+
+FAMILIES = {
+    f.name: f
+    for f in (
+        Family("cpu", "cpu", ("kernels/cpu/libpxflow_cpu_kernels.a",),
+               ("kernels/cpu/CMakeFiles/pxflow_cpu_kernels.dir/*.o",)),
+        Family("ref-original", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS),
+        Family("ref-local", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS),
+        Family("ref-global", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS),
+        Family("opencl", "opencl", ("pxflow",), ()),
+        Family("vulkan", "vulkan", ("kernels/vulkan/generated/flow.spv",), ("kernels/vulkan/generated/flow.spv",)),
+        Family("gap8", "gap8", GAP8_ELVES, GAP8_ELVES),
+        Family("cortex-m4", "m4qemu", ("hosts/m4qemu/pxflow_m4_dut.elf",), ("hosts/m4qemu/pxflow_m4_dut.elf",)),
+        Family("dut", "", ("dut/CMakeFiles/pxdut_algo.dir/src/pxdut_kernel.c.o",),
+               ("dut/CMakeFiles/pxdut_algo.dir/src/pxdut_kernel.c.o",),
+               ("pxflow", "pxflow-dut-ref"), ("--dut", "dutref=exec:{build}/pxflow-dut-ref")),
+    )
+}
+
+
+@dataclass(frozen=True)
+class Target:
+    path: str  # relative to the source tree
+    family: str
+    rows: tuple = field(default_factory=tuple)  # the rows built from it (--backends, --require)
+
+
+X86 = ("sse2", "sse41", "avx2", "avx512bw")
+GAP8_ALL = ("gap8-original", "gap8-local", "gap8-global", "gap8-fast")
+
+# kernels/cpu/neon.cpp is not listed: it is compiled for aarch64 only (no row on x86-64 CI).
+# ref-original is the reference every row is checked against: its mutants are checked by the
+# rows ref-local and ref-global (a mutant of the answer makes them differ).
+TARGETS = (
+    Target("kernels/cpu/swar.cpp", "cpu", ("swar",)),
+    Target("kernels/cpu/sse2.cpp", "cpu", ("sse2",)),
+    Target("kernels/cpu/sse41.cpp", "cpu", ("sse41",)),
+    Target("kernels/cpu/avx2.cpp", "cpu", ("avx2",)),
+    Target("kernels/cpu/avx512bw.cpp", "cpu", ("avx512bw",)),
+    Target("kernels/cpu/poi_loop.cpp", "cpu", ("swar",) + X86),
+    Target("kernels/cpu/x86_feature.hpp", "cpu", X86),
+    Target("kernels/cpu/x86_half_pixel.hpp", "cpu", ("sse2", "sse41", "avx2")),
+    Target("kernels/cpu/x86_argmin.hpp", "cpu", ("sse41", "avx2")),
+    Target("reference/kernel_original.cpp", "ref-original", ("ref-local", "ref-global")),
+    Target("reference/kernel_local.cpp", "ref-local", ("ref-local",)),
+    Target("reference/kernel_global.cpp", "ref-global", ("ref-global",)),
+    Target("kernels/opencl/opencl.cl", "opencl", ("opencl-item", "opencl-group")),
+    Target("kernels/vulkan/flow.comp", "vulkan", ("vulkan",)),
+    Target("kernels/gap8/flow_main.c", "gap8", GAP8_ALL),
+    Target("kernels/gap8/flow_poi.c", "gap8", GAP8_ALL),
+    Target("kernels/gap8/flow_simd.h", "gap8", GAP8_ALL),
+    Target("kernels/gap8/search_raster.h", "gap8", GAP8_ALL),
+    Target("kernels/gap8/flow_search.c", "gap8", ("gap8-original", "gap8-local", "gap8-global")),
+    Target("kernels/gap8/half_original.c", "gap8", ("gap8-original",)),
+    Target("kernels/gap8/half_local.c", "gap8", ("gap8-local",)),
+    Target("kernels/gap8/half_global.c", "gap8", ("gap8-global",)),
+    Target("kernels/gap8/half_planes.h", "gap8", ("gap8-global",)),
+    Target("kernels/gap8/half_registers.h", "gap8", ("gap8-local", "gap8-fast")),
+    Target("kernels/gap8/flow_search_fast.c", "gap8", ("gap8-fast",)),
+    Target("kernels/gap8/fast_tables.c", "gap8", ("gap8-fast",)),
+    Target("kernels/gap8/fast_tables.h", "gap8", ("gap8-fast",)),
+    Target("kernels/gap8/fast_serial.c", "gap8", ("gap8-fast",)),
+    Target("kernels/gap8/half_fast.c", "gap8", ("gap8-fast",)),
+    Target("kernels/cortex-m4/m4_flow_poi.c", "cortex-m4", ("m4-qemu",)),
+    Target("kernels/cortex-m4/m4_flow_frame.c", "cortex-m4", ("m4-qemu",)),
+    Target("kernels/cortex-m4/m4_simd.h", "cortex-m4", ("m4-qemu",)),
+    Target("dut/src/pxdut_kernel.c", "dut", ("dutref",)),
+)
+
+# Rows that are not registry rows of the binary but made by a family option (check_args).
+OPTION_ROWS = {"dutref"}
+
+
+def language(path):
+    """The source language of a kernel file, for the operators that depend on it."""
+    if path.endswith(".comp"):
+        return "glsl"
+    if path.endswith(".cl"):
+        return "opencl"
+    if path.endswith((".c", ".h")):
+        return "c"
+    return "c++"
