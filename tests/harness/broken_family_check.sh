@@ -27,11 +27,9 @@ expect "^FAIL broken-hang case=random\[320x240 S=7 B=16\] did not finish case 8 
 expect "^FAIL broken-overrun $case_of wrote past its output \([0-9]+ bytes after record [0-9]+\)$"
 expect "^FAIL broken-underrun $case_of wrote before its output \([0-9]+ bytes before record 0\)$"
 expect "^FAIL broken-overread $case_of killed by SIGSEGV in case 0 'random' pair 0 '[^']+': it read 1 byte past the end of the next frame of the pair \(strict input\)$"
-# Counts are compared by the verdicts branch (issue 25 item 3): its failure line names sad_ops.
-# Until that check exists, broken-miscount passes; the lead turns this on at the merge.
-counts_compared=0
-[ "$counts_compared" = 0 ] || expect "^FAIL broken-miscount .*sad_ops"
-for row in crash abort hang overrun underrun overread; do
+# Counts are part of the check (docs/counting.md): one SAD operation too many fails the case.
+expect "^FAIL broken-miscount $case_of counts differ from ref-original's: sad_ops [0-9,]+ vs [0-9,]+ "
+for row in crash abort hang overrun underrun overread miscount; do
   expect "^broken-$row +failed "
 done
 expect "^dummy-original +passed "
