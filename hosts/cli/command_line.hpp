@@ -10,7 +10,6 @@
 
 #include "backend.hpp"
 #include "guarded_child.hpp"
-
 #include "shell_word.hpp"
 
 namespace pxflow::cli {

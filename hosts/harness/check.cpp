@@ -142,8 +142,7 @@ class Checker {
         compare_with_reference(label(k, c), names, c.params, e, got, o_.max_lines_per_case, detail);
     for (const std::string& line : cmp.lines) emit(k, line);
     if (!cmp.ok()) {
-      const Explanation why =
-          explainer_.explain(label(k, c), c, e, got, worker_runner(*k.backend));
+      const Explanation why = explainer_.explain(label(k, c), c, e, got, worker_runner(*k.backend));
       emit(k, why.stage);
       for (const std::string& line : why.reproducer) out_ << line << '\n' << std::flush;
     }

@@ -242,9 +242,10 @@ TEST_CASE("counts are checked: a backend that miscounts fails with one line nami
   words >> got >> vs >> want;
   CHECK(vs == "vs");
   CHECK(number(got) == number(want) + 512);
-  // test-small-only, ref-original's kernel, counts right: its 8 cases pass.
+  // test-small-only, ref-original's kernel, counts right: its 24 cases within 64x64 pass (8
+  // generated, 16 limit cases); test-miscount fails every case it runs.
   CHECK(r.out.find("FAIL test-small-only") == std::string::npos);
-  CHECK(last_line(r.out) == "8 passed, 16 failed, 0 skipped");
+  CHECK(last_line(r.out) == "24 passed, 37 failed, 0 skipped");
 }
 
 namespace {

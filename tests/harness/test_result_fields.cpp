@@ -97,7 +97,8 @@ TEST_CASE("results.csv: a column per bench row field, empty where a row lacks it
 
 TEST_CASE("conformance.csv: a column per scalar field of a check backend", "[schema]") {
   CheckReport r;
-  r.backends.push_back({"ref-local", BackendState::kPassed, "", "", "host", 3, 0, 1, 6, 0.5, {}, {}});
+  r.backends.push_back(
+      {"ref-local", BackendState::kPassed, "", "", "host", 3, 0, 1, 6, 0.5, {}, {}});
   const std::string csv = conformance_csv(check_json(r));
   CHECK(csv_line(csv, 0) == csv_columns(backend_outcome_fields()));
   std::set<std::string> all = keys_of(backend_outcome_fields());
@@ -111,8 +112,18 @@ TEST_CASE("conformance.csv: a column per scalar field of a check backend", "[sch
 TEST_CASE("check file: written and read back through its table, field for field", "[schema]") {
   CheckReport r;
   r.seed = 7, r.cases = 3, r.pairs = 6, r.passed = 1, r.compared = 3, r.command = "pxflow check";
-  r.backends.push_back(
-      {"ref-local", BackendState::kFailed, "", "ref-local", "host", 2, 1, 0, 6, 0.25, {"a line"}, {}});
+  r.backends.push_back({"ref-local",
+                        BackendState::kFailed,
+                        "",
+                        "ref-local",
+                        "host",
+                        2,
+                        1,
+                        0,
+                        6,
+                        0.25,
+                        {"a line"},
+                        {}});
   const CheckReport back = check_from_json(check_json(r));
   CHECK(check_json(back) == check_json(r));
   CHECK(back.backends.at(0).failures == std::vector<std::string>{"a line"});
