@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 #include "counted.hpp"
 #include "errors.hpp"
@@ -84,6 +85,12 @@ FamilyOption device_timeout_option() {
 void note_abandoned_device() { g_abandoned = true; }
 
 bool device_abandoned() { return g_abandoned; }
+
+void keep_abandoned_handle(const void* handle) {
+  // Never freed: a global pointer keeps every handle reachable until the process ends.
+  static auto* const kept = new std::vector<const void*>;
+  kept->push_back(handle);
+}
 
 void exit_now_if_device_abandoned(int code) {
   if (!g_abandoned) return;

@@ -64,6 +64,10 @@ FamilyOption device_timeout_option();
 void note_abandoned_device();
 bool device_abandoned();
 
+// Keeps a handle of an abandoned device (a queue, kernel or buffer given up unreleased) reachable
+// for the rest of the process: deliberately leaked, so never reported as a leak by LeakSanitizer.
+void keep_abandoned_handle(const void* handle);
+
 // When a device was abandoned: flushes stdout and stderr and ends the process now with `code`
 // (std::_Exit: no static destructor or atexit handler of a driver may join a spinning thread).
 // Returns otherwise.

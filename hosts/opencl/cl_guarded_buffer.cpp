@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "device_wait.hpp"
 #include "guard_zone.hpp"
 
 namespace pxflow::cl {
@@ -50,8 +51,8 @@ void GuardedBuffer::check(cl_command_queue queue, std::size_t used_bytes, std::s
 }
 
 void GuardedBuffer::leak() {
-  (void)records_.release();
-  (void)whole_.release();
+  keep_abandoned_handle(records_.release());
+  keep_abandoned_handle(whole_.release());
 }
 
 }  // namespace pxflow::cl

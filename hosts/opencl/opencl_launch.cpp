@@ -99,9 +99,9 @@ void OpenclBackend::abandon(const std::string& line) {
   abandoned_ = line;
   note_abandoned_device();
   // Deliberately leaked (see the header): the driver may still run the kernel on them.
-  (void)queue_.release();
-  (void)kernel_.release();
-  (void)frames_.release();
+  keep_abandoned_handle(queue_.release());
+  keep_abandoned_handle(kernel_.release());
+  keep_abandoned_handle(frames_.release());
   records_.leak();
 }
 
