@@ -3,6 +3,7 @@
 
   mutate.py list --seed 2026 --per-family 40           the mutants a campaign would run
   mutate.py run --seed 2026 --per-family 40 --out DIR  apply, rebuild, check, report
+  mutate.py run --only results/results.json --out DIR  rerun a campaign's survivors (or ids)
   mutate.py report --out DIR                           rescore DIR against equivalent.txt
   mutate.py self-test --pxflow build/pxflow            every operator on every file, in memory
 
@@ -12,6 +13,10 @@ whose compiled code is byte-identical to the unmutated build's is equivalent wit
 `pxflow check --backends ref-original,ROWS --require ROWS` on the default corpus, stopped at its
 first FAIL line: killed (a FAIL line, a non-zero exit, a crash or a hang), survived (exit 0), or
 build-failed. A survivor listed in equivalent.txt (reviewed by a human) counts as equivalent.
+Any other survivor of host code (targets.Family.host_code) is rebuilt in the ASan+UBSan build
+(--sanitizer-build, configured like CI's sanitizer stage) and checked the same way there: killed
+(sanitizer). A survivor still standing and listed in undetectable.txt (reviewed: no check can see
+it on this machine) counts as undetectable, never as killed.
 """
 
 import argparse
@@ -34,6 +39,10 @@ from targets import FAMILIES, OPTION_ROWS, TARGETS  # noqa: E402
 
 SOURCE = os.path.dirname(os.path.dirname(HERE))
 EQUIVALENTS = os.path.join(HERE, "equivalent.txt")
+UNDETECTABLE = os.path.join(HERE, "undetectable.txt")
+# ci/run-tests.sh's sanitizer stage: the options its tests run with.
+SANITIZER_ENV = {"ASAN_OPTIONS": "detect_leaks=1:abort_on_error=1",
+                 "UBSAN_OPTIONS": "print_stacktrace=1:halt_on_error=1"}
 
 
 class Stop(Exception):
@@ -51,7 +60,7 @@ def write(path, text):
 
 
 def load_equivalents(path=EQUIVALENTS):
-    """{mutant id: reason} from equivalent.txt: `ID  reason`, # comments."""
+    """{mutant id: reason} from equivalent.txt (or undetectable.txt): `ID  reason`, # comments."""
     found = {}
     for n, line in enumerate(read(path).splitlines(), 1):
         line = line.strip()
@@ -103,6 +112,33 @@ def select(source, seed, per_family, families):
     return chosen, by_path
 
 
+def chosen_only(source, spec):
+    """The mutants --only names: a campaign's results.json (its survivors, whose diffs must be
+    today's: a moved line fails), a file of ids (one a line, # comments), or comma-separated ids."""
+    by_path = all_mutants(source)
+    index = {m.id: m for _, ms in by_path.values() for m in ms}
+    wanted = {}
+    if spec.endswith(".json"):
+        with open(spec, encoding="utf-8") as f:
+            wanted = {r["id"]: r["diff"] for r in json.load(f)["mutants"] if r["status"] == "survived"}
+    elif os.path.isfile(spec):
+        for line in read(spec).splitlines():
+            if line.split("#")[0].strip():
+                wanted[line.split()[0]] = None
+    else:
+        wanted = dict.fromkeys(x for x in spec.split(",") if x)
+    chosen = []
+    for ident, diff in wanted.items():
+        m = index.get(ident)
+        if m is None:
+            raise SystemExit(f"mutate.py: error: {ident} is not a mutant of the tree (did its line move?)")
+        if diff is not None and m.diff(by_path[m.path][0]) != diff:
+            raise SystemExit(f"mutate.py: error: {ident} now makes another change than in {spec}")
+        chosen.append(m)
+    chosen.sort(key=lambda m: (m.path, m.start, m.op))
+    return chosen, by_path
+
+
 def target_of(path):
     return next(t for t in TARGETS if t.path == path)
 
@@ -123,11 +159,12 @@ def check_command(build, target):
             "--require", rows]
 
 
-def run_check(cmd, timeout):
+def run_check(cmd, timeout, env=None):
     """(outcome, detail, seconds): stops at the first FAIL line."""
     start = time.monotonic()
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                            errors="replace", start_new_session=True)
+                            errors="replace", start_new_session=True,
+                            env=dict(os.environ, **env) if env else None)
     timed_out = threading.Event()
 
     def kill():
@@ -218,10 +255,88 @@ def run_mutant(args, m, text, artifacts, checks, log):
         write(path, text)
 
 
+class Sanitizer:
+    """The ASan+UBSan pass over survivors of host code: the same check, from --sanitizer-build.
+    Its unmutated check runs once per row group before the first mutant of that group, from the
+    restored tree (every mutant restores its file before the next one starts)."""
+
+    def __init__(self, args, log):
+        self.args, self.log, self.checks, self.built = args, log, {}, set()
+
+    def applies(self, t):
+        return bool(self.args.sanitizer_build) and FAMILIES[t.family].host_code
+
+    def _targets(self, family):
+        f = FAMILIES[family]
+        return list(dict.fromkeys(f.compile_targets + f.link_targets))
+
+    def baseline(self, t):
+        if t.rows not in self.checks:
+            ok, _ = ninja(self.args.sanitizer_build, self._targets(t.family), self.log)
+            outcome, detail, seconds = ("build-failed", "the sanitizer build fails", 0.0)
+            if ok:
+                outcome, detail, seconds = run_check(check_command(self.args.sanitizer_build, t),
+                                                     self.args.max_timeout * 5, SANITIZER_ENV)
+            self.checks[t.rows] = {"ok": outcome == "survived", "detail": detail, "seconds": seconds}
+            self.built.add(t.family)
+            print(f"sanitizer baseline {','.join(t.rows)}: "
+                  f"{'passed' if outcome == 'survived' else detail} ({seconds:.1f} s)", flush=True)
+        return self.checks[t.rows]
+
+    def run(self, m, text):
+        """(status, detail) of the mutant under ASan+UBSan: killed-sanitizer or survived."""
+        t = target_of(m.path)
+        base = self.baseline(t)
+        if not base["ok"]:
+            return "survived", "the unmutated sanitizer check fails: " + base["detail"]
+        path = os.path.join(self.args.source, m.path)
+        try:
+            write(path, m.apply(text))
+            ok, _ = ninja(self.args.sanitizer_build, self._targets(t.family), self.log)
+            if not ok:
+                return "survived", "the sanitizer build fails"
+            timeout = min(self.args.max_timeout * 5, max(60.0, 5 * base["seconds"]))
+            outcome, detail, _ = run_check(check_command(self.args.sanitizer_build, t), timeout,
+                                           SANITIZER_ENV)
+        finally:
+            write(path, text)
+        return ("killed-sanitizer", detail) if outcome == "killed" else ("survived", "")
+
+    def restore(self):
+        targets = sorted({x for f in self.built for x in self._targets(f)})
+        if targets:
+            ninja(self.args.sanitizer_build, targets, self.log)
+
+
+def classify(args, m, r, text, equivalents, undetectable, sanitizer):
+    """A survivor of the default check: reviewed equivalent, killed by the sanitizer pass,
+    reviewed undetectable here, or survived."""
+    if r["status"] != "survived":
+        return r
+    if m.id in equivalents:
+        return dict(r, status="equivalent", detail="reviewed: " + equivalents[m.id])
+    if sanitizer.applies(target_of(m.path)):
+        status, detail = sanitizer.run(m, text)
+        if status != "survived":
+            return dict(r, status=status, detail=detail)
+    elif not FAMILIES[target_of(m.path).family].host_code:
+        r = dict(r, detail="device code: no sanitizer runs it")
+    if m.id in undetectable:
+        return dict(r, status="undetectable", detail="reviewed: " + undetectable[m.id])
+    return r
+
+
 def command_run(args):
     families = args.families.split(",") if args.families else sorted(FAMILIES)
-    chosen, by_path = select(args.source, args.seed, args.per_family, families)
-    equivalents = load_equivalents()
+    if args.only:
+        chosen, by_path = chosen_only(args.source, args.only)
+        families = sorted({target_of(m.path).family for m in chosen})
+    else:
+        chosen, by_path = select(args.source, args.seed, args.per_family, families)
+    equivalents, undetectable = load_equivalents(), load_equivalents(UNDETECTABLE)
+    if args.sanitizer_build == "auto":
+        auto = os.path.join(args.source, "build-sanitize")
+        args.sanitizer_build = auto if os.path.isfile(os.path.join(auto, "build.ninja")) else ""
     os.makedirs(args.out, exist_ok=True)
     log = open(os.path.join(args.out, "build.log"), "w")
     originals = {p: by_path[p][0] for p in {m.path for m in chosen}}
@@ -232,14 +347,16 @@ def command_run(args):
     signal.signal(signal.SIGTERM, on_term)
     results, started = [], time.time()
     meta = {"seed": args.seed, "per_family": args.per_family, "families": families,
-            "command": " ".join(["tests/mutation/mutate.py"] + sys.argv[1:])}
+            "command": " ".join(["tests/mutation/mutate.py"] + sys.argv[1:]),
+            "only": args.only, "sanitizer_build": args.sanitizer_build}
+    sanitizer = Sanitizer(args, log)
     try:
         artifacts, checks = baseline(args, [target_of(p) for p in sorted({m.path for m in chosen})], log)
         meta["baseline"] = {",".join(k): v for k, v in checks.items()}
         for n, m in enumerate(chosen, 1):
-            r = run_mutant(args, m, by_path[m.path][0], artifacts, checks, log)
-            if r["status"] == "survived" and m.id in equivalents:
-                r["status"], r["detail"] = "equivalent", "reviewed: " + equivalents[m.id]
+            text = by_path[m.path][0]
+            r = run_mutant(args, m, text, artifacts, checks, log)
+            r = classify(args, m, r, text, equivalents, undetectable, sanitizer)
             results.append(r)
             print(f"[{n}/{len(chosen)}] {r['status']:12} {m.id}  {r.get('detail', '')[:110]}",
                   flush=True)
@@ -255,6 +372,7 @@ def command_run(args):
         report.write(args.out, meta, results, time.time() - started)
         if not args.no_restore_build:
             ninja(args.build, sorted({x for f in families for x in FAMILIES[f].link_targets}), log)
+            sanitizer.restore()
     return 0
 
 
@@ -262,15 +380,18 @@ def command_report(args):
     """Results rescored against today's equivalent.txt (a review after the campaign)."""
     with open(os.path.join(args.out, "results.json"), encoding="utf-8") as f:
         doc = json.load(f)
-    equivalents = load_equivalents()
+    equivalents, undetectable = load_equivalents(), load_equivalents(UNDETECTABLE)
     for r in doc["mutants"]:
-        reviewed = r["status"] == "equivalent" and r["detail"].startswith("reviewed: ")
+        reviewed = r["status"] in ("equivalent", "undetectable") and r["detail"].startswith("reviewed: ")
         if reviewed or r["status"] == "survived":
             if r["id"] in equivalents:
                 r["status"], r["detail"] = "equivalent", "reviewed: " + equivalents[r["id"]]
+            elif r["id"] in undetectable:
+                r["status"], r["detail"] = "undetectable", "reviewed: " + undetectable[r["id"]]
             else:
                 r["status"], r["detail"] = "survived", ""
-    meta = {k: doc[k] for k in ("seed", "per_family", "families", "command", "baseline") if k in doc}
+    keys = ("seed", "per_family", "families", "command", "baseline", "only", "sanitizer_build")
+    meta = {k: doc[k] for k in keys if k in doc}
     report.write(args.out, meta, doc["mutants"], doc["seconds"])
     print(open(os.path.join(args.out, "results.md"), encoding="utf-8").read().split("\n## ")[0])
     return 0
@@ -300,6 +421,12 @@ def main():
     run.add_argument("--out", required=True, help="folder for results.json, results.md, build.log")
     run.add_argument("--max-timeout", type=float, default=120.0,
                      help="seconds a check may run at most (a hang is a kill)")
+    run.add_argument("--only", default="",
+                     help="run these mutants instead of a seeded choice: a results.json (its "
+                     "survivors), a file of ids, or comma-separated ids")
+    run.add_argument("--sanitizer-build", default="auto",
+                     help="the ASan+UBSan build folder survivors of host code are rechecked in "
+                     "(default: build-sanitize when configured; '' for none)")
     run.add_argument("--no-restore-build", action="store_true",
                      help="leave the build as the last mutant left it (faster)")
     rep = sub.add_parser("report", help="rescore a campaign's results against equivalent.txt")

@@ -6,7 +6,12 @@ Written after every mutant (to a temporary, then renamed), so a stopped campaign
 import json
 import os
 
-COLUMNS = ("mutants", "compiled", "equivalent", "killed", "survived", "build-failed", "not-run")
+# killed: by the default `pxflow check`; killed-sanitizer: only by the same check in the ASan+UBSan
+# build; undetectable: a survivor reviewed as invisible to any check on this machine
+# (undetectable.txt), never counted as killed.
+COLUMNS = ("mutants", "compiled", "equivalent", "killed", "killed-sanitizer", "undetectable",
+           "survived", "build-failed", "not-run")
+HEADINGS = {"killed-sanitizer": "killed (sanitizer)", "undetectable": "undetectable here"}
 
 
 def _count(results):
@@ -14,17 +19,20 @@ def _count(results):
     for r in results:
         c["mutants"] += 1
         c[r["status"]] += 1
-    c["compiled"] = c["equivalent"] + c["killed"] + c["survived"]
+    c["compiled"] = (c["equivalent"] + c["killed"] + c["killed-sanitizer"] + c["undetectable"]
+                     + c["survived"])
     return c
 
 
 def _score(c):
-    judged = c["killed"] + c["survived"]
+    """The default check's kills of the non-equivalent mutants."""
+    judged = c["killed"] + c["killed-sanitizer"] + c["undetectable"] + c["survived"]
     return f"{100.0 * c['killed'] / judged:.1f} %" if judged else "-"
 
 
 def _table(title, groups):
-    lines = [f"| {title} | " + " | ".join(COLUMNS) + " | killed of non-equivalent |",
+    lines = [f"| {title} | " + " | ".join(HEADINGS.get(k, k) for k in COLUMNS)
+             + " | killed by the default check, of non-equivalent |",
              "|---" * (len(COLUMNS) + 2) + "|"]
     for name, results in groups:
         c = _count(results)
@@ -37,15 +45,20 @@ def markdown(meta, results, seconds):
     for r in results:
         by_file.setdefault((r["family"], r["path"], ",".join(r["rows"])), []).append(r)
         by_family.setdefault(r["family"], []).append(r)
-    out = [f"# Mutation campaign: seed {meta['seed']}, {meta['per_family']} per family",
+    title = (f"# Mutation rerun: the mutants --only {meta['only']} names" if meta.get("only")
+             else f"# Mutation campaign: seed {meta['seed']}, {meta['per_family']} per family")
+    out = [title,
            "", f"`{meta['command']}`: {len(results)} mutants in {seconds / 60:.1f} min.", ""]
     out += _table("family", sorted(by_family.items()) + [("**total**", results)])
     out += [""]
     out += _table("file (rows)", [(f"{p} ({rows})", rs) for (_, p, rows), rs in sorted(by_file.items())])
-    survivors = [r for r in results if r["status"] == "survived"]
-    out += ["", f"## Survivors ({len(survivors)})", ""]
-    for r in survivors:
-        out += [f"- `{r['id']}` ({','.join(r['rows'])})", "", "```diff", r["diff"], "```", ""]
+    for status, title in (("survived", "Survivors"), ("killed-sanitizer", "Killed only under ASan+UBSan"),
+                          ("undetectable", "Undetectable here (tests/mutation/undetectable.txt)")):
+        listed = [r for r in results if r["status"] == status]
+        out += ["", f"## {title} ({len(listed)})", ""]
+        for r in listed:
+            note = f": {r['detail']}" if r.get("detail") else ""
+            out += [f"- `{r['id']}` ({','.join(r['rows'])}){note}", "", "```diff", r["diff"], "```", ""]
     reviewed = [r for r in results if r["status"] == "equivalent" and r["detail"].startswith("reviewed")]
     out += [f"## Equivalent by review ({len(reviewed)}, tests/mutation/equivalent.txt)", ""]
     out += [f"- `{r['id']}`: {r['detail'][len('reviewed: '):]}" for r in reviewed]

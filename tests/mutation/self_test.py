@@ -4,7 +4,8 @@ the end-to-end mutant is compiled from a temporary folder.
 
 - every file of the table exists, has mutants, and each mutant applies and reverts exactly;
 - every operator finds a site somewhere, every family of the table is used;
-- every entry of equivalent.txt names a mutant the tool generates (a stale one fails);
+- every entry of equivalent.txt and undetectable.txt names a mutant the tool generates (a stale
+  one fails);
 - with --pxflow: every row of the table is a row of that binary (families not built excepted),
   and with --dut-ref the dut reference device is where the table runs it;
 - with --cc: one mutant of the dut reference kernel, compiled in a temporary folder, differs from
@@ -19,7 +20,7 @@ import tempfile
 
 import operators
 import tce
-from mutate import all_mutants, load_equivalents
+from mutate import UNDETECTABLE, all_mutants, load_equivalents
 from targets import FAMILIES, OPTION_ROWS, TARGETS
 
 E2E_FILE = "dut/src/pxdut_kernel.c"
@@ -46,9 +47,11 @@ def check_mutants(source, problems):
         if not any(t.family == name for t in TARGETS):
             problems.append(f"family {name}: no file in the table")
     ids = {m.id for _, ms in by_path.values() for m in ms}
-    for ident in load_equivalents():
-        if ident not in ids:
-            problems.append(f"equivalent.txt: {ident} is not a mutant of the tree (stale: update it)")
+    for name, listed in (("equivalent.txt", load_equivalents()),
+                         ("undetectable.txt", load_equivalents(UNDETECTABLE))):
+        for ident in listed:
+            if ident not in ids:
+                problems.append(f"{name}: {ident} is not a mutant of the tree (stale: update it)")
     return total
 
 

@@ -24,6 +24,10 @@ class Family:
     link_targets: tuple = ("pxflow",)
     # extra `pxflow check` arguments (the dut reference device is a --dut row).
     check_args: tuple = ()
+    # the mutated code runs in the host process (or the host-built dut reference device), so an
+    # ASan+UBSan build sees its overruns; False for code a device runs (a GPU driver, the GAP8
+    # model's ISS, QEMU), which no host sanitizer instruments.
+    host_code: bool = True
 
 
 GAP8_ELVES = tuple(f"kernels/gap8/pxflow_gap8_{v}.elf" for v in ("original", "local", "global", "fast"))
@@ -37,10 +41,12 @@ FAMILIES = {
         Family("ref-original", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS),
         Family("ref-local", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS),
         Family("ref-global", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS),
-        Family("opencl", "opencl", ("pxflow",), ()),
-        Family("vulkan", "vulkan", ("kernels/vulkan/generated/flow.spv",), ("kernels/vulkan/generated/flow.spv",)),
-        Family("gap8", "gap8", GAP8_ELVES, GAP8_ELVES),
-        Family("cortex-m4", "m4qemu", ("hosts/m4qemu/pxflow_m4_dut.elf",), ("hosts/m4qemu/pxflow_m4_dut.elf",)),
+        Family("opencl", "opencl", ("pxflow",), (), host_code=False),
+        Family("vulkan", "vulkan", ("kernels/vulkan/generated/flow.spv",),
+               ("kernels/vulkan/generated/flow.spv",), host_code=False),
+        Family("gap8", "gap8", GAP8_ELVES, GAP8_ELVES, host_code=False),
+        Family("cortex-m4", "m4qemu", ("hosts/m4qemu/pxflow_m4_dut.elf",),
+               ("hosts/m4qemu/pxflow_m4_dut.elf",), host_code=False),
         Family("dut", "", ("dut/CMakeFiles/pxdut_algo.dir/src/pxdut_kernel.c.o",),
                ("dut/CMakeFiles/pxdut_algo.dir/src/pxdut_kernel.c.o",),
                ("pxflow", "pxflow-dut-ref"), ("--dut", "dutref=exec:{build}/pxflow-dut-ref")),
