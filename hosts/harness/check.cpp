@@ -273,6 +273,14 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
     const ReferenceAnswer e = reference_answer(views, c.params);
     const double reference_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - r0).count();
+    // The answer's own counts: a miscounting ref-original would hold every row to wrong counts.
+    const std::string reference_counts =
+        counts_verdict({"ref-original", c.name, c.setting}, RefVariant::kOriginal, e.counts,
+                       e.records, c.params, c.pairs.size());
+    if (!reference_counts.empty()) {
+      out << reference_counts << '\n' << std::flush;
+      ++report.failed;
+    }
     try {
       for (auto& k : contenders)
         if (k.backend) checker.run_case(k, c, e, index, reference_seconds);

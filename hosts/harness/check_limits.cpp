@@ -9,6 +9,8 @@
 namespace pxflow {
 namespace {
 
+constexpr int kMiddleRadius = 12;  // see spec_corners()
+
 // SPEC §2: one POI needs lo < hi on each axis (params.cpp's validate() says the same).
 int min_side(int search_radius) { return 2 * (search_radius + 1) + kTile + 1; }
 
@@ -59,6 +61,12 @@ std::vector<LimitProbe> spec_corners() {
       {"largest-radius-smallest-frame",
        {},
        at(min_side(kMaxSearchRadius), min_side(kMaxSearchRadius), kMaxSearchRadius, B)},
+      // A radius between the default and 31 whose window rows (2S+10 = 34 bytes) take three
+      // 16-byte copies and whose SIMD row reads (avx2: 41 bytes) pass the right edge: the CPU
+      // rows copy such windows (kernels/cpu/poi_loop.cpp), which neither 4 nor 31 makes them do.
+      {"middle-radius-smallest-frame",
+       {},
+       at(min_side(kMiddleRadius), min_side(kMiddleRadius), kMiddleRadius, B)},
       {"odd-size", {}, at(65, 64, S, B)},  // an odd width alone, an odd height alone, both
       {"odd-size", {}, at(64, 63, S, B)},
       {"odd-size", {}, at(63, 65, S, B)},

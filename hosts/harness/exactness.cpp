@@ -38,6 +38,7 @@ ReferenceAnswer reference_answer(std::span<const FramePair> pairs, const Params&
     reference_flow(RefVariant::kOriginal, pairs[n], p, mine, counts);
     a.results.push_back(estimate_flow(mine, p));
   }
+  a.counts = counts;
   return a;
 }
 

@@ -25,6 +25,7 @@ std::vector<PoiRecord> sentinel_records(std::size_t n);
 struct ReferenceAnswer {
   std::vector<PoiRecord> records;
   std::vector<FrameResult> results;
+  OpCounts counts;  // ref-original's own, held to its counting model like every row's
 };
 ReferenceAnswer reference_answer(std::span<const FramePair> pairs, const Params& p);
 
