@@ -247,8 +247,9 @@ def run_mutant(args, m, text, artifacts, checks, log):
         build_s = time.monotonic() - start
         # A mutant may slow a row down a lot without hanging (lavapipe ran a flow.comp mutant
         # with an out-of-bounds private array 6x slower, 18.7 s, and passed): the tool's own
-        # limit is generous; the check's verdicts (a worker's hang, a device timeout) come first.
-        timeout = min(args.max_timeout, max(60.0, 10 * base["seconds"]))
+        # limit is generous; the check's verdicts come first (a worker's hang verdict comes after
+        # 2 x --device-timeout = 60 s at the defaults, IsolatedRow::allowance).
+        timeout = min(args.max_timeout, max(75.0, 10 * base["seconds"]))
         outcome, detail, seconds = run_check(check_command(args.build, t), timeout)
         if t.family == "opencl" and "required but cannot run" in detail:
             outcome, detail = "build-failed", detail  # PoCL compiles the kernel at run time
