@@ -59,8 +59,8 @@ TEST_CASE("correct backends pass: the summary line counts cases", "[check]") {
   INFO(r.out);
   CHECK(r.exit_code == 0);
   CHECK(r.out.find("FAIL") == std::string::npos);
-  // 4 settings x 4 generated cases and 17 limit cases (check_limits.hpp), 2 backends
-  CHECK(last_line(r.out) == "66 passed, 0 failed, 0 skipped");
+  // 4 settings x 4 generated cases and 18 limit cases (check_limits.hpp), 2 backends
+  CHECK(last_line(r.out) == "68 passed, 0 failed, 0 skipped");
 }
 
 TEST_CASE("a backend that cannot run is skipped with its reason, or fails when required",
@@ -68,7 +68,7 @@ TEST_CASE("a backend that cannot run is skipped with its reason, or fails when r
   auto r = check({"--backends", "test-unavailable,ref-local", "--generated-only"});
   CHECK(r.exit_code == 0);
   CHECK(r.out.find("skip test-unavailable (no such device here (test row))") != std::string::npos);
-  CHECK(last_line(r.out) == "33 passed, 0 failed, 33 skipped");
+  CHECK(last_line(r.out) == "34 passed, 0 failed, 34 skipped");
   r = check({"--backends", "test-unavailable,ref-local", "--require", "test-unavailable",
              "--generated-only"});
   CHECK(r.exit_code == 1);
@@ -94,11 +94,11 @@ TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   const auto r = check({"--backends", "test-small-only", "--generated-only"});
   INFO(r.out);
   CHECK(r.exit_code == 0);
-  // The 8 generated cases at 64x64 and the 16 limit cases within 64x64 (its own edges among
+  // The 8 generated cases at 64x64 and the 17 limit cases within 64x64 (its own edges among
   // them: the largest square it accepts, 64x64, and the strips 64x19 and 19x64).
-  CHECK(last_line(r.out) == "24 passed, 0 failed, 0 skipped");
-  CHECK(r.out.find(" 270    11 ") != std::string::npos);  // pairs, then the n/a column
-  CHECK(r.out.find("test-small-only: 16, its own: ") != std::string::npos);
+  CHECK(last_line(r.out) == "25 passed, 0 failed, 0 skipped");
+  CHECK(r.out.find(" 272    11 ") != std::string::npos);  // pairs, then the n/a column
+  CHECK(r.out.find("test-small-only: 17, its own: ") != std::string::npos);
   CHECK(r.out.find("largest-square 64x64 S=4 B=8; widest 64x19 S=4 B=8; tallest 19x64") !=
         std::string::npos);
   // The check file lists them per backend; --limits-only runs them alone.
@@ -106,11 +106,11 @@ TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   const auto only =
       check({"--backends", "test-small-only", "--limits-only", "--json", dir.path("l.json")});
   CHECK(only.exit_code == 0);
-  CHECK(last_line(only.out) == "16 passed, 0 failed, 0 skipped");
+  CHECK(last_line(only.out) == "17 passed, 0 failed, 0 skipped");
   std::ifstream in(dir.path("l.json"));
   const auto j = nlohmann::json::parse(in);
   const auto limits = j["backends"][0]["limits"].get<std::vector<std::string>>();
-  CHECK(limits.size() == 16);
+  CHECK(limits.size() == 17);
   CHECK(std::find(limits.begin(), limits.end(),
                   "limits/largest-square of test-small-only 64x64 S=4 B=8") != limits.end());
   const auto fuzz = check({"--limits-only", "--cases", "5"});
@@ -242,10 +242,10 @@ TEST_CASE("counts are checked: a backend that miscounts fails with one line nami
   words >> got >> vs >> want;
   CHECK(vs == "vs");
   CHECK(number(got) == number(want) + 512);
-  // test-small-only, ref-original's kernel, counts right: its 24 cases within 64x64 pass (8
-  // generated, 16 limit cases); test-miscount fails every case it runs.
+  // test-small-only, ref-original's kernel, counts right: its 25 cases within 64x64 pass (8
+  // generated, 17 limit cases); test-miscount fails every case it runs.
   CHECK(r.out.find("FAIL test-small-only") == std::string::npos);
-  CHECK(last_line(r.out) == "24 passed, 37 failed, 0 skipped");
+  CHECK(last_line(r.out) == "25 passed, 38 failed, 0 skipped");
 }
 
 namespace {

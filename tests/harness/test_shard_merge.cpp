@@ -124,12 +124,12 @@ TEST_CASE("shard: the fixed corpus splits too, with skips, n/a and a required ba
                        5, 1);
   require_same_results(whole, merged);
   CHECK(whole["campaign"]["kind"] == "fixed-corpus");
-  // 16 generated cases and 21 limit cases (check_limits.hpp) of the three rows that opened.
-  CHECK(whole["campaign"]["cases"] == 37);
+  // 16 generated cases and 22 limit cases (check_limits.hpp) of the three rows that opened.
+  CHECK(whole["campaign"]["cases"] == 38);
   CHECK(whole["backends"][2]["not_applicable"] == 13);  // test-small-only above 64x64
   CHECK(whole["backends"][3]["failures"].size() == 1);  // "required but cannot run", once
   CHECK(whole["backends"][3]["failed"] == 0);           // no case ran ...
-  CHECK(whole["failed"].get<long>() >= 37);             // ... but all 37 count as failed
+  CHECK(whole["failed"].get<long>() >= 38);             // ... but all 38 count as failed
   CHECK(merged["merged_from"].size() == 5);
 
   // Without the requirement the unavailable backend is skipped in every shard: skipped merged.
@@ -137,13 +137,13 @@ TEST_CASE("shard: the fixed corpus splits too, with skips, n/a and a required ba
   const auto [w2, m2] = whole_and_merged(
       dir2, {"--backends", "ref-local,test-unavailable", "--generated-only"}, 2, 0);
   require_same_results(w2, m2);
-  CHECK(w2["skipped"] == 33);  // 16 generated cases and 17 limit cases
+  CHECK(w2["skipped"] == 34);  // 16 generated cases and 18 limit cases
   CHECK(m2["backends"][1]["state"] == "skipped");
 }
 
 TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the campaign", "[shard]") {
   TempDir dir;
-  // The generated corpus is 4 cases per setting, then 19 limit cases: of 7 shards of these 35
+  // The generated corpus is 4 cases per setting, then 20 limit cases: of 7 shards of these 36
   // cases, shard 3/7 holds cases 10..14, the 320x240 and 640x480 ones, n/a for test-small-only.
   std::vector<std::string> merge = {"merge", dir.path("m.json")};
   for (int k = 1; k <= 7; ++k) {
@@ -160,7 +160,7 @@ TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the camp
   }
   const RunResult m = pxflow_run(merge);
   CHECK(m.exit_code == 0);
-  CHECK(read(dir.path("m.json"))["passed"] == 24);
+  CHECK(read(dir.path("m.json"))["passed"] == 25);
   // A campaign in which no shard compared anything tested nothing: merge exits 1.
   std::vector<std::string> skipped = {"merge", "-"};
   for (int k = 1; k <= 2; ++k) {
@@ -269,8 +269,8 @@ TEST_CASE("merge: the merged file is a check file pxflow report accepts", "[shar
                                   "--no-accuracy", "--backends", "ref-original"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 0);
-  // 16 generated and 17 limit cases.
-  CHECK(slurp(dir.path("report/report.md")).find("33 cases (332 frame pairs)") !=
+  // 16 generated and 18 limit cases.
+  CHECK(slurp(dir.path("report/report.md")).find("34 cases (334 frame pairs)") !=
         std::string::npos);
 }
 
@@ -342,7 +342,7 @@ TEST_CASE("check --shard, --backend and --json -: the options and their errors",
   CHECK(j["backends"][0]["backend"] == "test-bitflip");
   CHECK(j["command"] ==
         "pxflow check --backend test-bitflip --seed 1 --generated-only --json - --no-repro");
-  CHECK(j["shard"] == json({{"index", 1}, {"count", 1}, {"first_case", 0}, {"end_case", 33}}));
+  CHECK(j["shard"] == json({{"index", 1}, {"count", 1}, {"first_case", 0}, {"end_case", 34}}));
   CHECK(r.err.find("FAIL test-bitflip case=") != std::string::npos);
   CHECK(last_line(r.err).find(" failed, 0 skipped") != std::string::npos);
 }
@@ -353,9 +353,9 @@ TEST_CASE("check: progress counts the fixed corpus against its total, the summar
       pxflow_run({"check", "--backend", "ref-local", "--generated-only", "--progress"});
   INFO(r.err);
   CHECK(r.exit_code == 0);
-  // 16 generated cases of 300 pairs, 17 limit cases of 32 (check_limits.hpp).
-  CHECK(r.err.find("check: 1 of 33 cases, 96 of 332 pairs") != std::string::npos);
-  CHECK(r.out.find("33 cases, 332 pairs in ") != std::string::npos);
+  // 16 generated cases of 300 pairs, 18 limit cases of 34 (check_limits.hpp).
+  CHECK(r.err.find("check: 1 of 34 cases, 96 of 334 pairs") != std::string::npos);
+  CHECK(r.out.find("34 cases, 334 pairs in ") != std::string::npos);
   const RunResult s = pxflow_run(
       {"check", "--backend", "ref-local", "--cases", "600", "--shard", "2/2", "--progress"});
   CHECK(s.exit_code == 0);
@@ -374,7 +374,7 @@ TEST_CASE("check names the implementation the cpu row dispatched to", "[shard]")
   CHECK(!isa.empty());
   CHECK(isa != "cpu");           // one of the ISA rows: swar, sse2, ..., avx512bw
   CHECK(b["device"] == "host");  // as flow --json says it
-  CHECK(r.err.find("passed          33     332     0") != std::string::npos);  // 17 limit cases
+  CHECK(r.err.find("passed          34     334     0") != std::string::npos);  // 18 limit cases
   CHECK(r.err.find("s  " + isa + "\n") != std::string::npos);  // the summary's "runs as" column
 }
 #endif
