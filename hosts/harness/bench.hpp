@@ -23,9 +23,10 @@ struct MachineState {
 // What other processes did while the bench ran, from /proc/stat and /proc/self/stat.
 struct MachineLoad {
   MachineState before, after;
-  double others_cpu_share = -1;  // of every CPU's time, by processes other than this one; -1: unknown
-  double steal_share = -1;       // of every CPU's time, taken by the hypervisor; -1: unknown
-  std::string disturbed;         // why the run was disturbed (kDisturbedShare), or empty
+  double others_cpu_share =
+      -1;                   // of every CPU's time, by processes other than this one; -1: unknown
+  double steal_share = -1;  // of every CPU's time, taken by the hypervisor; -1: unknown
+  std::string disturbed;    // why the run was disturbed (kDisturbedShare), or empty
 };
 
 // One measured configuration.
@@ -77,7 +78,7 @@ struct BenchReport {
   // The bound a family offered (BenchBound), or empty: what it is, the clock of the rows it
   // applies to, and its bytes compared per cycle of that clock.
   std::string bound_name, bound_clock;
-  double bound_bytes_per_cycle = 0;  // on one thread
+  double bound_bytes_per_cycle = 0;                      // on one thread
   std::vector<std::pair<int, double>> bound_by_threads;  // (threads, bytes per cycle), measured
   MachineLoad machine;
   std::vector<BenchRow> rows;        // point by point, backends in registry order

@@ -3,6 +3,7 @@
 
 #include "bench.hpp"
 #include "machine_state.hpp"
+#include "provenance.hpp"
 
 namespace pxflow {
 namespace {
@@ -61,6 +62,8 @@ Json bench_json(const BenchReport& r) {
   Json j{{"command", r.command},
          {"backends", r.backends},
          {"machine", machine_json(r.machine)},
+         // Which machine and build: what pxflow compare names each file by.
+         {"provenance", {{"build", build_provenance()}, {"machine", machine_provenance()}}},
          {"rows", rows},
          {"skipped", r.skipped}};
   if (r.bound_bytes_per_cycle > 0) {

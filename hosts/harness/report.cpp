@@ -227,6 +227,12 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
     for (const char* sweep : {"batch", "size", "radius", "threads"})
       secs.push_back(report::scaling(in.bench, sweep));
   }
+  Json comparison;
+  if (in.compared.size() >= 2) {
+    const BenchComparison c = compare_bench_files(in.compared);
+    for (Section& s : report::comparison_sections(in.compared, c)) secs.push_back(std::move(s));
+    comparison = comparison_json(c);
+  }
   if (!in.accuracy.empty()) secs.push_back(report::accuracy(in));
   Json commands{{"report", in.report_command},
                 {"check", in.check_command.empty() ? Json() : Json(in.check_command)},
@@ -244,6 +250,7 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
                {"commands", nullptr},
                {"check", in.check},
                {"bench", in.bench},
+               {"comparison", comparison},
                {"accuracy", in.accuracy.empty() ? Json()
                                                 : Json{{"command", in.accuracy_command},
                                                        {"rows", in.accuracy_rows}}},

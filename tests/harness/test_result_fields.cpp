@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "bench.hpp"
+#include "bench_compare.hpp"
 #include "check.hpp"
 #include "report_csv.hpp"
 
@@ -53,6 +54,13 @@ TEST_CASE("schema: a bench row's properties are bench_row_fields(), closed", "[s
   const Json row = schema().at("definitions").at("bench_row");
   CHECK(properties(row) == keys_of(bench_row_fields()));
   CHECK(as_set(row.at("required")) == keys_of(bench_row_fields(), true));
+  CHECK(row.at("additionalProperties") == false);
+}
+
+TEST_CASE("schema: a compare row's properties are compare_row_fields(), closed", "[schema]") {
+  const Json row = schema().at("definitions").at("compare_row");
+  CHECK(properties(row) == keys_of(compare_row_fields()));
+  CHECK(as_set(row.at("required")) == keys_of(compare_row_fields(), true));
   CHECK(row.at("additionalProperties") == false);
 }
 
