@@ -139,8 +139,10 @@ TEST_CASE("report --bench-json A B: a section per compared file and one chart ac
           "[compare][report]") {
   TempDir dir;
   make_small_results(dir);  // c.json (the check) and b.json, replaced below
-  const json a = make_baseline(dir);
+  json a = make_baseline(dir);
   write_slower_copy(dir, a, 1.2, "b.json");
+  a["machine"]["disturbed"] = "a disturbance the test planted";  // warned about, first screen
+  dir.write("a.json", a.dump());
   const RunResult r =
       run_pxflow({"report", "--out", dir.path("r"), "--check-json", dir.path("c.json"),
                   "--bench-json", dir.path("a.json"), dir.path("b.json"), "--no-accuracy",
@@ -157,7 +159,13 @@ TEST_CASE("report --bench-json A B: a section per compared file and one chart ac
   }
   CHECK(chart);
   CHECK(flagged);
-  CHECK(slurp(dir.path("r/report.html")).find("<h2 id='comparison-b'>") != std::string::npos);
+  const std::string html = slurp(dir.path("r/report.html"));
+  CHECK(html.find("<h2 id='comparison-b'>") != std::string::npos);
+  CHECK(html.find("<strong>Warning: the bench ran on a disturbed machine (a disturbance the test "
+                  "planted)") != std::string::npos);
+  CHECK(html.find("A was measured on a disturbed machine") != std::string::npos);
+  REQUIRE(!j["comparison"]["warnings"].empty());  // B too, when this machine was busy
+  CHECK(j["comparison"]["warnings"][0].get<std::string>().rfind("A was measured", 0) == 0);
 }
 
 }  // namespace pxflow::test
