@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 #include <ostream>
+#include <set>
 #include <tuple>
 
 #include "bench_stats.hpp"
@@ -91,6 +92,27 @@ std::string row_name(const std::string& label, const Json& r) {
                 r.value("width", 0), r.value("height", 0), r.value("search_radius", 0),
                 r.value("threads", 0), str(r, "source").c_str());
   return b;
+}
+
+// The baseline's measured points that `f` did not measure (a row that failed or was not run
+// there, or a backend it lacks): listed, so that a row missing from a gated run is seen (the
+// gate judges the rows compared; a failed row is the check's to fail).
+void list_missing(const BenchFile& base, const BenchFile& f, std::vector<std::string>& out) {
+  std::map<PointKey, std::string> in_f;  // every point of f: its note when not measured
+  for (const Json& r : f.bench["rows"])
+    if (!in_f.contains(point_key(r)) || measured(r))
+      in_f[point_key(r)] = measured(r) ? "" : str(r, "note").empty() ? "none" : str(r, "note");
+  std::set<PointKey> listed;
+  for (const Json& r : base.bench["rows"]) {
+    const PointKey key = point_key(r);
+    if (!measured(r) || listed.contains(key)) continue;
+    const auto it = in_f.find(key);
+    if (it != in_f.end() && it->second.empty()) continue;
+    listed.insert(key);
+    const std::string note = it == in_f.end() ? "" : it->second;
+    out.push_back(row_name(f.label, r) + ": measured in " + base.label + " only" +
+                  (note.empty() ? "" : " (" + f.label + "'s note: " + note + ")"));
+  }
 }
 
 std::string fixed(const char* format, double v) {
@@ -208,6 +230,7 @@ BenchComparison compare_bench_files(std::span<const BenchFile> files) {
       c.not_compared.push_back(row_name(f.label, r) + ": not comparable: " + files.front().label +
                                " timed this point by another clock (" + clocks + ")");
     }
+  for (const BenchFile& f : files.subspan(1)) list_missing(files.front(), f, c.not_compared);
   return c;
 }
 

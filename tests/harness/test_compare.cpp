@@ -112,6 +112,19 @@ TEST_CASE("compare: rows of another clock are listed as not comparable", "[compa
   CHECK(compared_row(c, "ref-local"));
   REQUIRE(c["not_compared"].size() == 1);
   CHECK(c["not_compared"][0].get<std::string>().find("not comparable") != std::string::npos);
+
+  // A point the baseline measured and the other file did not (its row failed there): listed.
+  json failed = json::parse(slurp(dir.path("a.json")));
+  for (const char* key : {"median_ns_per_frame", "samples_ns_per_frame"})
+    failed["rows"][1].erase(key);
+  failed["rows"][1]["note"] = "failed: planted";
+  dir.write("failed.json", failed.dump());
+  const RunResult missing =
+      run_pxflow({"compare", dir.path("a.json"), dir.path("failed.json"), "--fail-above", "10"});
+  INFO(missing.out);
+  CHECK(missing.exit_code == 0);
+  CHECK(missing.out.find("B: ref-local custom batch=1 64x64 S=4") != std::string::npos);
+  CHECK(missing.out.find("measured in A only (B's note: failed: planted)") != std::string::npos);
 }
 
 TEST_CASE("compare: a wrong file is one line and exit 2, and nothing is written", "[compare]") {
