@@ -57,7 +57,7 @@ int run_pxflow(int argc, char** argv) {
   std::vector<cli::Command> commands = {
       cli::add_flow_command(app),   cli::add_check_command(app),    cli::add_bench_command(app),
       cli::add_report_command(app), cli::add_accuracy_command(app), cli::add_backends_command(app),
-      cli::add_merge_command(app)};
+      cli::add_merge_command(app),  cli::add_compare_command(app)};
   for (const cli::CliExtension& e : cli::registered_cli_extensions())
     if (e.add_command) commands.push_back(e.add_command(app));
   // Every command's --help (and so its man page) ends with its own footer, the global options,

@@ -21,6 +21,7 @@ struct BenchArgs {
   std::string backend, backends, batches, thread_sweep, sizes, radii, json_path;
   std::string command;  // the command line as run (command_line.hpp)
   double min_time = 0.25;
+  int max_samples = 0;
   bool quick = false;
   // --threads: the host threads of every point but the thread sweep's (0 = all cores).
   CLI::Option *min_time_opt = nullptr, *threads_opt = nullptr;
@@ -89,6 +90,7 @@ int run_bench_command(const BenchArgs& a) {
   for (const std::string& name : o.backends) (void)find_backend(name);  // before any output
   o.points = bench_points(a);
   o.min_seconds = a.quick && a.min_time_opt->count() == 0 ? kQuickMinSeconds : a.min_time;
+  o.max_samples = a.max_samples;
   o.backend_options = a.backend_options;
   o.backend_options.threads = 0;  // each point's own threads (bench_points)
   // `--json -`: the JSON is standard output, so the table goes to standard error.
@@ -99,8 +101,8 @@ int run_bench_command(const BenchArgs& a) {
   std::ostream& out = json_to_stdout ? std::cerr : std::cout;
   out << "pxflow bench: " << counted(o.points.size(), "point")
       << "; each backend's records are checked "
-      << "against ref-original before it is timed; ns/frame is the median over repeats "
-         "(min..max)\n";
+      << "against ref-original before it is timed, then timed for at least --min-time seconds "
+         "of samples; ns/frame is the median sample, with its 95% confidence interval\n";
   BenchReport r = run_bench(o, out);
   r.command = a.command;
   const std::string json = json_document(bench_json(r));
@@ -134,9 +136,15 @@ Command add_bench_command(CLI::App& app) {
   sub->add_option("--sizes", a->sizes, "Frame sizes, WxH[,WxH...]")->check(non_empty_list());
   sub->add_option("--radius", a->radii, "Search radii, S[,S...]")->check(non_empty_list());
   a->min_time_opt =
-      sub->add_option("--min-time", a->min_time, "Seconds of repeats per point and backend")
+      sub->add_option("--min-time", a->min_time,
+                      "Seconds of measured samples per point and backend, at least (5 samples "
+                      "at least, however long)")
           ->check(CLI::Range(0.0, 600.0))
           ->capture_default_str();
+  sub->add_option("--max-samples", a->max_samples,
+                  "Stop a point after N samples even before --min-time (0 = no cap)")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
   sub->add_flag("--quick", a->quick,
                 "The default sweeps' quick subset: batch <= 256 and the frame sizes, no radius or "
                 "thread sweep, --min-time 0.05 unless given (what report --quick runs)");

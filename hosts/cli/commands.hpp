@@ -22,7 +22,8 @@ struct Command {
 };
 
 Command add_flow_command(CLI::App& app);
-Command add_merge_command(CLI::App& app);  // pxflow merge: check shards combined
+Command add_merge_command(CLI::App& app);    // pxflow merge: check shards combined
+Command add_compare_command(CLI::App& app);  // pxflow compare: bench files side by side
 Command add_backends_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);

@@ -31,6 +31,7 @@ namespace {
 
 struct ReportArgs {
   std::string out_dir, check_json, bench_json, backends, backend;
+  std::vector<std::string> bench_files;  // --bench-json: the first is bench_json
   std::string data_dir = kSampleDataDir;
   std::uint64_t seed = 1;
   int threads = 0;  // check and bench (accuracy keeps its one thread, like for like with OpenCV)
@@ -271,7 +272,13 @@ void read_given_results(ReportInputs& in, const ReportArgs& a) {
   if (!a.backend.empty()) (void)find_backend(a.backend);
   refuse_options_without_effect(a);
   if (!a.check_json.empty()) in.check = read_json("--check-json", a.check_json, "check");
-  if (!a.bench_json.empty()) in.bench = read_json("--bench-json", a.bench_json, "bench");
+  for (const std::string& path : a.bench_files) {  // several: compared with the first
+    Json j = read_json("--bench-json", path, "bench");
+    check_bench_file("--bench-json " + path, j);
+    if (in.bench.is_null()) in.bench = j;
+    in.compared.push_back({path, file_label(in.compared.size()), std::move(j)});
+  }
+  if (in.compared.size() < 2) in.compared.clear();
   // The accuracy table's and the pictures' backend runs last: one it cannot run is refused now.
   if (!a.no_accuracy) accuracy::require_backend_runs(accuracy_options(a));
 }
@@ -279,7 +286,8 @@ void read_given_results(ReportInputs& in, const ReportArgs& a) {
 // The report's folder and files, planned and prepared in `plan` before any work: a folder or
 // file that cannot be made fails first.
 ReportOutputs plan_report_outputs(OutputPlan& plan, const ReportArgs& a) {
-  plan.read_all({a.check_json, a.bench_json});
+  plan.read_all({a.check_json});
+  plan.read_all(a.bench_files);
   if (a.check_json.empty() || !a.no_accuracy) plan.read_folder("--data", a.data_dir);
   std::vector<std::string> pictures;  // planned even with --no-accuracy: a previous report's go
   for (const char* video : accuracy::kVideos) pictures.push_back(picture_file(video));
@@ -385,8 +393,9 @@ Command add_report_command(CLI::App& app) {
   sub->add_option("--out", a->out_dir, "Folder to write the report into")->required();
   sub->add_option("--check-json", a->check_json,
                   "Use this `pxflow check --json` file instead of running the check");
-  sub->add_option("--bench-json", a->bench_json,
-                  "Use this `pxflow bench --json` file instead of running the bench");
+  sub->add_option("--bench-json", a->bench_files,
+                  "Use this `pxflow bench --json` file instead of running the bench; more than "
+                  "one: the report also compares them with the first (pxflow compare)");
   add_backends_option(*sub, a->backends, "of the check, the bench and the family sections");
   add_backend_option(*sub, a->backend, "of the accuracy table and the flow pictures");
   add_threads_option(*sub, a->threads,
@@ -405,6 +414,7 @@ Command add_report_command(CLI::App& app) {
       sub->add_flag(e.report_skip_flag, skipped, e.report_skip_help);
   return {sub,
           [a, sub] {
+            a->bench_json = a->bench_files.empty() ? "" : a->bench_files.front();
             a->command = given_command_line(*sub);
             a->globals = global_options(*sub);
             a->check_workers = check_worker_command(*sub, a->backend_options());

@@ -112,13 +112,16 @@ struct EnvironmentVariable {
 };
 
 // A bound the benchmark puts beside the rows timed by `clock` (the cpu family: the psadbw
-// ceiling in TSC cycles): how many times the bound each row's cycles per frame are.
+// ceiling in TSC cycles): how many times the bound each row's cycles per frame are, the bound
+// measured on as many threads as the row was given, so that no row can beat it.
 struct BenchBound {
   std::string name;   // what the bound is, e.g. "back-to-back psadbw zmm on L1 data"
   std::string clock;  // rows whose time source contains this ("tsc") get a ratio
-  double bytes_per_cycle = 0;
-  // The bound's cycles for one frame of `pois` POIs at search radius S.
-  std::function<double(long pois, int search_radius)> cycles_per_frame;
+  // Bytes compared per cycle of `clock` by `threads` threads running the loop at once (measured
+  // when called: the bench calls it once per thread count it meets).
+  std::function<double(int threads)> bytes_per_cycle;
+  // The bound's bytes for one frame of `pois` POIs at search radius S.
+  std::function<double(long pois, int search_radius)> bytes_per_frame;
 };
 
 // What one family contributes: its rows and the optional extensions only it knows about.

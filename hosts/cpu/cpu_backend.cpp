@@ -106,15 +106,14 @@ BackendRow dispatcher_row() {
   return row;
 }
 
-// The bench's bound for TSC-timed rows: the SAD work at the widest psadbw's measured rate.
+// The bench's bound for TSC-timed rows: the SAD work at the widest psadbw's measured rate on as
+// many threads as the row was given.
 std::optional<BenchBound> psadbw_bound() {
 #if defined(__x86_64__)
-  const cpu::Ceiling c = cpu::measure_ceiling();
-  if (c.bytes_per_cycle <= 0) return std::nullopt;
-  return BenchBound{std::string("back-to-back psadbw ") + c.width + " on L1 data", "tsc",
-                    c.bytes_per_cycle, [bpc = c.bytes_per_cycle](long pois, int radius) {
-                      return cpu::sad_bytes_per_frame(pois, radius) / bpc;
-                    }};
+  const std::string width = cpu::ceiling_width();
+  if (width == "none") return std::nullopt;
+  return BenchBound{"back-to-back psadbw " + width + " on L1 data", "tsc", cpu::measure_ceiling,
+                    cpu::sad_bytes_per_frame};
 #else
   return std::nullopt;
 #endif

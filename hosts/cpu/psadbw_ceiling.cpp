@@ -2,6 +2,11 @@
 
 #include <x86intrin.h>
 
+#include <algorithm>
+#include <atomic>
+#include <thread>
+#include <vector>
+
 #include "isa_mask.hpp"
 #include "isa_table.hpp"
 
@@ -16,35 +21,61 @@ bool may_use(std::string_view width) {
   return false;
 }
 
+struct Width {
+  const char* name;
+  int bytes;
+  std::uint64_t (*run)(const std::uint8_t*, std::int64_t);
+};
+constexpr Width kWidths[] = {
+    {"xmm", 16, psadbw_xmm}, {"ymm", 32, psadbw_ymm}, {"zmm", 64, psadbw_zmm}};
+
+const Width* widest() {
+  const Width* best = nullptr;
+  for (const Width& w : kWidths)
+    if (may_use(w.name)) best = &w;
+  return best;
+}
+
+// One thread's fastest trial while `stop` is not set; sets it when its trials are done, so that
+// no thread's later trials run alone on a core another thread has left.
+double fastest_trial(const Width& w, std::atomic<bool>& stop) {
+  alignas(64) std::uint8_t data[768];
+  for (int i = 0; i < 768; ++i) data[i] = static_cast<std::uint8_t>(i * 37);
+  constexpr std::int64_t kRounds = 20'000;
+  volatile std::uint64_t sink = w.run(data, 100 * kRounds);  // warm up (and clock up)
+  double best_rate = 0;
+  for (int trial = 0; trial < 200 && !stop.load(std::memory_order_relaxed); ++trial) {
+    const std::uint64_t c0 = __rdtsc();
+    sink = w.run(data, kRounds);
+    const std::uint64_t c1 = __rdtsc();
+    if (stop.load(std::memory_order_relaxed)) break;
+    best_rate = std::max(best_rate, 12.0 * w.bytes * kRounds / static_cast<double>(c1 - c0));
+  }
+  (void)sink;
+  stop = true;
+  return best_rate;
+}
+
 }  // namespace
 
-Ceiling measure_ceiling() {
-  alignas(64) static std::uint8_t data[768];
-  for (int i = 0; i < 768; ++i) data[i] = static_cast<std::uint8_t>(i * 37);
-  struct Width {
-    const char* name;
-    int bytes;
-    std::uint64_t (*run)(const std::uint8_t*, std::int64_t);
-  };
-  const Width widths[] = {
-      {"xmm", 16, psadbw_xmm}, {"ymm", 32, psadbw_ymm}, {"zmm", 64, psadbw_zmm}};
-  Ceiling best;
-  for (const Width& w : widths) {
-    if (!may_use(w.name)) continue;
-    constexpr std::int64_t kRounds = 20'000;
-    volatile std::uint64_t sink = w.run(data, 100 * kRounds);  // warm up (and clock up)
-    double best_rate = 0;
-    for (int trial = 0; trial < 200; ++trial) {  // the fastest trial: others share this machine
-      const std::uint64_t c0 = __rdtsc();
-      sink = w.run(data, kRounds);
-      const std::uint64_t c1 = __rdtsc();
-      const double rate = 12.0 * w.bytes * kRounds / static_cast<double>(c1 - c0);
-      if (rate > best_rate) best_rate = rate;
-    }
-    (void)sink;
-    best = {w.name, best_rate};
-  }
-  return best;
+const char* ceiling_width() {
+  const Width* w = widest();
+  return w ? w->name : "none";
+}
+
+double measure_ceiling(int threads) {
+  const Width* w = widest();
+  if (!w) return 0;
+  std::atomic<bool> stop{false};
+  std::vector<double> rates(static_cast<std::size_t>(std::max(1, threads)));
+  std::vector<std::thread> others;
+  for (std::size_t t = 1; t < rates.size(); ++t)
+    others.emplace_back([&, t] { rates[t] = fastest_trial(*w, stop); });
+  rates[0] = fastest_trial(*w, stop);
+  for (std::thread& t : others) t.join();
+  double sum = 0;
+  for (double r : rates) sum += r;
+  return sum;
 }
 
 double sad_bytes_per_frame(long pois, int search_radius) {

@@ -12,13 +12,15 @@ std::uint64_t psadbw_xmm(const std::uint8_t* data, std::int64_t rounds);
 std::uint64_t psadbw_ymm(const std::uint8_t* data, std::int64_t rounds);
 std::uint64_t psadbw_zmm(const std::uint8_t* data, std::int64_t rounds);
 
-// Bytes psadbw-compared per TSC cycle by the widest psadbw this CPU has (and may use: the ISA
-// mask applies), the fastest of many trials since others may share the machine.
-struct Ceiling {
-  const char* width = "none";
-  double bytes_per_cycle = 0;  // 0 when no x86 SIMD path is available
-};
-Ceiling measure_ceiling();
+// The widest psadbw this CPU has and may use (the ISA mask applies): "xmm", "ymm", "zmm", or
+// "none" when no x86 SIMD path is available.
+const char* ceiling_width();
+
+// Bytes psadbw-compared per TSC cycle by `threads` threads each running back-to-back psadbw of
+// ceiling_width() at once, summed (two threads on the two hyperthreads of one core share its
+// ports); each thread's fastest of many trials, counted only while every thread still runs, since
+// others may share the machine. 0 when the width is "none".
+double measure_ceiling(int threads);
 
 // The bound of SPEC §6's SAD work for one frame: every POI searched and refined, the feature
 // test left out (364,544 bytes for px4flow-64), in bytes.

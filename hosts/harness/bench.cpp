@@ -11,10 +11,12 @@
 #include <x86intrin.h>
 #endif
 
+#include "bench_stats.hpp"
 #include "counted.hpp"
 #include "exactness.hpp"
 #include "grid.hpp"
 #include "interrupt.hpp"
+#include "machine_state.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
@@ -65,11 +67,10 @@ Inputs make_inputs(const Params& p, int batch) {
   return in;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
-}
+// A point's samples: at least kMinSamples, each of enough runs that about kTargetSamples fill
+// --min-time (docs/harness.md, "Statistics").
+constexpr int kMinSamples = 5;
+constexpr int kTargetSamples = 20;
 
 std::string point_label(const BenchPoint& pt) {
   return pt.setting + " " + std::to_string(pt.params.width) + "x" +
@@ -83,7 +84,7 @@ struct Column {
   const char* name;
   int width;
 };
-constexpr Column kColumns[] = {{"clock", 22},    {"ns/frame", 12}, {"min..max ns", 23},
+constexpr Column kColumns[] = {{"clock", 22},    {"ns/frame", 12}, {"95% CI of median", 23},
                                {"frames/s", 11}, {"ns/POI", 9},    {"cycles/frame", 13},
                                {"x bound", 8},   {"vs ref", 8}};
 
@@ -98,6 +99,15 @@ class Bench {
   Bench(const BenchOptions& o, std::ostream& out, std::size_t name_width,
         std::optional<BenchBound> bound)
       : o_(o), out_(out), name_width_(static_cast<int>(name_width)), bound_(std::move(bound)) {}
+
+  // The bound's bytes per cycle on `threads` threads, measured the first time it is asked for.
+  double bound_bytes_per_cycle(int threads, BenchReport& report) {
+    for (const auto& [t, bpc] : report.bound_by_threads)
+      if (t == threads) return bpc;
+    const double bpc = bound_->bytes_per_cycle(threads);
+    report.bound_by_threads.push_back({threads, bpc});
+    return bpc;
+  }
 
   // Opens every row once (all cores) before the first point, so that the table is preceded by
   // what each backend runs and on which device.
@@ -140,7 +150,7 @@ class Bench {
       return emit_exact_clock(*d, *first, sim, base, report);
     if (*first > o_.max_run_seconds)
       return note(base, "not timed: one run takes " + std::to_string(*first) + " s", report);
-    emit_samples(repeat_runs(*b, pt, in), base, report);
+    emit_samples(repeat_runs(*b, pt, in, *first), base, report);
   }
 
  private:
@@ -210,7 +220,7 @@ class Bench {
     BenchRow dev = base;
     dev.source = d.source;
     dev.exact_clock = true;
-    fill(dev, {d.ns / sim.batch}, d.cycles ? *d.cycles / sim.batch : 0);
+    fill(dev, {d.ns / sim.batch}, 1, d.cycles ? *d.cycles / sim.batch : 0);
     if (d.instructions) dev.instructions_per_frame = *d.instructions / sim.batch;
     char speed[128];
     std::snprintf(speed, sizeof speed, "one checked run; host simulation %.1f pairs/s",
@@ -220,32 +230,46 @@ class Bench {
     emit(dev, report);
   }
 
-  // Per-frame figures of the repeated runs: the host's, and the device clock's when it has one.
+  // Per-frame figures of the samples: the host's, and the device clock's when it has one.
   struct Samples {
     std::vector<double> host_ns, tsc, device_ns, device_cycles;
     std::string device_source;
+    int runs = 1;  // runs of the batch per sample
+    double measured_s = 0;
   };
 
-  // At least three runs, then more until min_seconds or max_repeats; run r starts at pair r.
-  Samples repeat_runs(Backend& b, const BenchPoint& pt, const Inputs& in) const {
+  // Samples of `runs` runs each, calibrated from the checked run's `first` seconds, until
+  // min_seconds of samples are measured (and kMinSamples taken), or max_samples; run r starts at
+  // pair r.
+  Samples repeat_runs(Backend& b, const BenchPoint& pt, const Inputs& in, double first) const {
     Samples s;
+    s.runs = static_cast<int>(
+        std::clamp(o_.min_seconds / kTargetSamples / std::max(first, 1e-9), 1.0, 1e6));
     std::vector<PoiRecord> got(poi_count(pt.params) * static_cast<std::size_t>(pt.batch));
     OpCounts counts;
-    const auto start = std::chrono::steady_clock::now();
-    for (int rep = 1; s.host_ns.size() < 3 || (seconds_since(start) < o_.min_seconds &&
-                                               static_cast<int>(s.host_ns.size()) < o_.max_repeats);
-         ++rep) {
+    const double frames = static_cast<double>(s.runs) * pt.batch;
+    for (int rep = 1; s.host_ns.size() < static_cast<std::size_t>(kMinSamples) ||
+                      s.measured_s < o_.min_seconds;) {
+      if (o_.max_samples > 0 && s.host_ns.size() >= static_cast<std::size_t>(o_.max_samples)) break;
+      stop_if_interrupted("a bench point's samples");
+      double device_ns = 0, device_cycles = 0;
+      bool cycles = false;
       const std::uint64_t c0 = tsc_now();
       const auto t0 = std::chrono::steady_clock::now();
-      b.run(in.batch_for(rep), pt.params, got, counts);
-      const double ns = seconds_since(t0) * 1e9;
-      s.tsc.push_back(static_cast<double>(tsc_now() - c0) / pt.batch);
-      s.host_ns.push_back(ns / pt.batch);
-      if (auto d = b.last_device_time()) {
-        s.device_source = d->source;
-        s.device_ns.push_back(d->ns / pt.batch);
-        if (d->cycles) s.device_cycles.push_back(*d->cycles / pt.batch);
+      for (int k = 0; k < s.runs; ++k, ++rep) {
+        b.run(in.batch_for(rep), pt.params, got, counts);
+        if (auto d = b.last_device_time()) {
+          s.device_source = d->source;
+          device_ns += d->ns;
+          if (d->cycles) device_cycles += *d->cycles, cycles = true;
+        }
       }
+      const double seconds = seconds_since(t0);
+      s.tsc.push_back(static_cast<double>(tsc_now() - c0) / frames);
+      s.measured_s += seconds;
+      s.host_ns.push_back(seconds * 1e9 / frames);
+      if (!s.device_source.empty()) s.device_ns.push_back(device_ns / frames);
+      if (cycles) s.device_cycles.push_back(device_cycles / frames);
     }
     return s;
   }
@@ -253,12 +277,13 @@ class Bench {
   void emit_samples(const Samples& s, const BenchRow& base, BenchReport& report) {
     BenchRow host = base;
     host.source = kHasTsc ? "host-steady-clock+tsc" : "host-steady-clock";
-    fill(host, s.host_ns, kHasTsc ? median(s.tsc) : 0);
+    fill(host, s.host_ns, s.runs, kHasTsc ? median_of(s.tsc) : 0);
+    host.measured_s = s.measured_s;
     emit(host, report);
     if (s.device_ns.empty()) return;
     BenchRow dev = base;
     dev.source = s.device_source;
-    fill(dev, s.device_ns, s.device_cycles.empty() ? 0 : median(s.device_cycles));
+    fill(dev, s.device_ns, s.runs, s.device_cycles.empty() ? 0 : median_of(s.device_cycles));
     emit(dev, report);
   }
 
@@ -289,11 +314,16 @@ class Bench {
     return r;
   }
 
-  static void fill(BenchRow& r, const std::vector<double>& ns, double cycles) {
+  static void fill(BenchRow& r, const std::vector<double>& ns, int runs, double cycles) {
     r.repeats = static_cast<int>(ns.size());
-    r.median_ns_per_frame = median(ns);
+    r.runs_per_sample = runs;
+    r.samples_ns_per_frame = ns;
+    r.median_ns_per_frame = median_of(ns);
+    std::tie(r.median_ci_low_ns, r.median_ci_high_ns) = median_ci95(ns);
     r.min_ns_per_frame = *std::min_element(ns.begin(), ns.end());
     r.max_ns_per_frame = *std::max_element(ns.begin(), ns.end());
+    r.noisy = is_noisy(r.median_ns_per_frame, r.median_ci_low_ns, r.median_ci_high_ns,
+                       r.min_ns_per_frame);
     r.frames_per_s = 1e9 / r.median_ns_per_frame;
     r.ns_per_poi = r.median_ns_per_frame / static_cast<double>(r.pois_per_frame);
     r.cycles_per_frame = cycles;
@@ -314,10 +344,16 @@ class Bench {
 
   // The ratio to the bound (rows timed by its clock) and the speed-up over ref-original's row of
   // the same point and clock, which registry order has emitted already.
-  void derive(BenchRow& r, const BenchReport& report) const {
-    if (bound_ && r.cycles_per_frame > 0 && r.source.find(bound_->clock) != std::string::npos)
+  void derive(BenchRow& r, BenchReport& report) {
+    if (bound_ && r.cycles_per_frame > 0 && r.source.find(bound_->clock) != std::string::npos) {
+      const double bpc = bound_bytes_per_cycle(r.threads, report);
       r.bound_ratio =
-          r.cycles_per_frame / bound_->cycles_per_frame(r.pois_per_frame, r.search_radius);
+          r.cycles_per_frame / (bound_->bytes_per_frame(r.pois_per_frame, r.search_radius) / bpc);
+      if (r.bound_ratio < 1)  // the bound ran on as many threads: only a measuring error beats it
+        add_note(r,
+                 "beats its bound: a measuring error (was the machine busy while the bound "
+                 "was measured?)");
+    }
     for (const auto& ref : report.rows)
       if (ref.backend == kReferenceBackend && ref.source == r.source && ref.sweep == r.sweep &&
           ref.setting == r.setting && ref.width == r.width && ref.height == r.height &&
@@ -327,15 +363,20 @@ class Bench {
     if (r.backend == kReferenceBackend) r.speedup_vs_reference = 1.0;
   }
 
+  static void add_note(BenchRow& r, const std::string& what) {
+    r.note += (r.note.empty() ? "" : "; ") + what;
+  }
+
   void emit(BenchRow r, BenchReport& report) {
     derive(r, report);
+    if (r.noisy) add_note(r, "noisy: rerun on a quiet machine");
     // A clock that counts instructions (QEMU's -icount) has no time of its own: its virtual
     // nanoseconds and the rates made of them (kept in the JSON) are no speed of anything.
     const bool instructions = r.cycles_per_frame == 0 && r.instructions_per_frame > 0;
     auto timing = [&](std::string cell) { return instructions ? std::string("-") : cell; };
     const std::string cells[] = {
         r.source, timing(fixed("%.0f", r.median_ns_per_frame)),
-        timing(fixed("%.0f", r.min_ns_per_frame) + ".." + fixed("%.0f", r.max_ns_per_frame)),
+        timing(fixed("%.0f", r.median_ci_low_ns) + ".." + fixed("%.0f", r.median_ci_high_ns)),
         timing(fixed("%.1f", r.frames_per_s)), timing(fixed("%.1f", r.ns_per_poi)),
         // A clock that counts instructions (QEMU's -icount) says so in its cell, never "cycles".
         r.cycles_per_frame > 0         ? fixed("%.0f", r.cycles_per_frame)
@@ -364,7 +405,8 @@ class Bench {
 
 // How far each row is from the bound a family offers (the cpu family: the SAD work at the
 // widest psadbw's rate, in TSC cycles): the first family with a bound this machine can measure
-// gives it. Measured before the points, so that every row is printed with its ratio.
+// gives it. Its one-thread rate is measured before the points, so that the header states it;
+// other thread counts when a row first needs them.
 std::optional<BenchBound> measure_bound(BenchReport& r) {
   for (const BackendFamily& f : backend_families()) {
     if (!f.measure_bench_bound) continue;
@@ -372,7 +414,8 @@ std::optional<BenchBound> measure_bound(BenchReport& r) {
     if (!bound) continue;
     r.bound_name = bound->name;
     r.bound_clock = bound->clock;
-    r.bound_bytes_per_cycle = bound->bytes_per_cycle;
+    r.bound_bytes_per_cycle = bound->bytes_per_cycle(1);
+    r.bound_by_threads.push_back({1, r.bound_bytes_per_cycle});
     return bound;
   }
   return std::nullopt;
@@ -422,6 +465,8 @@ void set_sweep_threads(std::vector<BenchPoint>& points, int threads) {
 
 BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   BenchReport report;
+  const MachineState before = read_machine_state();
+  const CpuTimes t0 = read_cpu_times();
   const std::vector<const BackendRow*> rows = rows_to_run(o.backends);
   check_device_option(rows, o.backend_options.device);
   std::size_t name_width = 7;
@@ -431,8 +476,10 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   out << "backends (what runs, on which device):\n";
   bench.open_all(rows, report);
   if (bound)
-    out << "bound: " << bound->name << ", " << bound->bytes_per_cycle << " bytes per "
-        << bound->clock << " cycle; x bound = a row's cycles per frame over the bound's\n";
+    out << "bound: " << bound->name << ", " << fixed("%.1f", report.bound_bytes_per_cycle)
+        << " bytes per " << bound->clock
+        << " cycle on one thread (measured again on as many threads as a row is given); x bound = "
+           "a row's cycles per frame over the bound's\n";
   bench.print_header();
   std::size_t done = 0;
   for (const auto& pt : o.points) {
@@ -450,6 +497,8 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   }
   progress("");
   for (const auto& s : report.skipped) out << "skipped " << s << "\n";
+  report.machine = machine_load(before, t0, read_machine_state(), read_cpu_times());
+  out << machine_line(report.machine) << "\n";
   return report;
 }
 

@@ -12,6 +12,23 @@
 
 namespace pxflow {
 
+// How a run's machine looked (machine_state.cpp): what the bench records before and after it, so
+// that a reader can tell a quiet run from a disturbed one.
+struct MachineState {
+  double load_1min = -1;  // /proc/loadavg; -1 where unreadable
+  double cpu_mhz = 0;     // the mean of /proc/cpuinfo's "cpu MHz"; 0 where unreadable
+  int cpus = 0;
+};
+
+// What other processes did while the bench ran, from /proc/stat and /proc/self/stat.
+struct MachineLoad {
+  MachineState before, after;
+  double others_cpu_share =
+      -1;                   // of every CPU's time, by processes other than this one; -1: unknown
+  double steal_share = -1;  // of every CPU's time, taken by the hypervisor; -1: unknown
+  std::string disturbed;    // why the run was disturbed (kDisturbedShare), or empty
+};
+
 // One measured configuration.
 struct BenchPoint {
   std::string sweep;  // "batch", "size", "radius", "threads" or "custom"
@@ -24,8 +41,11 @@ struct BenchPoint {
 struct BenchOptions {
   std::vector<std::string> backends;  // empty: all that can run
   std::vector<BenchPoint> points;
-  double min_seconds = 0.25;  // per point and backend, after warm-up
-  int max_repeats = 25;
+  // Seconds of measured samples per point and backend, after the checked run: a minimum, reached
+  // whatever the row's speed (unless max_samples stops it first).
+  double min_seconds = 0.25;
+  int max_samples = 0;  // 0: no cap
+
   double max_run_seconds = 3.0;  // skip a point whose single run would take longer
   BackendOptions backend_options;
 };
@@ -35,10 +55,21 @@ struct BenchRow {
   int width = 0, height = 0, search_radius = 0, batch = 0, threads = 0, repeats = 0;
   long pois_per_frame = 0;
   double median_ns_per_frame = 0, min_ns_per_frame = 0, max_ns_per_frame = 0;
+  // The 95 % confidence interval of the median (order statistics: distribution-free), and
+  // whether the point is noisy (bench_stats.hpp: is_noisy).
+  double median_ci_low_ns = 0, median_ci_high_ns = 0;
+  bool noisy = false;
+  // Each sample: `runs_per_sample` runs of the batch timed together, in ns per frame; the
+  // seconds they took together.
+  std::vector<double> samples_ns_per_frame;
+  int runs_per_sample = 0;
+  double measured_s = 0;
   double frames_per_s = 0, ns_per_poi = 0;
   double cycles_per_frame = 0;        // 0 when the source has no cycle clock
   double instructions_per_frame = 0;  // 0 when the source does not count instructions
-  double bound_ratio = 0;  // cycles per frame / the bound's (BenchBound, docs/cpu-simd.md); 0: none
+  // cycles per frame / the bound's on as many threads as the row was given (BenchBound,
+  // docs/cpu-simd.md); 0: none
+  double bound_ratio = 0;
   double speedup_vs_reference = 0;  // vs ref-original, same point and source; 0 when not measured
   bool exact_clock = false;         // timed by a deterministic device clock (DeviceTime::exact)
 };
@@ -47,7 +78,9 @@ struct BenchReport {
   // The bound a family offered (BenchBound), or empty: what it is, the clock of the rows it
   // applies to, and its bytes compared per cycle of that clock.
   std::string bound_name, bound_clock;
-  double bound_bytes_per_cycle = 0;
+  double bound_bytes_per_cycle = 0;                      // on one thread
+  std::vector<std::pair<int, double>> bound_by_threads;  // (threads, bytes per cycle), measured
+  MachineLoad machine;
   std::vector<BenchRow> rows;        // point by point, backends in registry order
   std::vector<std::string> skipped;  // "backend: reason" lines
   // What each opened backend ran (provenance.hpp: describe_backend), in registry order.

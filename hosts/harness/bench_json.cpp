@@ -2,6 +2,8 @@
 #include <array>
 
 #include "bench.hpp"
+#include "machine_state.hpp"
+#include "provenance.hpp"
 
 namespace pxflow {
 namespace {
@@ -31,9 +33,14 @@ constexpr std::array kBenchRowFields{
     member_field<&BenchRow::exact_clock>("exact_clock"),
     member_field<&BenchRow::repeats>("repeats"),
     member_field<&BenchRow::pois_per_frame>("pois_per_frame"),
+    member_field<&BenchRow::runs_per_sample>("runs_per_sample"),
+    member_field<&BenchRow::measured_s>("measured_s"),
     member_field<&BenchRow::median_ns_per_frame>("median_ns_per_frame"),
+    member_field<&BenchRow::median_ci_low_ns>("median_ci_low_ns"),
+    member_field<&BenchRow::median_ci_high_ns>("median_ci_high_ns"),
     member_field<&BenchRow::min_ns_per_frame>("min_ns_per_frame"),
     member_field<&BenchRow::max_ns_per_frame>("max_ns_per_frame"),
+    member_field<&BenchRow::noisy>("noisy"),
     member_field<&BenchRow::frames_per_s>("frames_per_s"),
     member_field<&BenchRow::ns_per_poi>("ns_per_poi"),
     positive_field<&BenchRow::cycles_per_frame>("cycles_per_frame"),
@@ -41,6 +48,8 @@ constexpr std::array kBenchRowFields{
     positive_field<&BenchRow::bound_ratio>("bound_ratio"),
     positive_field<&BenchRow::speedup_vs_reference>("speedup_vs_ref_original"),
     member_field<&BenchRow::note>("note"),
+    // Every sample, in the JSON only (compare's test reads them).
+    member_field<&BenchRow::samples_ns_per_frame>("samples_ns_per_frame", false),
 };
 
 }  // namespace
@@ -50,11 +59,22 @@ std::span<const ResultField<BenchRow>> bench_row_fields() { return kBenchRowFiel
 Json bench_json(const BenchReport& r) {
   Json rows = Json::array();
   for (const BenchRow& b : r.rows) rows.push_back(fields_json(bench_row_fields(), b));
-  Json j{{"command", r.command}, {"backends", r.backends}, {"rows", rows}, {"skipped", r.skipped}};
-  if (r.bound_bytes_per_cycle > 0)
+  Json j{{"command", r.command},
+         {"backends", r.backends},
+         {"machine", machine_json(r.machine)},
+         // Which machine and build: what pxflow compare names each file by.
+         {"provenance", {{"build", build_provenance()}, {"machine", machine_provenance()}}},
+         {"rows", rows},
+         {"skipped", r.skipped}};
+  if (r.bound_bytes_per_cycle > 0) {
+    Json by_threads = Json::array();
+    for (const auto& [threads, bpc] : r.bound_by_threads)
+      by_threads.push_back({{"threads", threads}, {"bytes_per_cycle", bpc}});
     j["bound"] = {{"name", r.bound_name},
                   {"clock", r.bound_clock},
-                  {"bytes_per_cycle", r.bound_bytes_per_cycle}};
+                  {"bytes_per_cycle", r.bound_bytes_per_cycle},
+                  {"by_threads", by_threads}};
+  }
   return j;
 }
 

@@ -74,14 +74,23 @@ std::string render_md(const std::vector<Section>& secs) {
   return o.str();
 }
 
-// A section's text, escaped, its `code` spans (Markdown's, as report.md writes them) as <code>
-// and its line breaks (a list of failure lines) as <br>.
+// A section's text, escaped, its `code` spans and **strong** spans (Markdown's, as report.md
+// writes them: the first screen's warning) as <code> and <strong>, and its line breaks (a list of
+// failure lines) as <br>.
 std::string html_text(const std::string& text) {
   std::string out;
-  bool code = false;
+  bool code = false, strong = false;
   std::size_t start = 0;
   auto plain = [&](const std::string& t) {
-    for (char c : html_escape(t)) out += c == '\n' ? std::string("<br>") : std::string(1, c);
+    const std::string escaped = html_escape(t);
+    for (std::size_t i = 0; i < escaped.size(); ++i) {
+      if (!code && escaped.compare(i, 2, "**") == 0) {
+        out += strong ? "</strong>" : "<strong>";
+        strong = !strong, ++i;
+      } else {
+        out += escaped[i] == '\n' ? std::string("<br>") : std::string(1, escaped[i]);
+      }
+    }
   };
   for (std::size_t tick = text.find('`'); tick != std::string::npos;
        start = tick + 1, tick = text.find('`', start)) {
@@ -91,6 +100,7 @@ std::string html_text(const std::string& text) {
   }
   plain(text.substr(start));
   if (code) out += "</code>";  // an unpaired backtick: the rest is code, the tag closed
+  if (strong) out += "</strong>";
   return out;
 }
 
@@ -227,6 +237,12 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
     for (const char* sweep : {"batch", "size", "radius", "threads"})
       secs.push_back(report::scaling(in.bench, sweep));
   }
+  Json comparison;
+  if (in.compared.size() >= 2) {
+    const BenchComparison c = compare_bench_files(in.compared);
+    for (Section& s : report::comparison_sections(in.compared, c)) secs.push_back(std::move(s));
+    comparison = comparison_json(c);
+  }
   if (!in.accuracy.empty()) secs.push_back(report::accuracy(in));
   Json commands{{"report", in.report_command},
                 {"check", in.check_command.empty() ? Json() : Json(in.check_command)},
@@ -244,6 +260,7 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
                {"commands", nullptr},
                {"check", in.check},
                {"bench", in.bench},
+               {"comparison", comparison},
                {"accuracy", in.accuracy.empty() ? Json()
                                                 : Json{{"command", in.accuracy_command},
                                                        {"rows", in.accuracy_rows}}},

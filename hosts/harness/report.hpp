@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_compare.hpp"
 #include "output_plan.hpp"
 #include "result_json.hpp"
 #include "svg_chart.hpp"
@@ -15,6 +16,8 @@ namespace pxflow {
 struct ReportInputs {
   Json check;  // check_json(), or null
   Json bench;  // bench_json(), or null
+  // Bench files to compare (report --bench-json A B ...), A (= bench) first; fewer than two: none.
+  std::vector<BenchFile> compared;
   std::string check_command, bench_command, report_command;
   // What each backend runs (provenance.hpp: describe_backend), in registry order, and where the
   // descriptions come from (the bench's run, or this report opening the rows).

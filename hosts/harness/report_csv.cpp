@@ -72,12 +72,16 @@ std::string conformance_csv(const Json& check) {
   return csv(csv_columns(backend_outcome_fields()), rows);
 }
 
+std::string csv_table(const std::vector<std::string>& cols, const Json& rows) {
+  std::vector<const Json*> in_order;
+  for (const auto& r : rows) in_order.push_back(&r);
+  return csv(cols, in_order);
+}
+
 std::string accuracy_csv(const Json& accuracy_rows) {
-  std::vector<const Json*> rows;
-  for (const auto& r : accuracy_rows) rows.push_back(&r);
-  return csv({"set", "setting", "against", "method", "frames", "with_flow", "mean_error_px",
-              "p95_error_px", "median_us_per_frame"},
-             rows);
+  return csv_table({"set", "setting", "against", "method", "frames", "with_flow", "mean_error_px",
+                    "p95_error_px", "median_us_per_frame"},
+                   accuracy_rows);
 }
 
 }  // namespace pxflow

@@ -110,6 +110,9 @@ struct Line {
   std::map<double, std::string> cells;
   std::set<std::string> notes;
   Series series;
+  // The 95 % interval of each timed point's median, in ns per frame (or per POI): adjacent
+  // points whose intervals overlap draw no trend (scaling_text says so).
+  std::map<double, std::pair<double, double>> intervals;
 };
 struct SweepTable {
   std::map<double, std::string> columns;                      // by x: its header
@@ -147,8 +150,13 @@ void add_row(SweepTable& t, const SweepInfo& info, const Json& bench, const Json
     return;
   }
   const double y = info.per_poi ? r["ns_per_poi"].get<double>() : r["frames_per_s"].get<double>();
-  l.cells[x] = num(y);
+  l.cells[x] = num(y) + (r.value("noisy", false) ? " (noisy)" : "");
   l.series.points.push_back({x, y});
+  if (r.contains("median_ci_low_ns") && !model) {
+    const double per = info.per_poi ? r["pois_per_frame"].get<double>() : 1.0;
+    l.intervals[x] = {r["median_ci_low_ns"].get<double>() / per,
+                      r["median_ci_high_ns"].get<double>() / per};
+  }
 }
 
 // The header (a column per x, then the notes) and a row per line, "-" where it has no cell.
@@ -191,6 +199,22 @@ std::string scaling_text(const SweepInfo& info, const Json& first, const SweepTa
       "numbers say why (n/a: outside the backend's limits; not run: the note says how to run "
       "it).";
   if (t.any_uncharted()) text += kInstructionNote;
+  // Which lines' neighbouring points cannot be told apart: their intervals overlap.
+  std::string flat;
+  for (const auto& [_, l] : t.lines) {
+    for (auto it = l.intervals.begin();
+         it != l.intervals.end() && std::next(it) != l.intervals.end(); ++it) {
+      const auto& [lo1, hi1] = it->second;
+      const auto& [lo2, hi2] = std::next(it)->second;
+      if (std::max(lo1, lo2) > std::min(hi1, hi2)) continue;
+      flat += (flat.empty() ? "" : ", ") + l.label + " (" + t.columns.at(it->first) + " to " +
+              t.columns.at(std::next(it)->first) + ")";
+    }
+  }
+  if (!flat.empty())
+    text += " The 95 % intervals of the medians overlap between neighbouring points of " + flat +
+            ": no trend can be read there, the difference is within the run's noise. Cells "
+            "marked (noisy) had a wide spread (docs/harness.md, \"Statistics\").";
   return text;
 }
 

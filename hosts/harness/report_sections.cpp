@@ -7,6 +7,7 @@
 
 #include "check.hpp"
 #include "counted.hpp"
+#include "machine_state.hpp"
 #include "report_rows.hpp"
 
 namespace pxflow::report {
@@ -46,13 +47,33 @@ std::vector<std::string> bench_cells(const Json& r) {
   return {str(r, "backend"),
           str(r, "source"),
           num(r["median_ns_per_frame"], "%.0f"),
-          num(r["min_ns_per_frame"], "%.0f") + ".." + num(r["max_ns_per_frame"], "%.0f"),
+          r.contains("median_ci_low_ns")
+              ? num(r["median_ci_low_ns"], "%.0f") + ".." + num(r["median_ci_high_ns"], "%.0f")
+              : "-",
           num(r["frames_per_s"]),
           num(r["ns_per_poi"]),
           r.contains("cycles_per_frame") ? num(r["cycles_per_frame"], "%.0f") : "-",
           r.contains("bound_ratio") ? num(r["bound_ratio"], "%.2fx") : "-",
           r.contains("speedup_vs_ref_original") ? num(r["speedup_vs_ref_original"], "%.2fx") : "-",
           str(r, "note")};
+}
+
+// What "x bound" means, with the bound's measured values (docs/cpu-simd.md, "The bound").
+std::string bound_text(const Json& bench) {
+  if (!bench.contains("bound")) return "";
+  const Json& b = bench["bound"];
+  std::string values;
+  for (const auto& t : b.value("by_threads", Json::array()))
+    values += (values.empty() ? "" : ", ") + num(t["bytes_per_cycle"], "%.1f") + " on " +
+              threads_text(t["threads"].get<int>());
+  if (values.empty()) values = num(b["bytes_per_cycle"], "%.1f") + " on one thread";
+  return "\n\nx bound: a row's " + str(b, "clock") +
+         " cycles per frame over the cycles the bound needs for the frame's SAD work (every POI's "
+         "search and half-pixel SADs, 64 bytes per SAD). The bound is " +
+         str(b, "name") +
+         ", measured by this bench run on as many threads as the row was given: " + values +
+         " bytes per cycle. 1.00x would be a kernel doing nothing but that loop; a row below "
+         "1.00x is a measuring error and says so in its note.";
 }
 
 }  // namespace
@@ -80,6 +101,24 @@ Section provenance(const ReportInputs& in, const Json& build, const Json& machin
   if (!in.bench_command.empty()) s.rows.push_back({"bench", in.bench_command});
   if (!in.accuracy_command.empty()) s.rows.push_back({"accuracy", in.accuracy_command});
   for (const auto& sec : in.sections) s.rows.push_back({sec.key, sec.command});
+  if (in.bench.is_object() && in.bench.contains("machine")) {
+    const MachineLoad m = machine_from_json(in.bench["machine"]);
+    s.rows.push_back({"bench machine", machine_line(m)});
+    long noisy = 0, timed_rows = 0;
+    for (const auto& r : in.bench["rows"])
+      if (timed(r)) ++timed_rows, noisy += r.value("noisy", false) ? 1 : 0;
+    if (!m.disturbed.empty() || noisy > 0)
+      s.text =
+          "**Warning: " +
+          (m.disturbed.empty() ? std::string()
+                               : "the bench ran on a disturbed machine (" + m.disturbed + "). ") +
+          (noisy > 0
+               ? counted(noisy, "timed row") + " of " + std::to_string(timed_rows) + " are noisy. "
+               : "") +
+          "Its figures may be slower and more scattered than the machine is: rerun the "
+          "bench command on a quiet machine.** " +
+          s.text;
+  }
   return s;
 }
 
@@ -152,7 +191,7 @@ Section throughput(const Json& bench, const std::string& cmd) {
   Section s{"throughput",
             "Throughput",
             "",
-            {"backend", "clock", "ns/frame (median)", "min..max", "frames/s", "ns/POI",
+            {"backend", "clock", "ns/frame (median)", "95% CI of median", "frames/s", "ns/POI",
              "cycles/frame", "x bound", "vs ref-original", "note"},
             {},
             {},
@@ -221,6 +260,7 @@ Section throughput(const Json& bench, const std::string& cmd) {
   if (std::any_of(model_rows.begin(), model_rows.end(),
                   [](const Json* r) { return counts_instructions(*r); }))
     s.text += kInstructionNote;
+  s.text += bound_text(bench);
   if (!host.bars.empty()) s.charts.push_back(host);
   if (!sim.bars.empty()) s.charts.push_back(sim);
   return s;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_compare.hpp"
 #include "report.hpp"
 #include "svg_chart.hpp"
 
@@ -27,6 +28,10 @@ Section throughput(const Json& bench, const std::string& command);
 // One sweep ("batch", "size", "radius", "threads") as a table and charts.
 Section scaling(const Json& bench, const std::string& sweep);
 Section accuracy(const ReportInputs& in);
+// Several bench files (report_compare.cpp): one chart across them and the files' identities,
+// then a section per file compared with the first.
+std::vector<Section> comparison_sections(std::span<const BenchFile> files,
+                                         const BenchComparison& c);
 
 // The chart as results.json carries it (docs/report-schema.md).
 Json chart_json(const Chart& c);

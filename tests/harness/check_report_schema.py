@@ -63,6 +63,12 @@ MUTATIONS = [
      lambda j: j["bench"]["rows"][0].__setitem__("furlongs_per_frame", 1.0)),
     ("check.backends[0] with a key the schema does not list",
      lambda j: j["check"]["backends"][0].__setitem__("colour", "green")),
+    ("comparison.rows[0] with a key the schema does not list",
+     lambda j: j["comparison"]["rows"][0].__setitem__("furlongs", 1.0)),
+    ("comparison.rows[0].verdict unknown",
+     lambda j: j["comparison"]["rows"][0].__setitem__("verdict", "better")),
+    ("bench.provenance.machine.host removed",
+     lambda j: j["bench"]["provenance"]["machine"].pop("host")),
     ("gap8 cycles a fraction",
      lambda j: next(iter(next(iter(j["gap8"]["variants"].values())).values())).__setitem__(
          "cycles", 0.5)),
@@ -71,10 +77,11 @@ MUTATIONS = [
 
 def csv_header_failures(schema, report):
     """results.csv and conformance.csv have a column per field of the schema's bench row and
-    check backend (the check's failure lines and limit lists aside: results.json only)."""
+    check backend (the check's failure lines and limit lists and a bench row's samples aside:
+    lists, results.json only)."""
     definitions = schema["definitions"]
     backend = definitions["check"]["properties"]["backends"]["items"]
-    expected = {"results.csv": set(definitions["bench_row"]["properties"]),
+    expected = {"results.csv": set(definitions["bench_row"]["properties"]) - {"samples_ns_per_frame"},
                 "conformance.csv": set(backend["properties"]) - {"failures", "limits"}}
     failures = []
     for name, want in expected.items():
@@ -94,8 +101,11 @@ def main():
     run([pxflow, "check", "--backends", "ref-original,ref-local", "--generated-only", "--json", c])
     run([pxflow, "bench", "--backends", "ref-original,ref-local", "--batch", "1", "--min-time",
          "0", "--json", b])
-    # --quick: a short accuracy run, so that its rows are in the file and validated too.
-    run([pxflow, "report", "--out", r, "--check-json", c, "--bench-json", b, "--quick",
+    # --quick: a short accuracy run, so that its rows are in the file and validated too; a copy
+    # of the bench file as a second one, so that the comparison is too.
+    b2 = os.path.join(out, "b2.json")
+    shutil.copyfile(b, b2)
+    run([pxflow, "report", "--out", r, "--check-json", c, "--bench-json", b, b2, "--quick",
          "--backend", "ref-local"])
     with open(schema_path) as f:
         schema = json.load(f)
@@ -108,7 +118,7 @@ def main():
         failures.append("produced results.json: %s: %s" % (list(e.path), e.message))
     failures += csv_header_failures(schema, r)
     # The parts a test of the schema must see: otherwise a null would pass for them.
-    for key in ("check", "bench", "accuracy", "gap8"):
+    for key in ("check", "bench", "comparison", "accuracy", "gap8"):
         if results.get(key) is None:
             failures.append("produced results.json has no %s: the test would not cover it" % key)
     for what, mutate in MUTATIONS:

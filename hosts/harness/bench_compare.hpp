@@ -1,0 +1,77 @@
+// pxflow compare: bench files of other machines, builds or drivers side by side (docs/harness.md,
+// "Comparing bench files"). The first file is the baseline; every row of the others is compared
+// with the baseline's row of the same backend, point and clock: the ratio of the medians with an
+// interval, and the Mann-Whitney U test on the two rows' samples, as Google Benchmark's
+// compare.py decides whether a change is real.
+#pragma once
+#include <iosfwd>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "result_fields.hpp"
+#include "result_json.hpp"
+
+namespace pxflow {
+
+// A change is significant when the U test's p-value is below this (compare.py's alpha).
+inline constexpr double kSignificanceLevel = 0.05;
+
+// One bench file (pxflow bench --json), as read: `label` "A", "B", ... in the order given.
+struct BenchFile {
+  std::string path, label;
+  Json bench;
+};
+
+// "A" for the first file given, "B", ... "Z" (and "Z" for any beyond).
+std::string file_label(std::size_t index);
+
+// Checks that `j` is a bench file whose rows carry what the comparison reads; throws InputError
+// ("PATH: ...") otherwise.
+void check_bench_file(const std::string& path, const Json& j);
+
+// "a.json: h (Intel ...), 4 cores; pxflow 0.9 at abc123, GNU 12.2.0; 2026-12-03 ...": what the
+// file's provenance says of its machine and build ("?" where an older file lacks it).
+std::string file_identity(const BenchFile& f);
+std::string file_machine(const BenchFile& f);  // "h (Intel ...)", for a section's title
+
+struct CompareRow {
+  std::string file;  // the label of the file compared with the baseline
+  std::string backend, sweep, setting, source;
+  int width = 0, height = 0, search_radius = 0, batch = 0, threads = 0, base_threads = 0;
+  int samples = 0, base_samples = 0;
+  double base_median_ns = 0, median_ns = 0;
+  // median / base median (> 1: slower), and its interval from the medians' 95 % intervals.
+  double ratio = 0, ratio_ci_low = 0, ratio_ci_high = 0;
+  double p_value = -1;  // the U test's; -1: not tested (an exact clock: one deterministic count)
+  std::string verdict;  // "slower", "faster" or "same" (not significant)
+};
+
+struct BenchComparison {
+  std::vector<std::string> files;  // file_identity() of each, baseline first
+  // "B was measured on a disturbed machine (...)": its changes may be the load, not the build.
+  std::vector<std::string> warnings;
+  std::vector<CompareRow> rows;
+  // Rows that have no counterpart to compare with: "B: avx2 batch=1 (host-steady-clock): ..."
+  std::vector<std::string> not_compared;
+};
+
+// Every file after the first against the first (at least two files).
+BenchComparison compare_bench_files(std::span<const BenchFile> files);
+
+// Whether a row is significantly slower by more than `percent` (pxflow compare --fail-above).
+bool slower_beyond(const CompareRow& r, double percent);
+
+// A compare row's fields as compare.json and compare.csv carry them: the only list of them.
+std::span<const ResultField<CompareRow>> compare_row_fields();
+Json comparison_json(const BenchComparison& c);
+std::string comparison_csv(const BenchComparison& c);
+
+// "backend  point  clock  A ns/frame  B ns/frame  B/A [95% CI]  p  verdict" lines.
+void print_comparison(const BenchComparison& c, std::ostream& out);
+
+// "1.204 [1.18, 1.23]" and "batch=256 640x480 S=4 threads=2": one spelling for table and report.
+std::string ratio_text(const CompareRow& r);
+std::string point_text(const CompareRow& r);
+
+}  // namespace pxflow

@@ -1,0 +1,74 @@
+// The bench's statistics (bench_stats.hpp) on samples with known answers, and `pxflow bench`
+// keeping its promise: --min-time seconds of samples at least, every sample in the JSON, the
+// interval around the median, the machine's state recorded.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "bench_stats.hpp"
+#include "run_program.hpp"
+
+namespace pxflow::test {
+namespace {
+
+using nlohmann::json;
+
+TEST_CASE("the median's interval holds the median and widens to min..max with few samples",
+          "[bench-stats]") {
+  CHECK(median_of({3, 1, 2}) == 2);
+  CHECK(median_of({4, 1, 3, 2}) == 2.5);
+  // n = 5: ranks 1 and 5 (the binomial covers 94 % there): min..max.
+  CHECK(median_ci95({5, 1, 4, 2, 3}) == std::pair<double, double>{1, 5});
+  // n = 100, values 1..100: ranks floor(50 - 9.8) = 40 and ceil(50 + 9.8) + 1 = 61.
+  std::vector<double> v;
+  for (int i = 100; i >= 1; --i) v.push_back(i);
+  CHECK(median_ci95(v) == std::pair<double, double>{40, 61});
+}
+
+TEST_CASE("noisy: a wide interval or a median far above the fastest sample", "[bench-stats]") {
+  CHECK_FALSE(is_noisy(100, 97, 104, 95));
+  CHECK(is_noisy(100, 90, 111, 95));  // interval 21 % of the median
+  CHECK(is_noisy(100, 99, 101, 60));  // median 1.67x the minimum
+}
+
+TEST_CASE("Mann-Whitney U: the normal approximation with ties and continuity", "[bench-stats]") {
+  // Separated samples, n = 5 and 5: U = 0, mean 12.5, variance 5 * 5 * 11 / 12, z = 12 / 4.787:
+  // p = 0.01219 (scipy.stats.mannwhitneyu(..., method='asymptotic') gives the same).
+  const std::vector<double> a{1, 2, 3, 4, 5}, b{6, 7, 8, 9, 10};
+  CHECK(mann_whitney_p(a, b) == Approx(0.0121858).epsilon(1e-4));
+  CHECK(mann_whitney_p(b, a) == mann_whitney_p(a, b));
+  // Ties across the samples: scipy 1.x (method='asymptotic') gives 0.169368 for these.
+  const std::vector<double> c{1, 2, 2, 3, 5, 7}, d{2, 3, 3, 4, 8, 9, 9};
+  CHECK(mann_whitney_p(c, d) == Approx(0.169368).epsilon(1e-4));
+  CHECK(mann_whitney_p(a, a) == 1.0);  // identical samples are never different
+  CHECK(mann_whitney_p(std::vector<double>{1}, b) == 1.0);
+}
+
+TEST_CASE("bench --min-time is a minimum of measured samples, each kept in the JSON", "[bench]") {
+  const RunResult r = run_pxflow({"bench", "--backends", "ref-original,ref-local", "--batch", "1",
+                                  "--min-time", "0.3", "--json", "-"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const json j = json::parse(r.out);
+  REQUIRE(j["rows"].size() == 2);
+  for (const auto& row : j["rows"]) {
+    INFO(row.dump());
+    CHECK(row["measured_s"].get<double>() >= 0.3);
+    CHECK(row["repeats"].get<int>() >= 5);
+    CHECK(row["samples_ns_per_frame"].size() == row["repeats"].get<std::size_t>());
+    CHECK(row["median_ci_low_ns"] <= row["median_ns_per_frame"]);
+    CHECK(row["median_ns_per_frame"] <= row["median_ci_high_ns"]);
+    CHECK(row["min_ns_per_frame"] <= row["median_ci_low_ns"]);
+  }
+  // The machine around the run, and the verdict on it, on the last line of the table.
+  CHECK(j["machine"]["before"]["cpus"].get<int>() > 0);
+  CHECK(j["machine"]["others_cpu_share"].get<double>() >= 0);
+  CHECK(r.err.find("\nmachine: ") != std::string::npos);
+
+  const RunResult capped = run_pxflow({"bench", "--backends", "ref-local", "--batch", "1",
+                                       "--min-time", "2", "--max-samples", "6", "--json", "-"});
+  REQUIRE(capped.exit_code == 0);
+  CHECK(json::parse(capped.out)["rows"][0]["repeats"] == 6);
+}
+
+}  // namespace
+}  // namespace pxflow::test
