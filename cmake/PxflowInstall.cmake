@@ -295,11 +295,14 @@ function(pxflow_install)
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(EXPORT pxflowTargets NAMESPACE pxflow:: DESTINATION ${PXFLOW_INSTALL_CMAKEDIR})
+  set(programs "")
   foreach(program pxflow gap8-run pxflow-dut-ref)  # each one this build made
     if(TARGET ${program})
       install(TARGETS ${program} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+      list(APPEND programs ${program})
     endif()
   endforeach()
+  set(PXFLOW_INSTALLED_PROGRAMS ${programs} PARENT_SCOPE)  # cmake/PxflowPackage.cmake
   _pxflow_install_headers()
 
   # pxflowConfig.cmake: the dependencies first, then the targets.
