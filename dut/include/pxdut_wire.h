@@ -36,6 +36,7 @@
 #define PXDUT_ERR_NOT_READY 4u /* no PARAMS, or no RUN before RECORDS: a reset loses them */
 #define PXDUT_ERR_RANGE 5u
 #define PXDUT_ERR_VERSION 6u /* reserved: dut/ answers HELLO with its version, the host decides */
+#define PXDUT_ERR_OVERRUN 7u /* RUN: the kernel wrote into the guard records after the run's */
 
 /* Flags: bit 0 of HELLO reply's u16 flags and of RESULT's u32 flags. */
 #define PXDUT_HELLO_FLAG_ESTIMATE 1u  /* the device computes the frame estimate (SPEC §5) */

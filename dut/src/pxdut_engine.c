@@ -15,6 +15,11 @@
 #error "the wire's PARAMS body and record are the spec core's parameter block and record"
 #endif
 
+/* Guard records after the run's records: filled with a sentinel before RUN calls the kernel and
+ * checked after, so a kernel that writes past its output answers ERROR 7 instead of passing. */
+#define PXDUT_GUARD_RECORDS 2u
+#define PXDUT_GUARD_BYTE 0xA5u
+
 #define PXDUT_ENCODED_MAX (PXDUT_MAX_PACKET + PXDUT_MAX_PACKET / 254u + 2u)
 
 /* Every reply fits one packet of PXDUT_MAX_PACKET bytes (type, seq, body, CRC), whatever the
@@ -47,8 +52,8 @@ static struct {
   pxdut_params params;
   int params_ok, run_ok;
   uint32_t pois;
-  uint32_t frames[2][(PXDUT_MAX_PIXELS + 3u) / 4u]; /* prev, next: words, so aligned */
-  pxdut_record records[PXDUT_MAX_POIS];
+  uint32_t frames[2][(PXDUT_MAX_PIXELS + 3u) / 4u];           /* prev, next: words, so aligned */
+  pxdut_record records[PXDUT_MAX_POIS + PXDUT_GUARD_RECORDS]; /* the run's, then its guard */
 } g;
 
 static uint32_t get_u16(const uint8_t *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8; }
@@ -193,6 +198,10 @@ static void on_run(uint8_t seq, const uint8_t *body, uint32_t n) {
     return;
   }
   const uint8_t *prev = (const uint8_t *)g.frames[0], *next = (const uint8_t *)g.frames[1];
+  g.run_ok = 0;
+  uint8_t *guard = (uint8_t *)&g.records[g.pois];
+  const uint32_t guard_bytes = PXDUT_GUARD_RECORDS * (uint32_t)sizeof(pxdut_record);
+  for (uint32_t i = 0; i < guard_bytes; ++i) guard[i] = PXDUT_GUARD_BYTE;
   pxdut_estimate est = {0.0f, 0.0f, 0, 0};
   for (uint32_t i = 0; i < warmups; ++i) pxdut_port_kernel(&g.params, prev, next, g.records);
   uint32_t lo = 0, hi = 0, fastest = 0xFFFFFFFFu;
@@ -206,6 +215,11 @@ static void on_run(uint8_t seq, const uint8_t *body, uint32_t n) {
     hi += sum < lo ? 1u : 0u; /* the 64-bit total without 64-bit arithmetic */
     lo = sum;
   }
+  for (uint32_t i = 0; i < guard_bytes; ++i)
+    if (guard[i] != PXDUT_GUARD_BYTE) {
+      error_reply(seq, PXDUT_ERR_OVERRUN, "the kernel wrote past the run's records");
+      return;
+    }
   g.run_ok = 1;
   uint8_t *p = begin(PXDUT_MSG_RESULT, seq);
   p = put_u32(p, g.pois);

@@ -29,7 +29,8 @@ typedef enum {
   kShortRecords,  /* every RECORDS reply lacks its last record */
   kWrongField,    /* N: run N's first accepted record has sub[3] off by one */
   kWrongEstimate, /* RESULT's flow_x has its lowest bit flipped */
-  kWrongSeq       /* every RESULT carries its request's seq plus one */
+  kWrongSeq,      /* every RESULT carries its request's seq plus one */
+  kOverrun        /* the kernel writes one record past the run's records */
 } fault_mode;
 
 static const struct {
@@ -53,7 +54,8 @@ static const struct {
               {"short-records", kShortRecords},
               {"wrong-field", kWrongField},
               {"wrong-estimate", kWrongEstimate},
-              {"wrong-seq", kWrongSeq}};
+              {"wrong-seq", kWrongSeq},
+              {"overrun", kOverrun}};
 
 static fault_mode mode = kNone;
 static long arg = 0;
@@ -206,6 +208,7 @@ uint32_t pxdut_port_cycles_hz(void) { return 1000000000u; }
 void pxdut_port_kernel(const pxdut_params *p, const uint8_t *prev, const uint8_t *next,
                        pxdut_record *out) {
   pxdut_kernel_portable(p, prev, next, out);
+  if (mode == kOverrun) out[pxdut_poi_count(p)] = out[0];
   if (mode != kWrongField || ++runs != arg) return;
   for (uint32_t i = 0; i < pxdut_poi_count(p); ++i)
     if (out[i].status == 2) {

@@ -163,6 +163,7 @@ TEST_CASE("short or extra records and a wrong count never pass", "[dut][faults]"
   expect_failed(run_fault("short-records"), "RECORDS: RECORDS reply has");
   // A record more than asked is a write past the output (the stream's guard zone).
   expect_failed(run_fault("extra-records"), "wrote past its output (32 bytes after record");
+  expect_failed(run_fault("overrun"), "ERROR 7 (the kernel wrote past the run's records)");
 }
 
 TEST_CASE("a wrong field is the usual mismatch line, a wrong estimate names both",
