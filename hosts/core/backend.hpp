@@ -111,11 +111,11 @@ struct EnvironmentVariable {
   std::string help;  // what it does, for the help text
 };
 
-// A bound the benchmark puts beside the rows timed by `clock` (the cpu family: the psadbw
+// A bound the benchmark puts beside the rows timed by `clock` (the cpu family: the SAD-instruction
 // ceiling in TSC cycles): how many times the bound each row's cycles per frame are, the bound
 // measured on as many threads as the row was given, so that no row can beat it.
 struct BenchBound {
-  std::string name;   // what the bound is, e.g. "back-to-back psadbw zmm on L1 data"
+  std::string name;   // what the bound is, e.g. "back-to-back vdbpsadbw zmm on L1 data (...)"
   std::string clock;  // rows whose time source contains this ("tsc") get a ratio
   // Bytes compared per cycle of `clock` by `threads` threads running the loop at once (measured
   // when called: the bench calls it once per thread count it meets).

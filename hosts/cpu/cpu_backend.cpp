@@ -106,13 +106,16 @@ BackendRow dispatcher_row() {
   return row;
 }
 
-// The bench's bound for TSC-timed rows: the SAD work at the widest psadbw's measured rate on as
-// many threads as the row was given.
+// The bench's bound for TSC-timed rows: the SAD work at the rate of the SAD instruction that
+// compares the most bytes per cycle here, measured on as many threads as the row was given.
 std::optional<BenchBound> psadbw_bound() {
 #if defined(__x86_64__)
-  const std::string width = cpu::ceiling_width();
-  if (width == "none") return std::nullopt;
-  return BenchBound{"back-to-back psadbw " + width + " on L1 data", "tsc", cpu::measure_ceiling,
+  const std::string fastest = cpu::fastest_instruction();
+  if (fastest == "none") return std::nullopt;
+  return BenchBound{"back-to-back " + fastest + " on L1 data (the fastest of " +
+                        cpu::ceiling_instructions() + " here)",
+                    "tsc",
+                    [fastest](int threads) { return cpu::measure_ceiling(fastest, threads); },
                     cpu::sad_bytes_per_frame};
 #else
   return std::nullopt;

@@ -21,24 +21,30 @@ bool may_use(std::string_view width) {
   return false;
 }
 
-struct Width {
+// Every SAD instruction a kernel of the table may search with; `bytes`: bytes compared (absolute
+// differences summed) per instruction.
+struct Instruction {
   const char* name;
+  const char* width;
   int bytes;
   std::uint64_t (*run)(const std::uint8_t*, std::int64_t);
 };
-constexpr Width kWidths[] = {
-    {"xmm", 16, psadbw_xmm}, {"ymm", 32, psadbw_ymm}, {"zmm", 64, psadbw_zmm}};
+constexpr Instruction kInstructions[] = {{"psadbw xmm", "xmm", 16, psadbw_xmm},
+                                         {"psadbw ymm", "ymm", 32, psadbw_ymm},
+                                         {"vmpsadbw ymm", "ymm", 64, vmpsadbw_ymm},
+                                         {"psadbw zmm", "zmm", 64, psadbw_zmm},
+                                         {"vdbpsadbw zmm", "zmm", 128, vdbpsadbw_zmm}};
 
-const Width* widest() {
-  const Width* best = nullptr;
-  for (const Width& w : kWidths)
-    if (may_use(w.name)) best = &w;
-  return best;
+std::vector<const Instruction*> usable() {
+  std::vector<const Instruction*> out;
+  for (const Instruction& i : kInstructions)
+    if (may_use(i.width)) out.push_back(&i);
+  return out;
 }
 
 // One thread's fastest trial while `stop` is not set; sets it when its trials are done, so that
 // no thread's later trials run alone on a core another thread has left.
-double fastest_trial(const Width& w, std::atomic<bool>& stop) {
+double fastest_trial(const Instruction& w, std::atomic<bool>& stop) {
   alignas(64) std::uint8_t data[768];
   for (int i = 0; i < 768; ++i) data[i] = static_cast<std::uint8_t>(i * 37);
   constexpr std::int64_t kRounds = 20'000;
@@ -56,26 +62,42 @@ double fastest_trial(const Width& w, std::atomic<bool>& stop) {
   return best_rate;
 }
 
-}  // namespace
-
-const char* ceiling_width() {
-  const Width* w = widest();
-  return w ? w->name : "none";
-}
-
-double measure_ceiling(int threads) {
-  const Width* w = widest();
-  if (!w) return 0;
+// `threads` threads running `w` at once: their rates summed.
+double measure_instruction(const Instruction& w, int threads) {
   std::atomic<bool> stop{false};
   std::vector<double> rates(static_cast<std::size_t>(std::max(1, threads)));
   std::vector<std::thread> others;
   for (std::size_t t = 1; t < rates.size(); ++t)
-    others.emplace_back([&, t] { rates[t] = fastest_trial(*w, stop); });
-  rates[0] = fastest_trial(*w, stop);
+    others.emplace_back([&, t] { rates[t] = fastest_trial(w, stop); });
+  rates[0] = fastest_trial(w, stop);
   for (std::thread& t : others) t.join();
   double sum = 0;
   for (double r : rates) sum += r;
   return sum;
+}
+
+}  // namespace
+
+std::string ceiling_instructions() {
+  std::string names;
+  for (const Instruction* i : usable()) names += (names.empty() ? "" : ", ") + std::string(i->name);
+  return names.empty() ? "none" : names;
+}
+
+std::string fastest_instruction() {
+  const Instruction* best = nullptr;
+  double best_rate = 0;
+  for (const Instruction* i : usable()) {
+    const double rate = measure_instruction(*i, 1);
+    if (rate > best_rate) best = i, best_rate = rate;
+  }
+  return best ? best->name : "none";
+}
+
+double measure_ceiling(const std::string& instruction, int threads) {
+  for (const Instruction* i : usable())
+    if (instruction == i->name) return measure_instruction(*i, threads);
+  return 0;
 }
 
 double sad_bytes_per_frame(long pois, int search_radius) {

@@ -404,9 +404,9 @@ class Bench {
 };
 
 // How far each row is from the bound a family offers (the cpu family: the SAD work at the
-// widest psadbw's rate, in TSC cycles): the first family with a bound this machine can measure
-// gives it. Its one-thread rate is measured before the points, so that the header states it;
-// other thread counts when a row first needs them.
+// fastest SAD instruction's rate, in TSC cycles): the first family with a bound this machine can
+// measure gives it. Its one-thread rate is measured before the points, so that the header states
+// it; other thread counts when a row first needs them.
 std::optional<BenchBound> measure_bound(BenchReport& r) {
   for (const BackendFamily& f : backend_families()) {
     if (!f.measure_bench_bound) continue;

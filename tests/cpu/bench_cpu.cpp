@@ -1,8 +1,8 @@
 // bench_cpu: frames per second and TSC cycles per frame of every CPU row and ref-original, on
-// one core and on all cores, at px4flow-64 and 640x480 (S=7, B=32), plus the psadbw ceiling
-// and each row's distance from it (bound_ratio). Google Benchmark; the rows are checked against
-// ref-original on the benchmark's own frames with the harness's exactness checker before any
-// timing (a mismatch prints its lines and the row is not timed).
+// one core and on all cores, at px4flow-64 and 640x480 (S=7, B=32), plus the SAD-instruction
+// ceiling and each row's distance from it (bound_ratio). Google Benchmark; the rows are checked
+// against ref-original on the benchmark's own frames with the harness's exactness checker before
+// any timing (a mismatch prints its lines and the row is not timed).
 //
 //   build-cpu/tests/cpu/bench_cpu --benchmark_format=console   (or =json)
 #include <benchmark/benchmark.h>
@@ -37,13 +37,15 @@ double tsc_per_second() {
 
 // The one-core ceiling (the bench's bound on one thread).
 struct Ceiling {
-  const char* width;
+  std::string instruction;
   double bytes_per_cycle;
 };
 
 Ceiling measure_ceiling() {
-  const Ceiling c{cpu::ceiling_width(), cpu::measure_ceiling(1)};
-  std::printf("ceiling  psadbw %s: %.1f bytes per TSC cycle\n", c.width, c.bytes_per_cycle);
+  const std::string fastest = cpu::fastest_instruction();
+  const Ceiling c{fastest, cpu::measure_ceiling(fastest, 1)};
+  std::printf("ceiling  %s (the fastest of %s): %.1f bytes per TSC cycle\n", fastest.c_str(),
+              cpu::ceiling_instructions().c_str(), c.bytes_per_cycle);
   return c;
 }
 

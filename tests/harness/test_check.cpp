@@ -208,7 +208,8 @@ TEST_CASE("bench times only checked backends and writes the documented JSON rows
   }
   CHECK(timed == 4);  // 2 backends x 2 batch sizes
 #if defined(__x86_64__) && defined(PXFLOW_TEST_EXPECT_BOUND)
-  // x86-64: the cpu family's psadbw bound is measured, and every TSC row carries its distance.
+  // x86-64: the cpu family's SAD-instruction bound is measured, and every TSC row carries its
+  // distance.
   REQUIRE(j.contains("bound"));
   CHECK(j["bound"]["clock"] == "tsc");
   CHECK(j["bound"]["bytes_per_cycle"].get<double>() > 0);
