@@ -1,5 +1,6 @@
 #include "cl_util.hpp"
 
+#include <algorithm>
 #include <condition_variable>
 #include <mutex>
 #include <vector>
@@ -110,6 +111,8 @@ void CL_CALLBACK on_complete(cl_event, cl_int, void* user) {
 
 }  // namespace
 
+constexpr std::chrono::milliseconds kStatusPoll{50};
+
 cl_int wait_for_event(cl_event event, std::chrono::duration<double> allowance) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point deadline =
@@ -120,11 +123,20 @@ cl_int wait_for_event(cl_event event, std::chrono::duration<double> allowance) {
   const cl_int err = clSetEventCallback(event, CL_COMPLETE, on_complete, held);
   if (err != CL_SUCCESS) delete held;
   check(err, "clSetEventCallback");
-  {
-    std::unique_lock lock(completion->mutex);
-    completion->done_cv.wait_until(lock, deadline, [&] { return completion->done; });
-  }
+  // The callback ends the wait at once; the status is also asked every 50 ms, since a runtime
+  // may run its commands only when the host calls into it (Oclgrind does): its callback comes
+  // from the query, never from the wait alone.
   cl_int status = CL_QUEUED;
+  for (;;) {
+    {
+      std::unique_lock lock(completion->mutex);
+      const Clock::time_point turn = std::min(deadline, Clock::now() + kStatusPoll);
+      if (completion->done_cv.wait_until(lock, turn, [&] { return completion->done; })) break;
+    }
+    check(clGetEventInfo(event, CL_EVENT_COMMAND_EXECUTION_STATUS, sizeof status, &status, nullptr),
+          "clGetEventInfo");
+    if (status <= CL_COMPLETE || Clock::now() >= deadline) return status;
+  }
   check(clGetEventInfo(event, CL_EVENT_COMMAND_EXECUTION_STATUS, sizeof status, &status, nullptr),
         "clGetEventInfo");
   return status;

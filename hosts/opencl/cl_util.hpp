@@ -49,7 +49,8 @@ cl_ulong event_nanoseconds(cl_event event);
 // CL_EVENT_COMMAND_EXECUTION_STATUS: CL_COMPLETE, a negative error, or CL_QUEUED, CL_SUBMITTED
 // or CL_RUNNING when the allowance ran out first. A blocking wait (clWaitForEvents, clFinish)
 // could never be given up on a kernel that does not end; this one sleeps on a condition variable
-// that the event's completion callback wakes, so a fast kernel costs no polling latency. The
+// that the event's completion callback wakes, so a fast kernel costs no polling latency, and asks
+// the status every 50 ms for a runtime that runs commands only when called (Oclgrind). The
 // command must have been flushed.
 cl_int wait_for_event(cl_event event, std::chrono::duration<double> allowance);
 

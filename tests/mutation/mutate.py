@@ -15,7 +15,8 @@ first FAIL line: killed (a FAIL line, a non-zero exit, a crash or a hang), survi
 build-failed. A survivor listed in equivalent.txt (reviewed by a human) counts as equivalent.
 Any other survivor of host code (targets.Family.host_code) is rebuilt in the ASan+UBSan build
 (--sanitizer-build, configured like CI's sanitizer stage) and checked the same way there: killed
-(sanitizer). A survivor still standing and listed in undetectable.txt (reviewed: no check can see
+(sanitizer). A survivor of the OpenCL C kernels is checked the same way with the OpenCL rows in
+Oclgrind (tests/opencl/oclgrind_check.sh), when it is installed: killed (Oclgrind). A survivor still standing and listed in undetectable.txt (reviewed: no check can see
 it on this machine) counts as undetectable, never as killed.
 """
 
@@ -23,6 +24,7 @@ import argparse
 import json
 import os
 import random
+import shutil
 import signal
 import subprocess
 import sys
@@ -43,6 +45,7 @@ UNDETECTABLE = os.path.join(HERE, "undetectable.txt")
 # ci/run-tests.sh's sanitizer stage: the options its tests run with.
 SANITIZER_ENV = {"ASAN_OPTIONS": "detect_leaks=1:abort_on_error=1",
                  "UBSAN_OPTIONS": "print_stacktrace=1:halt_on_error=1"}
+OCLGRIND_CHECK = os.path.join(SOURCE, "tests", "opencl", "oclgrind_check.sh")
 
 
 class Stop(Exception):
@@ -312,19 +315,59 @@ class Sanitizer:
             ninja(self.args.sanitizer_build, targets, self.log)
 
 
-def classify(args, m, r, text, equivalents, undetectable, sanitizer):
-    """A survivor of the default check: reviewed equivalent, killed by the sanitizer pass,
-    reviewed undetectable here, or survived."""
+class Oclgrind:
+    """The Oclgrind pass over survivors of the OpenCL C kernels: the same check, the whole default
+    corpus, with the OpenCL rows in Oclgrind's memory-checking simulator
+    (tests/opencl/oclgrind_check.sh: any error it reports is a FAIL line). About 6 minutes for
+    both rows; the unmutated check runs once, before the first such survivor."""
+
+    def __init__(self, args, log):
+        self.args, self.log, self.base = args, log, None
+
+    def applies(self, t):
+        return t.family == "opencl" and shutil.which("oclgrind") is not None
+
+    def _command(self, t):
+        cmd = check_command(self.args.build, t)  # [pxflow, "check", options...]
+        return [OCLGRIND_CHECK, cmd[0], *cmd[2:]]
+
+    def run(self, m, text):
+        """(status, detail) of the mutant under Oclgrind: killed-oclgrind or survived."""
+        t = target_of(m.path)
+        targets = list(dict.fromkeys(FAMILIES[t.family].compile_targets + FAMILIES[t.family].link_targets))
+        if self.base is None:
+            ninja(self.args.build, targets, self.log)
+            outcome, detail, seconds = run_check(self._command(t), 3600)
+            self.base = {"ok": outcome == "survived", "detail": detail, "seconds": seconds}
+            print(f"oclgrind baseline {','.join(t.rows)}: "
+                  f"{'passed' if self.base['ok'] else detail} ({seconds:.1f} s)", flush=True)
+        if not self.base["ok"]:
+            return "survived", "the unmutated check fails under Oclgrind: " + self.base["detail"]
+        path = os.path.join(self.args.source, m.path)
+        try:
+            write(path, m.apply(text))
+            ninja(self.args.build, targets, self.log)
+            outcome, detail, _ = run_check(self._command(t), max(900.0, 3 * self.base["seconds"]))
+        finally:
+            write(path, text)
+            ninja(self.args.build, targets, self.log)
+        return ("killed-oclgrind", detail) if outcome == "killed" else ("survived", "")
+
+
+def classify(args, m, r, text, equivalents, undetectable, checkers):
+    """A survivor of the default check: reviewed equivalent, killed by a memory checker's pass
+    (ASan+UBSan for host code, Oclgrind for OpenCL C), reviewed undetectable here, or survived."""
     if r["status"] != "survived":
         return r
     if m.id in equivalents:
         return dict(r, status="equivalent", detail="reviewed: " + equivalents[m.id])
-    if sanitizer.applies(target_of(m.path)):
-        status, detail = sanitizer.run(m, text)
+    applicable = [c for c in checkers if c.applies(target_of(m.path))]
+    for checker in applicable:
+        status, detail = checker.run(m, text)
         if status != "survived":
             return dict(r, status=status, detail=detail)
-    elif not FAMILIES[target_of(m.path).family].host_code:
-        r = dict(r, detail="device code: no sanitizer runs it")
+    if not applicable:
+        r = dict(r, detail="device code: no memory checker runs it here")
     if m.id in undetectable:
         return dict(r, status="undetectable", detail="reviewed: " + undetectable[m.id])
     return r
@@ -354,13 +397,14 @@ def command_run(args):
             "command": " ".join(["tests/mutation/mutate.py"] + sys.argv[1:]),
             "only": args.only, "sanitizer_build": args.sanitizer_build}
     sanitizer = Sanitizer(args, log)
+    checkers = (sanitizer, Oclgrind(args, log))
     try:
         artifacts, checks = baseline(args, [target_of(p) for p in sorted({m.path for m in chosen})], log)
         meta["baseline"] = {",".join(k): v for k, v in checks.items()}
         for n, m in enumerate(chosen, 1):
             text = by_path[m.path][0]
             r = run_mutant(args, m, text, artifacts, checks, log)
-            r = classify(args, m, r, text, equivalents, undetectable, sanitizer)
+            r = classify(args, m, r, text, equivalents, undetectable, checkers)
             results.append(r)
             print(f"[{n}/{len(chosen)}] {r['status']:12} {m.id}  {r.get('detail', '')[:110]}",
                   flush=True)

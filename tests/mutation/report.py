@@ -7,11 +7,14 @@ import json
 import os
 
 # killed: by the default `pxflow check`; killed-sanitizer: only by the same check in the ASan+UBSan
-# build; undetectable: a survivor reviewed as invisible to any check on this machine
-# (undetectable.txt), never counted as killed.
-COLUMNS = ("mutants", "compiled", "equivalent", "killed", "killed-sanitizer", "undetectable",
-           "survived", "build-failed", "not-run")
-HEADINGS = {"killed-sanitizer": "killed (sanitizer)", "undetectable": "undetectable here"}
+# build; killed-oclgrind: only by the same check with the OpenCL rows under Oclgrind's memory checks
+# (tests/opencl/oclgrind_check.sh); undetectable: a survivor reviewed as invisible to any check on
+# this machine (undetectable.txt), never counted as killed.
+KILLED = ("killed", "killed-sanitizer", "killed-oclgrind")
+COLUMNS = ("mutants", "compiled", "equivalent", *KILLED, "undetectable", "survived", "build-failed",
+           "not-run")
+HEADINGS = {"killed-sanitizer": "killed (sanitizer)", "killed-oclgrind": "killed (Oclgrind)",
+            "undetectable": "undetectable here"}
 
 
 def _count(results):
@@ -19,24 +22,25 @@ def _count(results):
     for r in results:
         c["mutants"] += 1
         c[r["status"]] += 1
-    c["compiled"] = (c["equivalent"] + c["killed"] + c["killed-sanitizer"] + c["undetectable"]
-                     + c["survived"])
+    c["compiled"] = c["equivalent"] + sum(c[k] for k in KILLED) + c["undetectable"] + c["survived"]
     return c
 
 
-def _score(c):
-    """The default check's kills of the non-equivalent mutants."""
-    judged = c["killed"] + c["killed-sanitizer"] + c["undetectable"] + c["survived"]
-    return f"{100.0 * c['killed'] / judged:.1f} %" if judged else "-"
+def _score(c, kinds):
+    """The share of the non-equivalent mutants killed by `kinds`."""
+    judged = sum(c[k] for k in KILLED) + c["undetectable"] + c["survived"]
+    return f"{100.0 * sum(c[k] for k in kinds) / judged:.1f} %" if judged else "-"
 
 
 def _table(title, groups):
     lines = [f"| {title} | " + " | ".join(HEADINGS.get(k, k) for k in COLUMNS)
-             + " | killed by the default check, of non-equivalent |",
-             "|---" * (len(COLUMNS) + 2) + "|"]
+             + " | killed by the default check, of non-equivalent"
+             + " | killed by the default corpus with its memory checkers, of non-equivalent |",
+             "|---" * (len(COLUMNS) + 3) + "|"]
     for name, results in groups:
         c = _count(results)
-        lines.append(f"| {name} | " + " | ".join(str(c[k]) for k in COLUMNS) + f" | {_score(c)} |")
+        lines.append(f"| {name} | " + " | ".join(str(c[k]) for k in COLUMNS)
+                     + f" | {_score(c, ('killed',))} | {_score(c, KILLED)} |")
     return lines
 
 
@@ -53,6 +57,7 @@ def markdown(meta, results, seconds):
     out += [""]
     out += _table("file (rows)", [(f"{p} ({rows})", rs) for (_, p, rows), rs in sorted(by_file.items())])
     for status, title in (("survived", "Survivors"), ("killed-sanitizer", "Killed only under ASan+UBSan"),
+                          ("killed-oclgrind", "Killed only under Oclgrind"),
                           ("undetectable", "Undetectable here (tests/mutation/undetectable.txt)")):
         listed = [r for r in results if r["status"] == status]
         out += ["", f"## {title} ({len(listed)})", ""]
