@@ -110,7 +110,7 @@ BackendRow dispatcher_row() {
 // compares the most bytes per cycle here, measured on as many threads as the row was given.
 std::optional<BenchBound> psadbw_bound() {
 #if defined(__x86_64__)
-  const std::string fastest = cpu::fastest_instruction();
+  const std::string fastest = cpu::fastest_instruction().instruction;
   if (fastest == "none") return std::nullopt;
   return BenchBound{"back-to-back " + fastest + " on L1 data (the fastest of " +
                         cpu::ceiling_instructions() + " here)",

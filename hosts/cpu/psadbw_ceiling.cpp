@@ -84,14 +84,12 @@ std::string ceiling_instructions() {
   return names.empty() ? "none" : names;
 }
 
-std::string fastest_instruction() {
-  const Instruction* best = nullptr;
-  double best_rate = 0;
-  for (const Instruction* i : usable()) {
-    const double rate = measure_instruction(*i, 1);
-    if (rate > best_rate) best = i, best_rate = rate;
-  }
-  return best ? best->name : "none";
+Ceiling fastest_instruction() {
+  Ceiling best{"none", 0};
+  for (const Instruction* i : usable())
+    if (const double rate = measure_instruction(*i, 1); rate > best.bytes_per_cycle)
+      best = {i->name, rate};
+  return best;
 }
 
 double measure_ceiling(const std::string& instruction, int threads) {

@@ -23,8 +23,12 @@ std::uint64_t vdbpsadbw_zmm(const std::uint8_t* data, std::int64_t rounds);
 std::string ceiling_instructions();
 
 // The one of ceiling_instructions() that compares the most bytes per TSC cycle on one thread,
-// measured now; "none" when there is none.
-std::string fastest_instruction();
+// measured now, with that rate; {"none", 0} when there is none.
+struct Ceiling {
+  std::string instruction;
+  double bytes_per_cycle;
+};
+Ceiling fastest_instruction();
 
 // Bytes compared per TSC cycle by `threads` threads each running back-to-back `instruction` (a
 // name of ceiling_instructions()) at once, summed (two threads on the two hyperthreads of one core

@@ -35,16 +35,12 @@ double tsc_per_second() {
   return static_cast<double>(c1 - c0) / s;
 }
 
-// The one-core ceiling (the bench's bound on one thread).
-struct Ceiling {
-  std::string instruction;
-  double bytes_per_cycle;
-};
+using cpu::Ceiling;
 
+// The one-core ceiling (the bench's bound on one thread).
 Ceiling measure_ceiling() {
-  const std::string fastest = cpu::fastest_instruction();
-  const Ceiling c{fastest, cpu::measure_ceiling(fastest, 1)};
-  std::printf("ceiling  %s (the fastest of %s): %.1f bytes per TSC cycle\n", fastest.c_str(),
+  const Ceiling c = cpu::fastest_instruction();
+  std::printf("ceiling  %s (the fastest of %s): %.1f bytes per TSC cycle\n", c.instruction.c_str(),
               cpu::ceiling_instructions().c_str(), c.bytes_per_cycle);
   return c;
 }

@@ -154,6 +154,12 @@ def ninja(build, targets, log):
     return r.returncode == 0, r.stdout
 
 
+def family_targets(family):
+    """Every build target of a family: what compiles its kernel, then what links it."""
+    f = FAMILIES[family]
+    return list(dict.fromkeys(f.compile_targets + f.link_targets))
+
+
 def check_command(build, target):
     family = FAMILIES[target.family]
     rows = ",".join(target.rows)
@@ -208,7 +214,7 @@ def run_check(cmd, timeout, env=None):
 def baseline(args, targets, log):
     """Build the unmutated tree, record its artifacts, check every row group once."""
     families = sorted({t.family for t in targets})
-    builds = sorted({x for f in families for x in FAMILIES[f].compile_targets + FAMILIES[f].link_targets})
+    builds = sorted({x for f in families for x in family_targets(f)})
     ok, out = ninja(args.build, builds, log)
     if not ok:
         raise SystemExit("mutate.py: error: the unmutated tree does not build (see the log)")
@@ -273,13 +279,9 @@ class Sanitizer:
     def applies(self, t):
         return bool(self.args.sanitizer_build) and FAMILIES[t.family].host_code
 
-    def _targets(self, family):
-        f = FAMILIES[family]
-        return list(dict.fromkeys(f.compile_targets + f.link_targets))
-
     def baseline(self, t):
         if t.rows not in self.checks:
-            ok, _ = ninja(self.args.sanitizer_build, self._targets(t.family), self.log)
+            ok, _ = ninja(self.args.sanitizer_build, family_targets(t.family), self.log)
             outcome, detail, seconds = ("build-failed", "the sanitizer build fails", 0.0)
             if ok:
                 outcome, detail, seconds = run_check(check_command(self.args.sanitizer_build, t),
@@ -299,7 +301,7 @@ class Sanitizer:
         path = os.path.join(self.args.source, m.path)
         try:
             write(path, m.apply(text))
-            ok, _ = ninja(self.args.sanitizer_build, self._targets(t.family), self.log)
+            ok, _ = ninja(self.args.sanitizer_build, family_targets(t.family), self.log)
             if not ok:
                 return "survived", "the sanitizer build fails"
             timeout = min(self.args.max_timeout * 5, max(60.0, 5 * base["seconds"]))
@@ -310,7 +312,7 @@ class Sanitizer:
         return ("killed-sanitizer", detail) if outcome == "killed" else ("survived", "")
 
     def restore(self):
-        targets = sorted({x for f in self.built for x in self._targets(f)})
+        targets = sorted({x for f in self.built for x in family_targets(f)})
         if targets:
             ninja(self.args.sanitizer_build, targets, self.log)
 
@@ -334,7 +336,7 @@ class Oclgrind:
     def run(self, m, text):
         """(status, detail) of the mutant under Oclgrind: killed-oclgrind or survived."""
         t = target_of(m.path)
-        targets = list(dict.fromkeys(FAMILIES[t.family].compile_targets + FAMILIES[t.family].link_targets))
+        targets = family_targets(t.family)
         if self.base is None:
             ninja(self.args.build, targets, self.log)
             outcome, detail, seconds = run_check(self._command(t), 3600)
@@ -366,7 +368,7 @@ def classify(args, m, r, text, equivalents, undetectable, checkers):
         status, detail = checker.run(m, text)
         if status != "survived":
             return dict(r, status=status, detail=detail)
-    if not applicable:
+    if not applicable and not FAMILIES[target_of(m.path).family].host_code:
         r = dict(r, detail="device code: no memory checker runs it here")
     if m.id in undetectable:
         return dict(r, status="undetectable", detail="reviewed: " + undetectable[m.id])
