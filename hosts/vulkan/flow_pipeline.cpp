@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 
 #include "vk_error.hpp"
 
@@ -17,20 +18,24 @@ constexpr std::uint32_t kPreferredLocalSize = 64;
 
 // Binding 0, the frames: a uniform texel buffer (R32_UINT), because lavapipe turns a texel fetch
 // with per-invocation addresses into one vector gather, but a storage-buffer read into a
-// per-lane, bounds-checked scalar loop (docs/vulkan.md). Binding 1, the records: a storage buffer.
-constexpr VkDescriptorType kBindingTypes[2] = {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
-                                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+// per-lane, bounds-checked scalar loop (docs/vulkan.md). Binding 1, the records, and binding 2,
+// the private-array faults (kernels/vulkan/private_bounds.glsl): storage buffers.
+constexpr VkDescriptorType kBindingTypes[] = {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
+                                              VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                              VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+constexpr std::uint32_t kBindings = std::size(kBindingTypes);
 
 }  // namespace
 
-FlowPipeline::FlowPipeline(const Context& ctx, int search_radius)
+FlowPipeline::FlowPipeline(const Context& ctx, int search_radius,
+                           std::span<const std::uint32_t> spirv)
     : ctx_(&ctx), device_(ctx.device()), search_radius_(search_radius) {
   const auto& limits = ctx.properties().limits;
   local_size_ = std::min({kPreferredLocalSize, limits.maxComputeWorkGroupSize[0],
                           limits.maxComputeWorkGroupInvocations});
   try {
     create_layouts();
-    create_pipeline();
+    create_pipeline(spirv.empty() ? std::span<const std::uint32_t>(k_flow_spirv) : spirv);
     create_descriptor_set();
   } catch (...) {
     release();
@@ -58,8 +63,8 @@ void FlowPipeline::release() {
 }
 
 void FlowPipeline::create_layouts() {
-  VkDescriptorSetLayoutBinding bindings[2] = {};
-  for (std::uint32_t b = 0; b < 2; ++b) {
+  VkDescriptorSetLayoutBinding bindings[kBindings] = {};
+  for (std::uint32_t b = 0; b < kBindings; ++b) {
     bindings[b].binding = b;
     bindings[b].descriptorType = kBindingTypes[b];
     bindings[b].descriptorCount = 1;
@@ -67,7 +72,7 @@ void FlowPipeline::create_layouts() {
   }
   auto set_info =
       zeroed<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-  set_info.bindingCount = 2;
+  set_info.bindingCount = kBindings;
   set_info.pBindings = bindings;
   check(vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_),
         "vkCreateDescriptorSetLayout");
@@ -80,10 +85,10 @@ void FlowPipeline::create_layouts() {
   check(vkCreatePipelineLayout(device_, &info, nullptr, &layout_), "vkCreatePipelineLayout");
 }
 
-void FlowPipeline::create_pipeline() {
+void FlowPipeline::create_pipeline(std::span<const std::uint32_t> spirv) {
   auto module = zeroed<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-  module.codeSize = sizeof(k_flow_spirv);
-  module.pCode = k_flow_spirv;
+  module.codeSize = spirv.size_bytes();
+  module.pCode = spirv.data();
   check(vkCreateShaderModule(device_, &module, nullptr, &shader_), "vkCreateShaderModule");
   // constant_id 0 = local_size_x, constant_id 1 = S.
   const std::int32_t values[2] = {static_cast<std::int32_t>(local_size_), search_radius_};
@@ -102,7 +107,8 @@ void FlowPipeline::create_pipeline() {
 }
 
 void FlowPipeline::create_descriptor_set() {
-  const VkDescriptorPoolSize sizes[2] = {{kBindingTypes[0], 1}, {kBindingTypes[1], 1}};
+  const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1},
+                                         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindings - 1}};
   auto pool = zeroed<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   pool.maxSets = 1;
   pool.poolSizeCount = 2;
@@ -115,7 +121,8 @@ void FlowPipeline::create_descriptor_set() {
   check(vkAllocateDescriptorSets(device_, &alloc, &set_), "vkAllocateDescriptorSets");
 }
 
-void FlowPipeline::bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize records_offset) {
+void FlowPipeline::bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize records_offset,
+                                VkBuffer faults) {
   if (frames_view_) vkDestroyBufferView(device_, frames_view_, nullptr);
   frames_view_ = VK_NULL_HANDLE;
   auto view = zeroed<VkBufferViewCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO);
@@ -123,9 +130,10 @@ void FlowPipeline::bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize 
   view.format = VK_FORMAT_R32_UINT;  // one texel = one word of 4 pixels
   view.range = VK_WHOLE_SIZE;
   check(vkCreateBufferView(device_, &view, nullptr, &frames_view_), "vkCreateBufferView");
-  VkDescriptorBufferInfo records_info{records, records_offset, VK_WHOLE_SIZE};
-  VkWriteDescriptorSet writes[2] = {};
-  for (std::uint32_t b = 0; b < 2; ++b) {
+  const VkDescriptorBufferInfo records_info{records, records_offset, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo faults_info{faults, 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet writes[kBindings] = {};
+  for (std::uint32_t b = 0; b < kBindings; ++b) {
     writes[b].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     writes[b].dstSet = set_;
     writes[b].dstBinding = b;
@@ -134,7 +142,8 @@ void FlowPipeline::bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize 
   }
   writes[0].pTexelBufferView = &frames_view_;
   writes[1].pBufferInfo = &records_info;
-  vkUpdateDescriptorSets(device_, 2, writes, 0, nullptr);
+  writes[2].pBufferInfo = &faults_info;
+  vkUpdateDescriptorSets(device_, kBindings, writes, 0, nullptr);
 }
 
 void FlowPipeline::bind(VkCommandBuffer cmd) const {

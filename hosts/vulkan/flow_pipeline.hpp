@@ -1,12 +1,13 @@
 // The compute pipeline of kernels/vulkan/flow.comp for one search radius: shader module,
-// descriptor set (frames, records), push constants, and the pipeline itself. S is a
-// specialization constant (the driver unrolls the search loops for it), so a backend keeps one
-// pipeline per radius it has seen: lavapipe JIT-compiles at vkCreateComputePipelines, which
+// descriptor set (frames, records, private-array faults), push constants, and the pipeline itself.
+// S is a specialization constant (the driver unrolls the search loops for it), so a backend keeps
+// one pipeline per radius it has seen: lavapipe JIT-compiles at vkCreateComputePipelines, which
 // takes a noticeable fraction of a second.
 #pragma once
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <span>
 
 #include "context.hpp"
 
@@ -30,7 +31,9 @@ struct FlowPushConstants {
 
 class FlowPipeline {
  public:
-  FlowPipeline(const Context& ctx, int search_radius);  // throws BackendError
+  // `spirv`: the shader's code; empty = the built-in kernels/vulkan/flow.comp. Throws
+  // BackendError.
+  FlowPipeline(const Context& ctx, int search_radius, std::span<const std::uint32_t> spirv = {});
   ~FlowPipeline();
   FlowPipeline(const FlowPipeline&) = delete;
   FlowPipeline& operator=(const FlowPipeline&) = delete;
@@ -39,9 +42,11 @@ class FlowPipeline {
   std::uint32_t local_size() const { return local_size_; }
 
   // Points the descriptor set at the buffers (frames through a texel buffer view made here; the
-  // records from `records_offset`, past the guard before them, to the buffer's end); call when
-  // they change, never while in use.
-  void bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize records_offset);
+  // records from `records_offset`, past the guard before them, to the buffer's end; the
+  // private-array faults, kernels/vulkan/private_bounds.glsl); call when they change, never while
+  // in use.
+  void bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize records_offset,
+                    VkBuffer faults);
 
   // Records binding the pipeline and its descriptor set into `cmd`.
   void bind(VkCommandBuffer cmd) const;
@@ -49,7 +54,7 @@ class FlowPipeline {
 
  private:
   void create_layouts();
-  void create_pipeline();
+  void create_pipeline(std::span<const std::uint32_t> spirv);
   void create_descriptor_set();
   void release();
 

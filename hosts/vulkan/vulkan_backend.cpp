@@ -41,6 +41,12 @@ vk::FlowPushConstants push_constants(const Params& p, const vk::BatchLayout& lay
   return pc;
 }
 
+// `Faults` in kernels/vulkan/private_bounds.glsl, word for word.
+struct PrivateArrayFaults {
+  std::uint32_t first_line;  // the first faulting invocation's source line in flow.comp
+  std::uint32_t invocations;
+};
+
 // Copies one frame into the buffer as packed rows (stride = width), zeroing the tail words.
 void pack_frame(const FrameView& f, std::byte* dst, std::uint32_t words) {
   for (int y = 0; y < f.height; ++y)
@@ -72,6 +78,7 @@ VulkanBackend::~VulkanBackend() {
   // was abandoned then, and the members below leak what they hold instead of waiting for it
   // (Context::abandon). Otherwise children go before the device they were made from.
   if (ctx_ && !ctx_->abandoned()) vkDeviceWaitIdle(ctx_->device());
+  faults_.reset();
   records_.reset();
   frames_.reset();
   runner_.reset();
@@ -146,7 +153,7 @@ void VulkanBackend::run(std::span<const FramePair> pairs, const Params& p, std::
 
 vk::FlowPipeline& VulkanBackend::pipeline_for(int search_radius) {
   auto& slot = pipelines_[search_radius];
-  if (!slot) slot = std::make_unique<vk::FlowPipeline>(*ctx_, search_radius);
+  if (!slot) slot = std::make_unique<vk::FlowPipeline>(*ctx_, search_radius, config_.shader_spirv);
   return *slot;
 }
 
@@ -155,6 +162,7 @@ void VulkanBackend::ensure_buffers(std::uint64_t frame_bytes, std::uint64_t reco
       std::max<std::uint64_t>(1, ctx_->properties().limits.minStorageBufferOffsetAlignment);
   records_front_ = (kGuardBytes + align - 1) / align * align;
   const std::uint64_t guarded = records_front_ + record_bytes + kGuardBytes;
+  if (!faults_) faults_ = std::make_unique<vk::HostBuffer>(*ctx_, sizeof(PrivateArrayFaults));
   if (frames_ && records_ && frames_->size() >= frame_bytes && records_->size() >= guarded) return;
   records_.reset();
   frames_.reset();
@@ -175,7 +183,9 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
   }
   vk::FlowPipeline& pipeline = pipeline_for(p.search_radius);
   // No submission is pending here.
-  pipeline.bind_buffers(frames_->buffer(), records_->buffer(), records_front_);
+  pipeline.bind_buffers(frames_->buffer(), records_->buffer(), records_front_, faults_->buffer());
+  PrivateArrayFaults faults{};
+  std::memcpy(faults_->data(), &faults, sizeof(faults));
   auto* const guarded = reinterpret_cast<std::uint8_t*>(records_->data());
   const std::span<std::uint8_t> before(guarded, records_front_);
   const std::span<std::uint8_t> after(guarded + records_front_ + out.size_bytes(),
@@ -203,6 +213,11 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
       },
       DeviceWork{pairs.size(), layout.pois_per_pair, p.search_radius});
   std::memcpy(out.data(), guarded + records_front_, out.size_bytes());
+  std::memcpy(&faults, faults_->data(), sizeof(faults));
+  if (faults.invocations != 0)
+    vk::fail("kernels/vulkan/flow.comp:" + std::to_string(faults.first_line) +
+             ": indexed past a private array (" + counted(faults.invocations, "invocation") +
+             " of this chunk; kernels/vulkan/private_bounds.glsl)");
   check_guard_before(before, "vulkan");
   check_guard_after(after, out.size(), "vulkan");
 }

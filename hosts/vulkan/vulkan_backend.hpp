@@ -2,6 +2,7 @@
 // is public so that tests and the benchmark can reach what the Backend interface does not
 // offer: validation, chunk limits, the device time of the last run.
 #pragma once
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -31,6 +32,9 @@ struct VulkanConfig {
   // Tests only: dispatch this many items past the output (with frames for them), a planted
   // overrun the guard after the records must catch.
   std::uint32_t overrun_items = 0;
+  // Tests only: SPIR-V to run instead of the built-in flow.comp, with the same interface (a
+  // planted fault, tests/vulkan/CMakeLists.txt).
+  std::vector<std::uint32_t> shader_spirv;
 };
 
 class VulkanBackend final : public Backend {
@@ -74,6 +78,9 @@ class VulkanBackend final : public Backend {
   // (the device's storage buffer offset alignment), the records, kGuardBytes of guard.
   std::unique_ptr<vk::HostBuffer> records_;
   std::uint64_t records_front_ = 0;
+  // Binding 2 of flow.comp: its private-array faults (kernels/vulkan/private_bounds.glsl), cleared
+  // before each chunk and checked after it.
+  std::unique_ptr<vk::HostBuffer> faults_;
   std::optional<double> last_device_seconds_;
   std::size_t last_chunks_ = 0;
   std::size_t last_dispatches_ = 0;

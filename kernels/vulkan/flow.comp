@@ -11,6 +11,7 @@
 // the firmware's USAD8 / UHADD8 (SPEC §7).
 #version 450
 #extension GL_EXT_control_flow_attributes : require  // [[unroll]]: see integer_search
+#extension GL_GOOGLE_include_directive : require     // private_bounds.glsl
 
 layout(local_size_x_id = 0) in;  // set by the host from the device's work-group limits
 
@@ -26,6 +27,9 @@ uint frame_word(uint i) { return texelFetch(frame_texels, int(i)).x; }
 
 // One 32-byte record (reference/record.hpp) = 8 little-endian words per POI, pair after pair.
 layout(std430, set = 0, binding = 1) writeonly buffer Records { uint record_words[]; };
+
+// Binding 2 and AT(array, index), the bounds check of every dynamic private-array index.
+#include "private_bounds.glsl"
 
 layout(push_constant) uniform Problem {
   uint width;              // W = row stride in pixels (S is the specialization constant S)
@@ -79,10 +83,10 @@ uint uhadd8(uint a, uint b) { return (a & b) + (((a ^ b) & 0xFEFEFEFEu) >> 1); }
 // nothing).
 uint feature_value(uint blk[16]) {
   uint q[4];
-  for (int r = 0; r < 4; ++r) q[r] = (blk[2 * r + 4] >> 16) | (blk[2 * r + 5] << 16);
+  for (int r = 0; r < 4; ++r) AT(q, r) = (AT(blk, 2 * r + 4) >> 16) | (AT(blk, 2 * r + 5) << 16);
   uint sum = 0u;
-  for (int r = 0; r < 3; ++r) sum += usad8(q[r], q[r + 1]);
-  for (int r = 0; r < 4; ++r) sum += usad8(q[r] & 0x00FFFFFFu, q[r] >> 8);
+  for (int r = 0; r < 3; ++r) sum += usad8(AT(q, r), AT(q, r + 1));
+  for (int r = 0; r < 4; ++r) sum += usad8(AT(q, r) & 0x00FFFFFFu, AT(q, r) >> 8);
   return sum;
 }
 
@@ -108,17 +112,17 @@ void integer_search(uint blk[16], uint next, uint n, out uint best, out int bx, 
   by = 0;
   int block_sum = 0;  // A
   [[unroll]] for (int k = 0; k < 16; ++k) {
-    for (int j = 0; j < 4; ++j) block_sum += int((blk[k] >> (8u * uint(j))) & 0xFFu);
+    for (int j = 0; j < 4; ++j) block_sum += int((AT(blk, k) >> (8u * uint(j))) & 0xFFu);
   }
   for (int dy = -S; dy <= S; ++dy) {
     int twice_max_minus_next[kSide];  // 2 M - N, summed over the block rows
-    for (int k = 0; k < kSide; ++k) twice_max_minus_next[k] = 0;
+    for (int k = 0; k < kSide; ++k) AT(twice_max_minus_next, k) = 0;
     [[unroll]] for (int r = 0; r < 8; ++r) {
       uint row = n + uint(r) * pc.width;
       int pv[8];
       for (int c = 0; c < 4; ++c) {
-        pv[c] = int((blk[2 * r] >> (8u * uint(c))) & 0xFFu);
-        pv[c + 4] = int((blk[2 * r + 1] >> (8u * uint(c))) & 0xFFu);
+        AT(pv, c) = int((AT(blk, 2 * r) >> (8u * uint(c))) & 0xFFu);
+        AT(pv, c + 4) = int((AT(blk, 2 * r + 1) >> (8u * uint(c))) & 0xFFu);
       }
       // The 4 * kSegWords pixels of next from column x - S of row y + r + dy, unpacked. (Arrays
       // sized by S stay in this function: passing them to functions breaks SPIR-V validation.)
@@ -131,19 +135,19 @@ void integer_search(uint blk[16], uint next, uint n, out uint best, out int bx, 
         uint hi = frame_word(q + uint(k) + 1u);
         uint w = funnel(lo, hi, sh);
         lo = hi;
-        for (int j = 0; j < 4; ++j) seg[4 * k + j] = int((w >> (8u * uint(j))) & 0xFFu);
+        for (int j = 0; j < 4; ++j) AT(seg, 4 * k + j) = int((w >> (8u * uint(j))) & 0xFFu);
       }
       int next_sum = 0;  // the 8 pixels of next under the block row at candidate dx
-      for (int c = 0; c < 8; ++c) next_sum += seg[c];
+      for (int c = 0; c < 8; ++c) next_sum += AT(seg, c);
       [[unroll]] for (int dx = 0; dx < kSide; ++dx) {
-        if (dx > 0) next_sum += seg[dx + 7] - seg[dx - 1];
+        if (dx > 0) next_sum += AT(seg, dx + 7) - AT(seg, dx - 1);
         int max_sum = 0;
-        for (int c = 0; c < 8; ++c) max_sum += max(pv[c], seg[dx + c]);
-        twice_max_minus_next[dx] += 2 * max_sum - next_sum;
+        for (int c = 0; c < 8; ++c) max_sum += max(AT(pv, c), AT(seg, dx + c));
+        AT(twice_max_minus_next, dx) += 2 * max_sum - next_sum;
       }
     }
     for (int k = 0; k < kSide; ++k) {
-      uint sad = uint(twice_max_minus_next[k] - block_sum);
+      uint sad = uint(AT(twice_max_minus_next, k) - block_sum);
       if (sad < best) {
         best = sad;
         bx = k - S;
@@ -199,14 +203,14 @@ void add_half_sads(uint b, HalfRow up, HalfRow mid, HalfRow down, inout uint sub
 // Step 3: the eight half-pixel SADs around the integer match at pixel n of next. Rows -1 .. 8 of
 // next are read once each, rolling down the block (up, mid, down).
 void half_pixel_sads(uint blk[16], uint next, uint n, out uint sub[8]) {
-  for (int k = 0; k < 8; ++k) sub[k] = 0u;
+  for (int k = 0; k < 8; ++k) AT(sub, k) = 0u;
   HalfRow up0, up1, mid0, mid1, down0, down1;
   half_rows(next, n - pc.width, up0, up1);
   half_rows(next, n, mid0, mid1);
   for (int r = 0; r < 8; ++r) {
     half_rows(next, n + uint(r + 1) * pc.width, down0, down1);
-    add_half_sads(blk[2 * r], up0, mid0, down0, sub);
-    add_half_sads(blk[2 * r + 1], up1, mid1, down1, sub);
+    add_half_sads(AT(blk, 2 * r), up0, mid0, down0, sub);
+    add_half_sads(AT(blk, 2 * r + 1), up1, mid1, down1, sub);
     up0 = mid0;
     up1 = mid1;
     mid0 = down0;
@@ -240,7 +244,8 @@ void write_record(uint item, uint x, uint y, uint status, uint feature, int bx, 
   record_words[o + 7u] = sub[7] | (pack_i8(hx, hy) << 16);
 }
 
-void main() {
+// One POI: steps 1-3 and its record.
+void flow_poi() {
   if (gl_GlobalInvocationID.x >= pc.item_count) return;
   uint item = pc.first_item + gl_GlobalInvocationID.x;
   uint pair = item / pc.pois_per_pair;
@@ -254,7 +259,8 @@ void main() {
 
   // prev's 8x8 block, 2 packed words per row, read once for all three steps.
   uint blk[16];
-  for (int r = 0; r < 8; ++r) load8(prev, n + uint(r) * pc.width, blk[2 * r], blk[2 * r + 1]);
+  for (int r = 0; r < 8; ++r)
+    load8(prev, n + uint(r) * pc.width, AT(blk, 2 * r), AT(blk, 2 * r + 1));
 
   uint feature = feature_value(blk);
   if (feature < pc.feature_threshold) {
@@ -278,11 +284,16 @@ void main() {
   uint vote = best;
   uint dir = kDirNone;
   for (uint k = 0u; k < 8u; ++k) {
-    if (sub[k] < vote) {
-      vote = sub[k];
+    if (AT(sub, k) < vote) {
+      vote = AT(sub, k);
       dir = k;
     }
   }
-  write_record(item, x, y, kStatusAccepted, feature, bx, by, best, dir, sub, 2 * bx + kStepX[dir],
-               2 * by + kStepY[dir]);
+  write_record(item, x, y, kStatusAccepted, feature, bx, by, best, dir, sub,
+               2 * bx + AT(kStepX, dir), 2 * by + AT(kStepY, dir));
+}
+
+void main() {
+  flow_poi();
+  report_private_faults();
 }

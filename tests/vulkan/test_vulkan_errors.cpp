@@ -3,9 +3,13 @@
 // refused.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 #include "errors.hpp"
 #include "exactness.hpp"
+#include "flow_vote_past_sub_spv.h"
 #include "grid.hpp"
 #include "registry.hpp"
 #include "vulkan/batch_plan.hpp"
@@ -128,4 +132,39 @@ TEST_CASE("vulkan: a dispatch past the records hits the guard after them", "[vul
   auto vk = make_vulkan(config);
   CHECK_THROWS_WITH(vk->run({&view, 1}, p, out, counts),
                     Contains("vulkan: wrote past its output (") && Contains(" after record 63)"));
+}
+
+TEST_CASE("vulkan: an index past a private array is the shader's failure, naming its line",
+          "[vulkan]") {
+  // The vote loop of flow.comp one step too long reads sub[8] (tests/vulkan/CMakeLists.txt):
+  // lavapipe's records stay right, so only the bounds checks of kernels/vulkan/private_bounds.glsl
+  // can fail it. The same pair and parameters pass with the built-in shader.
+  const Params p = make_params("px4flow-64", 64, 64);
+  const std::vector<OwnedPair> pairs = random_pairs(64, 64, p.search_radius, 4, 11);
+  std::vector<FramePair> views;
+  for (const auto& pair : pairs) views.push_back(pair.view());
+  std::vector<PoiRecord> out(views.size() * poi_count(p));
+  OpCounts counts;
+  CHECK_NOTHROW(make_vulkan()->run(views, p, out, counts));
+  VulkanConfig config;
+  config.shader_spirv.assign(std::begin(k_flow_vote_past_sub_spirv),
+                             std::end(k_flow_vote_past_sub_spirv));
+  auto vk = make_vulkan(config);
+  std::string message;
+  try {
+    vk->run(views, p, out, counts);
+  } catch (const BackendError& e) {
+    message = e.what();
+  }
+  INFO(message);
+  REQUIRE_THAT(message, Contains("vulkan: kernels/vulkan/flow.comp:") &&
+                            Contains(": indexed past a private array ("));
+  // The line it names is the vote's read of sub[k] in the source.
+  const auto at = message.find("flow.comp:") + std::string("flow.comp:").size();
+  const int line = std::stoi(message.substr(at));
+  std::ifstream source(PXFLOW_VULKAN_SHADER_FILE);
+  std::string text;
+  for (int n = 1; n <= line && std::getline(source, text); ++n) {
+  }
+  CHECK_THAT(text, Contains("AT(sub, k) < vote"));
 }
