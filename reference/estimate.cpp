@@ -3,6 +3,9 @@
 #include "estimate.hpp"
 
 #include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
 
 namespace pxflow {
 namespace {
@@ -42,8 +45,15 @@ FrameResult estimate_flow(std::span<const PoiRecord> records, const Params& p,
   r.histx.assign(hist_bins(S), 0);
   r.histy.assign(hist_bins(S), 0);
   std::int64_t sum_hx = 0, sum_hy = 0;
+  const int reach = 2 * S + 1;
   for (const PoiRecord& rec : records) {
     if (rec.status != kAccepted) continue;
+    if (std::abs(int{rec.hx}) > reach || std::abs(int{rec.hy}) > reach)
+      throw std::out_of_range("record " + std::to_string(&rec - records.data()) +
+                              " (x=" + std::to_string(rec.x) + ",y=" + std::to_string(rec.y) +
+                              ") has hx=" + std::to_string(rec.hx) +
+                              " hy=" + std::to_string(rec.hy) + ", outside the histogram's +-" +
+                              std::to_string(reach) + ": no flow can be estimated from it");
     ++r.meancount;
     ++r.histx[rec.hx + 2 * S + 1];
     ++r.histy[rec.hy + 2 * S + 1];
