@@ -45,7 +45,7 @@ FrameResult estimate_flow(std::span<const PoiRecord> records, const Params& p,
   r.histx.assign(hist_bins(S), 0);
   r.histy.assign(hist_bins(S), 0);
   std::int64_t sum_hx = 0, sum_hy = 0;
-  const int reach = 2 * S + 1;
+  const int reach = 2 * S + 1;  // the largest |hx|, |hy|: bin 0 holds -reach
   for (const PoiRecord& rec : records) {
     if (rec.status != kAccepted) continue;
     if (std::abs(int{rec.hx}) > reach || std::abs(int{rec.hy}) > reach)
@@ -55,8 +55,8 @@ FrameResult estimate_flow(std::span<const PoiRecord> records, const Params& p,
                               " hy=" + std::to_string(rec.hy) + ", outside the histogram's +-" +
                               std::to_string(reach) + ": no flow can be estimated from it");
     ++r.meancount;
-    ++r.histx[rec.hx + 2 * S + 1];
-    ++r.histy[rec.hy + 2 * S + 1];
+    ++r.histx[rec.hx + reach];
+    ++r.histy[rec.hy + reach];
     sum_hx += rec.hx;
     sum_hy += rec.hy;
   }

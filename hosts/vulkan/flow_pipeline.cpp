@@ -107,11 +107,11 @@ void FlowPipeline::create_pipeline(std::span<const std::uint32_t> spirv) {
 }
 
 void FlowPipeline::create_descriptor_set() {
-  const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1},
-                                         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindings - 1}};
+  VkDescriptorPoolSize sizes[kBindings];  // one per binding: a type may repeat
+  for (std::uint32_t b = 0; b < kBindings; ++b) sizes[b] = {kBindingTypes[b], 1};
   auto pool = zeroed<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   pool.maxSets = 1;
-  pool.poolSizeCount = 2;
+  pool.poolSizeCount = kBindings;
   pool.pPoolSizes = sizes;
   check(vkCreateDescriptorPool(device_, &pool, nullptr, &pool_), "vkCreateDescriptorPool");
   auto alloc = zeroed<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
