@@ -19,7 +19,7 @@ constexpr std::uint32_t kPreferredLocalSize = 64;
 // Binding 0, the frames: a uniform texel buffer (R32_UINT), because lavapipe turns a texel fetch
 // with per-invocation addresses into one vector gather, but a storage-buffer read into a
 // per-lane, bounds-checked scalar loop (docs/vulkan.md). Binding 1, the records, and binding 2,
-// the private-array faults (kernels/vulkan/private_bounds.glsl): storage buffers.
+// the shader faults (kernels/vulkan/shader_checks.glsl): storage buffers.
 constexpr VkDescriptorType kBindingTypes[] = {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
                                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};

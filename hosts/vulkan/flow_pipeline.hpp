@@ -1,5 +1,5 @@
 // The compute pipeline of kernels/vulkan/flow.comp for one search radius: shader module,
-// descriptor set (frames, records, private-array faults), push constants, and the pipeline itself.
+// descriptor set (frames, records, shader faults), push constants, and the pipeline itself.
 // S is a specialization constant (the driver unrolls the search loops for it), so a backend keeps
 // one pipeline per radius it has seen: lavapipe JIT-compiles at vkCreateComputePipelines, which
 // takes a noticeable fraction of a second.
@@ -43,7 +43,7 @@ class FlowPipeline {
 
   // Points the descriptor set at the buffers (frames through a texel buffer view made here; the
   // records from `records_offset`, past the guard before them, to the buffer's end; the
-  // private-array faults, kernels/vulkan/private_bounds.glsl); call when they change, never while
+  // shader faults, kernels/vulkan/shader_checks.glsl); call when they change, never while
   // in use.
   void bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize records_offset,
                     VkBuffer faults);

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstring>
 #include <span>
+#include <string>
 
 #include "batch_plan.hpp"
 #include "command_runner.hpp"
@@ -41,11 +42,23 @@ vk::FlowPushConstants push_constants(const Params& p, const vk::BatchLayout& lay
   return pc;
 }
 
-// `Faults` in kernels/vulkan/private_bounds.glsl, word for word.
-struct PrivateArrayFaults {
-  std::uint32_t first_line;  // the first faulting invocation's source line in flow.comp
+// `Faults` in kernels/vulkan/shader_checks.glsl, word for word.
+struct ShaderFaults {
+  std::uint32_t first_fault;  // the first faulting invocation's kind << 16 | line in flow.comp
   std::uint32_t invocations;
 };
+
+// What the shader's fault kinds (kFault... in kernels/vulkan/shader_checks.glsl) mean.
+std::string describe_shader_fault(std::uint32_t kind) {
+  switch (kind) {
+    case 1:
+      return "indexed past a private array";
+    case 2:
+      return "read outside its frame";
+    default:
+      return "reported an unknown fault kind " + std::to_string(kind);
+  }
+}
 
 // Copies one frame into the buffer as packed rows (stride = width), zeroing the tail words.
 void pack_frame(const FrameView& f, std::byte* dst, std::uint32_t words) {
@@ -162,7 +175,7 @@ void VulkanBackend::ensure_buffers(std::uint64_t frame_bytes, std::uint64_t reco
       std::max<std::uint64_t>(1, ctx_->properties().limits.minStorageBufferOffsetAlignment);
   records_front_ = (kGuardBytes + align - 1) / align * align;
   const std::uint64_t guarded = records_front_ + record_bytes + kGuardBytes;
-  if (!faults_) faults_ = std::make_unique<vk::HostBuffer>(*ctx_, sizeof(PrivateArrayFaults));
+  if (!faults_) faults_ = std::make_unique<vk::HostBuffer>(*ctx_, sizeof(ShaderFaults));
   if (frames_ && records_ && frames_->size() >= frame_bytes && records_->size() >= guarded) return;
   records_.reset();
   frames_.reset();
@@ -184,7 +197,7 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
   vk::FlowPipeline& pipeline = pipeline_for(p.search_radius);
   // No submission is pending here.
   pipeline.bind_buffers(frames_->buffer(), records_->buffer(), records_front_, faults_->buffer());
-  PrivateArrayFaults faults{};
+  ShaderFaults faults{};
   std::memcpy(faults_->data(), &faults, sizeof(faults));
   auto* const guarded = reinterpret_cast<std::uint8_t*>(records_->data());
   const std::span<std::uint8_t> before(guarded, records_front_);
@@ -215,9 +228,10 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
   std::memcpy(out.data(), guarded + records_front_, out.size_bytes());
   std::memcpy(&faults, faults_->data(), sizeof(faults));
   if (faults.invocations != 0)
-    vk::fail("kernels/vulkan/flow.comp:" + std::to_string(faults.first_line) +
-             ": indexed past a private array (" + counted(faults.invocations, "invocation") +
-             " of this chunk; kernels/vulkan/private_bounds.glsl)");
+    vk::fail("kernels/vulkan/flow.comp:" + std::to_string(faults.first_fault & 0xFFFFu) + ": " +
+             describe_shader_fault(faults.first_fault >> 16) + " (" +
+             counted(faults.invocations, "invocation") +
+             " of this chunk; kernels/vulkan/shader_checks.glsl)");
   check_guard_before(before, "vulkan");
   check_guard_after(after, out.size(), "vulkan");
 }

@@ -78,7 +78,7 @@ class VulkanBackend final : public Backend {
   // (the device's storage buffer offset alignment), the records, kGuardBytes of guard.
   std::unique_ptr<vk::HostBuffer> records_;
   std::uint64_t records_front_ = 0;
-  // Binding 2 of flow.comp: its private-array faults (kernels/vulkan/private_bounds.glsl), cleared
+  // Binding 2 of flow.comp: its shader faults (kernels/vulkan/shader_checks.glsl), cleared
   // before each chunk and checked after it.
   std::unique_ptr<vk::HostBuffer> faults_;
   std::optional<double> last_device_seconds_;

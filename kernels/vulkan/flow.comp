@@ -11,25 +11,21 @@
 // the firmware's USAD8 / UHADD8 (SPEC §7).
 #version 450
 #extension GL_EXT_control_flow_attributes : require  // [[unroll]]: see integer_search
-#extension GL_GOOGLE_include_directive : require     // private_bounds.glsl
+#extension GL_GOOGLE_include_directive : require     // shader_checks.glsl
 
 layout(local_size_x_id = 0) in;  // set by the host from the device's work-group limits
 
-// Frame pairs of the current chunk: pair p's prev starts at word 2*p*words_per_frame, its next
-// right after. Each frame carries one spare word at its end so that the 4-byte funnel read of the
-// last pixels never leaves the frame.
+// Frame pairs of the current chunk, read through FRAME_WORD(frame, word) (shader_checks.glsl):
+// word `word` of the invocation's prev (kPrev) or next (kNext), 4 pixels per word. Each frame
+// carries one spare word at its end so that the 4-byte funnel read of the last pixels never leaves
+// the frame.
 // Read as a uniform texel buffer (R32_UINT, one texel = one word), not a storage buffer: lavapipe
 // turns a texel fetch with per-invocation addresses into one vector gather, but a storage-buffer
 // read into a per-lane, bounds-checked scalar loop.
 layout(set = 0, binding = 0) uniform usamplerBuffer frame_texels;
 
-uint frame_word(uint i) { return texelFetch(frame_texels, int(i)).x; }
-
 // One 32-byte record (reference/record.hpp) = 8 little-endian words per POI, pair after pair.
 layout(std430, set = 0, binding = 1) writeonly buffer Records { uint record_words[]; };
-
-// Binding 2 and AT(array, index), the bounds check of every dynamic private-array index.
-#include "private_bounds.glsl"
 
 layout(push_constant) uniform Problem {
   uint width;              // W = row stride in pixels (S is the specialization constant S)
@@ -47,6 +43,10 @@ layout(push_constant) uniform Problem {
 }
 pc;
 
+// Binding 2 and the shader's checks of itself: AT(array, index) for every dynamic private-array
+// index, FRAME_WORD(frame, word) for every frame read, POISON(array) for every private array.
+#include "shader_checks.glsl"
+
 // The 4 pixels starting at byte sh / 8 of the 8-byte little-endian string lo, hi (sh = 0, 8, 16
 // or 24). (hi << 1) << (31 - sh) is hi << (32 - sh) without the undefined shift by 32 when sh == 0.
 uint funnel(uint lo, uint hi, uint sh) { return (lo >> sh) | ((hi << 1u) << (31u - sh)); }
@@ -55,13 +55,13 @@ uint funnel(uint lo, uint hi, uint sh) { return (lo >> sh) | ((hi << 1u) << (31u
 // with a per-invocation address is a per-lane, bounds-checked scalar loop, so reads, not the SAD
 // arithmetic, dominated the first versions (docs/vulkan.md, "Benchmark").
 
-// The 8 pixels n .. n+7 of the frame starting at word `base`, as two packed words.
-void load8(uint base, uint n, out uint w0, out uint w1) {
-  uint q = base + (n >> 2);
+// The 8 pixels n .. n+7 of `frame` (kPrev or kNext), as two packed words.
+void load8(uint frame, uint n, out uint w0, out uint w1) {
+  uint q = n >> 2;
   uint sh = (n & 3u) * 8u;
-  uint a = frame_word(q);
-  uint b = frame_word(q + 1u);
-  uint c = frame_word(q + 2u);
+  uint a = FRAME_WORD(frame, q);
+  uint b = FRAME_WORD(frame, q + 1u);
+  uint c = FRAME_WORD(frame, q + 2u);
   w0 = funnel(a, b, sh);
   w1 = funnel(b, c, sh);
 }
@@ -83,6 +83,7 @@ uint uhadd8(uint a, uint b) { return (a & b) + (((a ^ b) & 0xFEFEFEFEu) >> 1); }
 // nothing).
 uint feature_value(uint blk[16]) {
   uint q[4];
+  POISON(q);
   for (int r = 0; r < 4; ++r) AT(q, r) = (AT(blk, 2 * r + 4) >> 16) | (AT(blk, 2 * r + 5) << 16);
   uint sum = 0u;
   for (int r = 0; r < 3; ++r) sum += usad8(AT(q, r), AT(q, r + 1));
@@ -106,7 +107,7 @@ const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of 
 // each row of next (two operations per candidate), A once per POI. All exact in 32 bits.
 // Only a STRICTLY smaller SAD replaces, so ties keep the first candidate in raster order.
 // prev's block comes from blk (held in registers for the whole search), not from memory.
-void integer_search(uint blk[16], uint next, uint n, out uint best, out int bx, out int by) {
+void integer_search(uint blk[16], uint n, out uint best, out int bx, out int by) {
   best = 0xFFFFFFFFu;
   bx = 0;
   by = 0;
@@ -116,10 +117,12 @@ void integer_search(uint blk[16], uint next, uint n, out uint best, out int bx, 
   }
   for (int dy = -S; dy <= S; ++dy) {
     int twice_max_minus_next[kSide];  // 2 M - N, summed over the block rows
+    POISON(twice_max_minus_next);
     for (int k = 0; k < kSide; ++k) AT(twice_max_minus_next, k) = 0;
     [[unroll]] for (int r = 0; r < 8; ++r) {
       uint row = n + uint(r) * pc.width;
       int pv[8];
+      POISON(pv);
       for (int c = 0; c < 4; ++c) {
         AT(pv, c) = int((AT(blk, 2 * r) >> (8u * uint(c))) & 0xFFu);
         AT(pv, c + 4) = int((AT(blk, 2 * r + 1) >> (8u * uint(c))) & 0xFFu);
@@ -127,12 +130,13 @@ void integer_search(uint blk[16], uint next, uint n, out uint best, out int bx, 
       // The 4 * kSegWords pixels of next from column x - S of row y + r + dy, unpacked. (Arrays
       // sized by S stay in this function: passing them to functions breaks SPIR-V validation.)
       uint m = uint(int(row) + dy * int(pc.width) - S);
-      uint q = next + (m >> 2);
+      uint q = m >> 2;
       uint sh = (m & 3u) * 8u;
-      uint lo = frame_word(q);
+      uint lo = FRAME_WORD(kNext, q);
       int seg[kSegWords * 4];
+      POISON(seg);
       [[unroll]] for (int k = 0; k < kSegWords; ++k) {
-        uint hi = frame_word(q + uint(k) + 1u);
+        uint hi = FRAME_WORD(kNext, q + uint(k) + 1u);
         uint w = funnel(lo, hi, sh);
         lo = hi;
         for (int j = 0; j < 4; ++j) AT(seg, 4 * k + j) = int((w >> (8u * uint(j))) & 0xFFu);
@@ -168,14 +172,14 @@ struct HalfRow {
 // Both halves (q = 0, 1) of block row v, which starts at pixel m of next. Columns -1 .. 8 are
 // read once (4 words) and aligned into `left` = columns -1..2, 3..6, 7..10; the other windows are
 // constant byte shifts of those.
-void half_rows(uint next, uint m, out HalfRow q0, out HalfRow q1) {
+void half_rows(uint m, out HalfRow q0, out HalfRow q1) {
   uint a = m - 1u;  // column -1
-  uint w = next + (a >> 2);
+  uint w = a >> 2;
   uint sh = (a & 3u) * 8u;
-  uint w0 = frame_word(w);
-  uint w1 = frame_word(w + 1u);
-  uint w2 = frame_word(w + 2u);
-  uint w3 = frame_word(w + 3u);
+  uint w0 = FRAME_WORD(kNext, w);
+  uint w1 = FRAME_WORD(kNext, w + 1u);
+  uint w2 = FRAME_WORD(kNext, w + 2u);
+  uint w3 = FRAME_WORD(kNext, w + 3u);
   uint left0 = funnel(w0, w1, sh);
   uint left1 = funnel(w1, w2, sh);
   uint left2 = funnel(w2, w3, sh);
@@ -202,13 +206,14 @@ void add_half_sads(uint b, HalfRow up, HalfRow mid, HalfRow down, inout uint sub
 
 // Step 3: the eight half-pixel SADs around the integer match at pixel n of next. Rows -1 .. 8 of
 // next are read once each, rolling down the block (up, mid, down).
-void half_pixel_sads(uint blk[16], uint next, uint n, out uint sub[8]) {
+void half_pixel_sads(uint blk[16], uint n, out uint sub[8]) {
+  POISON(sub);
   for (int k = 0; k < 8; ++k) AT(sub, k) = 0u;
   HalfRow up0, up1, mid0, mid1, down0, down1;
-  half_rows(next, n - pc.width, up0, up1);
-  half_rows(next, n, mid0, mid1);
+  half_rows(n - pc.width, up0, up1);
+  half_rows(n, mid0, mid1);
   for (int r = 0; r < 8; ++r) {
-    half_rows(next, n + uint(r + 1) * pc.width, down0, down1);
+    half_rows(n + uint(r + 1) * pc.width, down0, down1);
     add_half_sads(AT(blk, 2 * r), up0, mid0, down0, sub);
     add_half_sads(AT(blk, 2 * r + 1), up1, mid1, down1, sub);
     up0 = mid0;
@@ -248,19 +253,17 @@ void write_record(uint item, uint x, uint y, uint status, uint feature, int bx, 
 void flow_poi() {
   if (gl_GlobalInvocationID.x >= pc.item_count) return;
   uint item = pc.first_item + gl_GlobalInvocationID.x;
-  uint pair = item / pc.pois_per_pair;
   uint poi = item % pc.pois_per_pair;
   uint x = pc.grid_x0 + (poi % pc.grid_nx) * pc.grid_step_x;
   uint y = pc.grid_y0 + (poi / pc.grid_nx) * pc.grid_step_y;
-  uint prev = 2u * pair * pc.words_per_frame;
-  uint next = prev + pc.words_per_frame;
   uint n = y * pc.width + x;  // the POI's top-left pixel
   uint zero[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
   // prev's 8x8 block, 2 packed words per row, read once for all three steps.
   uint blk[16];
+  POISON(blk);
   for (int r = 0; r < 8; ++r)
-    load8(prev, n + uint(r) * pc.width, AT(blk, 2 * r), AT(blk, 2 * r + 1));
+    load8(kPrev, n + uint(r) * pc.width, AT(blk, 2 * r), AT(blk, 2 * r + 1));
 
   uint feature = feature_value(blk);
   if (feature < pc.feature_threshold) {
@@ -271,14 +274,14 @@ void flow_poi() {
   uint best;
   int bx;
   int by;
-  integer_search(blk, next, n, best, bx, by);
+  integer_search(blk, n, best, bx, by);
   if (!(best < pc.sad_threshold)) {
     write_record(item, x, y, kStatusRejected, feature, bx, by, best, kDirNone, zero, 0, 0);
     return;
   }
 
   uint sub[8];
-  half_pixel_sads(blk, next, uint(int(n) + by * int(pc.width) + bx), sub);
+  half_pixel_sads(blk, uint(int(n) + by * int(pc.width) + bx), sub);
   // The vote starts from the integer match (kDirNone); k = 0..7 replaces only when strictly
   // smaller.
   uint vote = best;
@@ -295,5 +298,5 @@ void flow_poi() {
 
 void main() {
   flow_poi();
-  report_private_faults();
+  report_shader_faults();
 }

@@ -3,12 +3,15 @@
 // refused.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <string>
 
 #include "errors.hpp"
 #include "exactness.hpp"
+#include "flow_search_above_frame_spv.h"
+#include "flow_sub7_unwritten_spv.h"
 #include "flow_vote_past_sub_spv.h"
 #include "grid.hpp"
 #include "registry.hpp"
@@ -134,37 +137,91 @@ TEST_CASE("vulkan: a dispatch past the records hits the guard after them", "[vul
                     Contains("vulkan: wrote past its output (") && Contains(" after record 63)"));
 }
 
-TEST_CASE("vulkan: an index past a private array is the shader's failure, naming its line",
-          "[vulkan]") {
-  // The vote loop of flow.comp one step too long reads sub[8] (tests/vulkan/CMakeLists.txt):
-  // lavapipe's records stay right, so only the bounds checks of kernels/vulkan/private_bounds.glsl
-  // can fail it. The same pair and parameters pass with the built-in shader.
+namespace {
+
+// Copies of flow.comp with one planted fault each (tests/vulkan/CMakeLists.txt), run through
+// VulkanConfig::shader_spirv on random pairs at px4flow-64 that the built-in shader gets right.
+struct PlantedRun {
+  std::vector<PoiRecord> records;
+  std::string error;  // the BackendError's message, empty when the run went through
+};
+
+template <std::size_t N>
+PlantedRun run_planted(const std::uint32_t (&spirv)[N]) {
   const Params p = make_params("px4flow-64", 64, 64);
   const std::vector<OwnedPair> pairs = random_pairs(64, 64, p.search_radius, 4, 11);
   std::vector<FramePair> views;
   for (const auto& pair : pairs) views.push_back(pair.view());
-  std::vector<PoiRecord> out(views.size() * poi_count(p));
+  PlantedRun planted{std::vector<PoiRecord>(views.size() * poi_count(p)), ""};
   OpCounts counts;
-  CHECK_NOTHROW(make_vulkan()->run(views, p, out, counts));
+  CHECK_NOTHROW(make_vulkan()->run(views, p, planted.records, counts));
   VulkanConfig config;
-  config.shader_spirv.assign(std::begin(k_flow_vote_past_sub_spirv),
-                             std::end(k_flow_vote_past_sub_spirv));
-  auto vk = make_vulkan(config);
-  std::string message;
+  config.shader_spirv.assign(std::begin(spirv), std::end(spirv));
   try {
-    vk->run(views, p, out, counts);
+    make_vulkan(config)->run(views, p, planted.records, counts);
   } catch (const BackendError& e) {
-    message = e.what();
+    planted.error = e.what();
   }
-  INFO(message);
-  REQUIRE_THAT(message, Contains("vulkan: kernels/vulkan/flow.comp:") &&
-                            Contains(": indexed past a private array ("));
-  // The line it names is the vote's read of sub[k] in the source.
+  return planted;
+}
+
+// The source line of flow.comp that a shader fault's message names.
+std::string named_line(const std::string& message) {
   const auto at = message.find("flow.comp:") + std::string("flow.comp:").size();
   const int line = std::stoi(message.substr(at));
   std::ifstream source(PXFLOW_VULKAN_SHADER_FILE);
   std::string text;
   for (int n = 1; n <= line && std::getline(source, text); ++n) {
   }
-  CHECK_THAT(text, Contains("AT(sub, k) < vote"));
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("vulkan: an index past a private array is the shader's failure, naming its line",
+          "[vulkan]") {
+  // The vote loop one step too long reads sub[8]: lavapipe's records stay right, so only the
+  // bounds checks of kernels/vulkan/shader_checks.glsl can fail it.
+  const PlantedRun run = run_planted(k_flow_vote_past_sub_spirv);
+  INFO(run.error);
+  REQUIRE_THAT(run.error, Contains("vulkan: kernels/vulkan/flow.comp:") &&
+                              Contains(": indexed past a private array ("));
+  CHECK_THAT(named_line(run.error), Contains("AT(sub, k) < vote"));
+}
+
+TEST_CASE("vulkan: a read outside the invocation's frame is the shader's failure, naming its line",
+          "[vulkan]") {
+  // The search starting two rows too high reads the row above the frame (in the buffer: the other
+  // frame of the pair, or the pair before); only the frame check of shader_checks.glsl sees it.
+  const PlantedRun run = run_planted(k_flow_search_above_frame_spirv);
+  INFO(run.error);
+  REQUIRE_THAT(run.error, Contains("vulkan: kernels/vulkan/flow.comp:") &&
+                              Contains(": read outside its frame (") &&
+                              Contains(" invocations of this chunk"));
+  CHECK_THAT(named_line(run.error), Contains("FRAME_WORD(kNext, q)"));
+}
+
+TEST_CASE("vulkan: a private element the kernel never writes changes the records (poison)",
+          "[vulkan]") {
+  // The half-pixel sums cleared one short leave sub[7] unwritten. Lavapipe's uninitialised value
+  // is 0, which would give the right sum; the poison of shader_checks.glsl makes every accepted
+  // POI's sub[7] wrong instead.
+  const Params p = make_params("px4flow-64", 64, 64);
+  const std::vector<OwnedPair> pairs = random_pairs(64, 64, p.search_radius, 4, 11);
+  std::vector<FramePair> views;
+  for (const auto& pair : pairs) views.push_back(pair.view());
+  std::vector<PoiRecord> right(views.size() * poi_count(p));
+  OpCounts counts;
+  make_vulkan()->run(views, p, right, counts);
+  const PlantedRun run = run_planted(k_flow_sub7_unwritten_spirv);
+  REQUIRE(run.error.empty());
+  int accepted = 0;
+  for (std::size_t i = 0; i < right.size(); ++i) {
+    if (right[i].status != kAccepted) continue;
+    ++accepted;
+    INFO("record " << i);
+    CHECK(run.records[i].sub[7] != right[i].sub[7]);
+    CHECK(std::memcmp(run.records[i].sub, right[i].sub, 7 * sizeof(right[i].sub[0])) == 0);
+  }
+  CHECK(accepted > 0);
 }
