@@ -33,6 +33,20 @@ if(PXFLOW_SANITIZE)
   target_link_options(pxflow_build_flags INTERFACE -fsanitize=address,undefined)
 endif()
 
+# pxflow_hot_code(target...): the code most of the sanitizer stage's test time is spent in, compiled
+# at -O2 in a sanitizer build (the last -O on the command line wins), where the rest is at -O1
+# (ci/run-tests.sh: -O1 compiles in half the time of -O2). The instrumentation is the same at
+# either level. The reference answers every `pxflow check` and ref::integer_search took 56 % of the
+# samples of the six slowest ASan tests (docs/harness.md, "The test suite's time"); the CPU
+# kernels and the SAD ceilings run in every check and bench. Other builds are left as they are.
+function(pxflow_hot_code)
+  if(PXFLOW_SANITIZE)
+    foreach(t IN LISTS ARGN)
+      target_compile_options(${t} PRIVATE -O2)
+    endforeach()
+  endif()
+endfunction()
+
 # Links pxflow_build_flags to every library, module and executable compiled in `dir` and the
 # folders below it (the top folder when none is given; tests/ is added after it, with its own
 # call).
