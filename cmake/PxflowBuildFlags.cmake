@@ -37,7 +37,7 @@ endif()
 # at -O2 in a sanitizer build (the last -O on the command line wins), where the rest is at -O1
 # (ci/run-tests.sh: -O1 compiles in half the time of -O2). The instrumentation is the same at
 # either level. The reference answers every `pxflow check` and ref::integer_search took 56 % of the
-# samples of the six slowest ASan tests (docs/harness.md, "The test suite's time"); the CPU
+# samples of the six slowest ASan tests (docs/harness.md, "Where the sanitizer stage's time goes"); the CPU
 # kernels and the SAD ceilings run in every check and bench. Other builds are left as they are.
 function(pxflow_hot_code)
   if(PXFLOW_SANITIZE)

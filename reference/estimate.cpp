@@ -25,7 +25,7 @@ float filtered_flow(const std::vector<std::uint16_t>& hist, int S) {
     weight += static_cast<float>(hist[b]);
   }
   const float mean_bin = value / weight;  // the one rounding that matters
-  return (mean_bin - static_cast<float>(2 * S + 1)) / 2.0f;
+  return (mean_bin - static_cast<float>(hist_reach(S))) / 2.0f;
 }
 
 // GC: adds the rotation seen by the gyro, then clamps to the search window plus half a pixel.
@@ -45,7 +45,7 @@ FrameResult estimate_flow(std::span<const PoiRecord> records, const Params& p,
   r.histx.assign(hist_bins(S), 0);
   r.histy.assign(hist_bins(S), 0);
   std::int64_t sum_hx = 0, sum_hy = 0;
-  const int reach = 2 * S + 1;  // the largest |hx|, |hy|: bin 0 holds -reach
+  const int reach = hist_reach(S);  // bin 0 holds -reach
   for (const PoiRecord& rec : records) {
     if (rec.status != kAccepted) continue;
     if (std::abs(int{rec.hx}) > reach || std::abs(int{rec.hy}) > reach)

@@ -18,7 +18,9 @@ struct GyroSample {
 };
 
 // Number of histogram bins for search radius S: 2*(2S+1)+1.
-inline int hist_bins(int S) { return 2 * (2 * S + 1) + 1; }
+// The largest |hx| or |hy| of a record (2S+1 half-pixel steps); bin hist_reach(S) counts 0.
+inline int hist_reach(int S) { return 2 * S + 1; }
+inline int hist_bins(int S) { return 2 * hist_reach(S) + 1; }
 
 // Throws std::out_of_range when an accepted record's hx or hy lies outside the histogram
 // (|h| > 2S+1): records from a broken kernel or device, which SPEC §3 never produces; the
