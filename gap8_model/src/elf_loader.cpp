@@ -18,13 +18,15 @@ class ElfFile {
  public:
   explicit ElfFile(const std::string& path) : path_(path) {
     if (elf_version(EV_CURRENT) == EV_NONE) Fail("libelf initialisation failed");
-    fd_ = open(path.c_str(), O_RDONLY);
+    fd_ = open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd_ < 0) Fail("cannot open file");
-    elf_ = elf_begin(fd_, ELF_C_READ, nullptr);
-    if (!elf_ || elf_kind(elf_) != ELF_K_ELF) {
-      Close();  // a throwing constructor never runs the destructor
-      Fail("not an ELF file");
-    }
+    Begin(elf_begin(fd_, ELF_C_READ, nullptr));
+  }
+  // libelf reads the bytes in place: the file keeps its own copy.
+  ElfFile(const std::string& name, std::span<const uint8_t> bytes)
+      : path_(name), bytes_(bytes.begin(), bytes.end()) {
+    if (elf_version(EV_CURRENT) == EV_NONE) Fail("libelf initialisation failed");
+    Begin(elf_memory(bytes_.data(), bytes_.size()));
   }
   ~ElfFile() { Close(); }
   ElfFile(const ElfFile&) = delete;
@@ -41,7 +43,16 @@ class ElfFile {
     fd_ = -1;
   }
 
+  void Begin(Elf* elf) {
+    elf_ = elf;
+    if (!elf_ || elf_kind(elf_) != ELF_K_ELF) {
+      Close();  // a throwing constructor never runs the destructor
+      Fail("not an ELF file");
+    }
+  }
+
   std::string path_;
+  std::vector<char> bytes_;
   int fd_ = -1;
   Elf* elf_ = nullptr;
 };
@@ -85,10 +96,7 @@ void ReadSymbols(const ElfFile& file, ElfImage& image) {
   }
 }
 
-}  // namespace
-
-ElfImage LoadElf(const std::string& path, Memory& memory) {
-  ElfFile file(path);
+ElfImage Load(const ElfFile& file, Memory& memory) {
   if (gelf_getclass(file.get()) != ELFCLASS32) file.Fail("not a 32-bit ELF");
   GElf_Ehdr eh;
   if (!gelf_getehdr(file.get(), &eh)) file.Fail("bad ELF header");
@@ -99,6 +107,14 @@ ElfImage LoadElf(const std::string& path, Memory& memory) {
   image.entry = static_cast<uint32_t>(eh.e_entry);
   ReadSymbols(file, image);
   return image;
+}
+
+}  // namespace
+
+ElfImage LoadElf(const std::string& path, Memory& memory) { return Load(ElfFile(path), memory); }
+
+ElfImage LoadElfBytes(const std::string& name, std::span<const uint8_t> bytes, Memory& memory) {
+  return Load(ElfFile(name, bytes), memory);
 }
 
 }  // namespace gap8

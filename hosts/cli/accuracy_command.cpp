@@ -79,7 +79,9 @@ Command add_accuracy_command(CLI::App& app) {
             a->command = given_command_line(*sub);
             return run_accuracy_command(*a);
           },
-          kAccuracyExamples};
+          kAccuracyExamples,
+          {"--cases 1 --video-pairs 0 --data {DATA}"},
+          {"--cases 400 --video-pairs 0 --data {DATA} --json {OUT}.json"}};
 }
 
 }  // namespace pxflow::cli

@@ -10,8 +10,10 @@
 #include "frame_io.hpp"
 #include "help_sections.hpp"
 #include "interrupt.hpp"
+#include "options_listing.hpp"
 #include "output_plan.hpp"
 #include "parse_errors.hpp"
+#include "path_options.hpp"
 #include "pxflow_app.hpp"
 #include "pxflow_version.h"
 #include "registry.hpp"
@@ -49,7 +51,9 @@ int run_pxflow(int argc, char** argv) {
   std::vector<CLI::Option*> family_flags;
   for (auto& [opt, values] : family_options) {
     // One value per occurrence; only a repeatable option may occur more than once.
-    CLI::Option* flag = app.add_option(opt->flag, values, opt->help)->expected(1);
+    CLI::Option* flag =
+        app.add_option(opt->flag, values, opt->help)->expected(1)->type_name(opt->value_name);
+    if (opt->reads_file) cli::declare_path(flag, cli::PathKind::InputFile);
     flag->multi_option_policy(opt->repeatable ? CLI::MultiOptionPolicy::TakeAll
                                               : CLI::MultiOptionPolicy::Throw);
     family_flags.push_back(flag);
@@ -70,6 +74,11 @@ int run_pxflow(int argc, char** argv) {
                   cli::help_sections(c.examples));
   }
   app.footer(cli::help_sections(cli::first_examples(commands)));
+  // For the generated tests (path_options.hpp): every option, its kind, every command's runs.
+  if (argc == 2 && std::string(argv[1]) == "--list-options") {
+    std::fputs(cli::list_options_json(app, commands).c_str(), stdout);
+    return 0;
+  }
   std::string command;  // the subcommand being parsed, for "see pxflow CMD --help"
   if (argc > 1 && argv[1][0] != '-') {
     for (const auto& c : commands)
@@ -120,6 +129,9 @@ int run_pxflow(int argc, char** argv) {
         family_options[i].first->apply(value);
     for (const auto& c : commands)
       if (c.app->parsed()) {
+        cli::note_given_inputs(app);  // before any plan: its outputs are checked against them
+        cli::note_given_inputs(*c.app);
+        for (const CLI::App* sub : c.app->get_subcommands()) cli::note_given_inputs(*sub);
         const int code = c.run();
         check_stdout();  // output that was lost is a failure, never a silent exit 0
         return code;

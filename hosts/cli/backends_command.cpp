@@ -50,7 +50,7 @@ Command add_backends_command(CLI::App& app) {
   add_json_option(*sub, *json_path,
                   "the rows: name, family, available, reason, needs, has_devices, preferred; "
                   "with '-' instead of the table");
-  return {sub, [json_path] { return run_backends(*json_path); }, kBackendsExamples};
+  return {sub, [json_path] { return run_backends(*json_path); }, kBackendsExamples, {""}};
 }
 
 }  // namespace pxflow::cli

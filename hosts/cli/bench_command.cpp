@@ -159,7 +159,10 @@ Command add_bench_command(CLI::App& app) {
             a->command = given_command_line(*sub);
             return run_bench_command(*a);
           },
-          kBenchExamples};
+          kBenchExamples,
+          {"--backend ref-local --batch 1 --sizes 64x64 --min-time 0"},
+          {"--backend ref-local --batch 1,16 --sizes 64x64,320x240 --min-time 0.5 --json "
+           "{KEPT}.json"}};
 }
 
 }  // namespace pxflow::cli

@@ -13,6 +13,7 @@
 #include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
+#include "path_options.hpp"
 #include "progress.hpp"
 
 namespace pxflow::cli {
@@ -126,6 +127,7 @@ int run_check_command(const CheckArgs& a) {
     o.repro.write = [repro](const std::string& path, std::string_view bytes) {
       repro->write(path, bytes);
     };
+    o.repro.make_folder = [repro](const std::string& path) { return repro->make_subfolder(path); };
   }
   o.repro.program = "pxflow" + a.globals;
   o.repro.limits.seconds = a.repro_seconds;
@@ -166,13 +168,15 @@ Command add_check_command(CLI::App& app) {
   a->backends_opt = add_backends_option(*sub, a->backends, "the ones to check");
   sub->add_option("--require", a->require,
                   "Backends that must run (comma-separated, or 'all': every row but those needing "
-                  "hardware this machine lacks, an ISA extension): their skips fail");
+                  "hardware this machine lacks, an ISA extension): their skips fail")
+      ->type_name("LIST|all");
   add_seed_option(*sub, a->seed, "printed; it reproduces any failure");
   sub->add_option("--cases", a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
       ->check(CLI::Range(1L, 100000000L));
   a->shard_opt = sub->add_option("--shard", a->shard,
                                  "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
-                                 "`pxflow merge` combines the parts' --json files)");
+                                 "`pxflow merge` combines the parts' --json files)")
+                     ->type_name("K/M");
   add_json_option(*sub, a->json_path);
   a->data_opt = add_data_option(*sub, a->data_dir);
   sub->add_flag("--generated-only", a->generated_only,
@@ -181,10 +185,12 @@ Command add_check_command(CLI::App& app) {
                 "Only the limit cases: each backend at the edges its unsupported() declares, and "
                 "SPEC's corners (docs/harness.md)");
   sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
-  a->repro_dir_opt = sub->add_option(
-      "--repro-dir", a->repro_dir,
-      "Existing folder for the reproducers of mismatches, one pxflow-repro-N per run (default: "
-      "the --json file's folder, else the working folder)");
+  a->repro_dir_opt = declare_path(
+      sub->add_option("--repro-dir", a->repro_dir,
+                      "Existing folder for the reproducers of mismatches, one pxflow-repro-N per "
+                      "run (default: the --json file's folder, else the working folder)")
+          ->type_name("DIR"),
+      PathKind::OutputFolder);
   sub->add_flag("--no-repro", a->no_repro,
                 "Write no reproducers (the first differing stage is still named)");
   sub->add_option("--repro-seconds", a->repro_seconds,
@@ -208,7 +214,9 @@ Command add_check_command(CLI::App& app) {
             a->worker_command = check_worker_command(*sub, a->backend_options);
             return run_check_command(*a);
           },
-          kCheckExamples};
+          kCheckExamples,
+          {"--backends ref-original,ref-local --limits-only"},
+          {"--backends ref-original,ref-local --cases 20000 --json {KEPT}.json"}};
 }
 
 }  // namespace pxflow::cli

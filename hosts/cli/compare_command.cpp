@@ -9,6 +9,8 @@
 #include "input_file.hpp"
 #include "json_document.hpp"
 #include "output_plan.hpp"
+#include "owned_folder.hpp"
+#include "path_options.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -40,15 +42,19 @@ std::vector<BenchFile> read_bench_files(const std::vector<std::string>& paths) {
   return files;
 }
 
+// The list of the files a compare folder holds (io/owned_folder.hpp).
+constexpr const char* kCompareManifest = ".pxflow-compare";
+
 int run_compare(const CompareArgs& a) {
   OutputPlan plan;
   plan.read_all(a.files);
-  OutputFile *json_out = nullptr, *csv_out = nullptr;
+  OutputFile *json_out = nullptr, *csv_out = nullptr, *listed = nullptr;
   if (!a.out_dir.empty()) {
     namespace fs = std::filesystem;
-    plan.make_folder("--out", a.out_dir);
+    plan.make_folder("--out", a.out_dir, kCompareManifest);
     json_out = &plan.file("--out", (fs::path(a.out_dir) / "compare.json").string());
     csv_out = &plan.file("--out", (fs::path(a.out_dir) / "compare.csv").string());
+    listed = &plan.file("--out", (fs::path(a.out_dir) / kCompareManifest).string());
   }
   const std::vector<BenchFile> files = read_bench_files(a.files);
   plan.prepare();
@@ -57,6 +63,7 @@ int run_compare(const CompareArgs& a) {
   if (json_out) {
     json_out->write(json_document(comparison_json(c)));
     csv_out->write(comparison_csv(c));
+    listed->write(manifest_text({"compare.json", "compare.csv"}));
     std::cout << "wrote " << a.out_dir << "/compare.json and compare.csv\n";
   }
   if (a.fail_above < 0) return 0;
@@ -90,7 +97,10 @@ Command add_compare_command(CLI::App& app) {
       "its count does. Exit 0: compared (no --fail-above, or no row over it). 1: --fail-above "
       "PCT and a row significantly slower by more than PCT %. 2: a file is missing, not JSON or "
       "not a bench file; nothing is written. See docs/harness.md, \"Comparing bench files\".");
-  sub->add_option("FILES", a->files, "Bench files, the first the baseline (A), then B, C, ...")
+  declare_path(
+      sub->add_option("FILES", a->files, "Bench files, the first the baseline (A), then B, C, ...")
+          ->type_name("FILE"),
+      PathKind::InputFile)
       ->required();
   sub->add_option("--fail-above", a->fail_above,
                   "Exit 1 when a row is significantly slower than the baseline by more than PCT "
@@ -100,7 +110,8 @@ Command add_compare_command(CLI::App& app) {
   sub->add_option("--out", a->out_dir,
                   "Folder to write compare.json and compare.csv into (created when missing)")
       ->type_name("DIR");
-  return {sub, [a] { return run_compare(*a); }, kCompareExamples};
+  declare_path(sub->get_option("--out"), PathKind::OwnedFolder);
+  return {sub, [a] { return run_compare(*a); }, kCompareExamples, {"{BENCH} {BENCH2}"}};
 }
 
 }  // namespace pxflow::cli

@@ -21,6 +21,7 @@
 #include "interrupt.hpp"
 #include "json_document.hpp"
 #include "output_plan.hpp"
+#include "path_options.hpp"
 #include "registry.hpp"
 
 namespace pxflow::cli {
@@ -294,9 +295,11 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
     // A signal that ended the source early (Ctrl-C reaches `cat ... |` too) is a stop as well.
     stop_if_interrupted(std::to_string(run.pairs()) + " pairs done");
   } catch (...) {
+    if (out.draw) out.draw->remove_earlier();
     if (run.pairs() > 0) say_incomplete(run.pairs(), {out.jsonl, out.csv});
     throw;
   }
+  if (out.draw) out.draw->remove_earlier();
   if (out.jsonl) out.jsonl->finish();
   if (out.csv) out.csv->finish();
   print_summary(o, run, out, std::chrono::duration<double>(Clock::now() - t0).count());
@@ -354,9 +357,11 @@ Command add_flow_command(CLI::App& app) {
       "--progress or on a terminal).");
   o->problem.add_to(*sub);
   sub->add_option("--size", o->size,
-                  "Inputs are raw 8-bit frames of WIDTHxHEIGHT (e.g. 64x64), whatever their name");
+                  "Inputs are raw 8-bit frames of WIDTHxHEIGHT (e.g. 64x64), whatever their name")
+      ->type_name("WxH");
   sub->add_option("--crop", o->crop,
-                  "Use the window WxH+X+Y of every frame (e.g. 64x64+100+40), before --bin");
+                  "Use the window WxH+X+Y of every frame (e.g. 64x64+100+40), before --bin")
+      ->type_name("WxH+X+Y");
   sub->add_option("--bin", o->bin, "Average N x N pixels into one (after --crop)")
       ->check(CLI::Range(1, 64));
   add_backend_option(*sub, o->backend);
@@ -364,21 +369,35 @@ Command add_flow_command(CLI::App& app) {
   add_device_option(*sub, o->backend_options.device);
   CLI::Option* json =
       add_json_option(*sub, o->json, "one object, of one pair (a sequence: --jsonl)");
-  CLI::Option* jsonl = sub->add_option(
-      "--jsonl", o->jsonl, "Write one JSON object per pair, one per line, to FILE (- = stdout)");
-  CLI::Option* csv =
-      sub->add_option("--csv", o->csv, "Write one CSV row per pair to FILE (- = stdout)");
-  CLI::Option* draw = sub->add_option(
-      "--draw", o->draw,
-      "Draw the POIs, their vectors and the frame flow into FILE.png (one pair) or into the "
-      "folder DIR as pair-NNNNNN.png (a sequence)");
+  CLI::Option* jsonl = declare_path(
+      sub->add_option("--jsonl", o->jsonl,
+                      "Write one JSON object per pair, one per line, to FILE (- = stdout)")
+          ->type_name("FILE"),
+      PathKind::OutputFile, ".jsonl");
+  CLI::Option* csv = declare_path(
+      sub->add_option("--csv", o->csv, "Write one CSV row per pair to FILE (- = stdout)")
+          ->type_name("FILE"),
+      PathKind::OutputFile, ".csv");
+  CLI::Option* draw = declare_path(
+      sub->add_option("--draw", o->draw,
+                      "Draw the POIs, their vectors and the frame flow into FILE.png (one pair) "
+                      "or into the folder DIR as pair-NNNNNN.png (a sequence; pictures of an "
+                      "earlier run beyond this run's last are removed)")
+          ->type_name("FILE.png|DIR"),
+      PathKind::OutputFile, ".png");
   CLI::Option* pairs =
-      sub->add_option("--pairs", o->pairs, "A list file of pairs: PREV NEXT a line");
+      declare_path(sub->add_option("--pairs", o->pairs, "A list file of pairs: PREV NEXT a line")
+                       ->type_name("FILE"),
+                   PathKind::InputFile);
   sub->add_option("--max-pairs", o->max_pairs, "Stop a sequence after N pairs (0 = all)")
       ->check(CLI::Range(0, 100000000));
   add_progress_flag(*sub, &o->progress);
-  sub->add_option("PREV", o->first, "First frame (image file, or raw with --size), or SOURCE");
-  sub->add_option("NEXT", o->second, "Second frame (same size)");
+  declare_path(
+      sub->add_option("PREV", o->first, "First frame (image file, or raw with --size), or SOURCE")
+          ->type_name("PREV|SOURCE"),
+      PathKind::InputSource);
+  declare_path(sub->add_option("NEXT", o->second, "Second frame (same size)")->type_name("NEXT"),
+               PathKind::InputFile);
   return {sub,
           [o, json, jsonl, csv, draw, pairs] {
             o->json_given = json->count() > 0;
@@ -388,7 +407,9 @@ Command add_flow_command(CLI::App& app) {
             o->pairs_given = pairs->count() > 0;
             return run_flow(*o);
           },
-          kFlowExamples};
+          kFlowExamples,
+          {"{PREV} {NEXT}", "--pairs {PAIRS}", "--size 64x64 {FRAMES}", "--size 64x64 {RAW}"},
+          {"--jsonl {KEPT}.jsonl --csv {KEPT}.csv {VIDEO}"}};
 }
 
 }  // namespace pxflow::cli

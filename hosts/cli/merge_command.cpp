@@ -8,12 +8,13 @@
 #include "input_file.hpp"
 #include "json_document.hpp"
 #include "output_plan.hpp"
+#include "path_options.hpp"
 
 namespace pxflow::cli {
 namespace {
 
 struct MergeArgs {
-  std::string out;
+  std::string out;  // --json
   std::vector<std::string> files;
 };
 
@@ -44,12 +45,12 @@ int run_merge_command(const MergeArgs& a) {
   const bool to_stdout = a.out == "-";
   OutputPlan plan;
   plan.read_all(a.files);
-  OutputFile& out = plan.file("OUT", a.out);
+  OutputFile& out = plan.file("--json", a.out);
   plan.prepare();
   std::vector<ShardFile> shards;
   for (const std::string& f : a.files) shards.push_back(read_shard(f));
   CheckReport m = merge_shards(shards);
-  m.command = "pxflow merge " + a.out;
+  m.command = "pxflow merge --json " + a.out;
   for (const std::string& f : a.files) m.command += " " + f;
 
   // The campaign named by the command of its lowest shard given.
@@ -72,7 +73,7 @@ int run_merge_command(const MergeArgs& a) {
 
 // What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kMergeExamples = {
-    "merge all.json s1.json s2.json s3.json s4.json  # one verdict from four shards",
+    "merge --json all.json s1.json s2.json s3.json s4.json  # one verdict from four shards",
 };
 
 Command add_merge_command(CLI::App& app) {
@@ -83,12 +84,17 @@ Command add_merge_command(CLI::App& app) {
       "verdict and check file; exit 0 only when every shard is there and passed");
   sub->footer(
       "Exit 0: every shard 1..M given and passed. 1: a shard failed, nothing was checked, or "
-      "shards are missing (verdict 'incomplete'; OUT is written). 2: the files are not the "
+      "shards are missing (verdict 'incomplete'; --json is written). 2: the files are not the "
       "shards of one campaign (another commit, seed, --cases, corpus, backends, --require or "
       "M; a shard twice; a merged file); nothing is written. See docs/harness.md.");
-  sub->add_option("OUT", a->out, "The merged check file to write ('-': stdout)")->required();
-  sub->add_option("FILES", a->files, "The shards' check files, every K of one M once")->required();
-  return {sub, [a] { return run_merge_command(*a); }, kMergeExamples};
+  // The output is named by an option: `merge s1.json s2.json` (the output forgotten) would
+  // otherwise overwrite a shard with an incomplete merge.
+  add_json_option(*sub, a->out, "the merged check file (required)")->required();
+  declare_path(sub->add_option("FILES", a->files, "The shards' check files, every K of one M once")
+                   ->required()
+                   ->type_name("FILE"),
+               PathKind::InputFile);
+  return {sub, [a] { return run_merge_command(*a); }, kMergeExamples, {"{CHECK} {CHECK2}"}};
 }
 
 }  // namespace pxflow::cli

@@ -12,7 +12,9 @@ void ProblemOptions::add_to(CLI::App& app) {
   // gyro_comp is a key of the spec's parameters, but pxflow takes no gyro rates (resolve()).
   for (const auto& k : param_keys())
     keys += (keys.empty() ? "" : ", ") + k + (k == "gyro_comp" ? " (0 only)" : "");
-  app.add_option("--profile", profile, "Parameter profile: " + profiles)->capture_default_str();
+  app.add_option("--profile", profile, "Parameter profile: " + profiles)
+      ->capture_default_str()
+      ->type_name("NAME");
   app.add_option("--set", sets, "Override one parameter, KEY=VALUE (repeatable). Keys: " + keys)
       ->type_name("KEY=VALUE")
       ->allow_extra_args(false);  // one KEY=VALUE each: `--set S=7 video.avi` keeps the file

@@ -19,6 +19,7 @@
 #include "interrupt.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
+#include "path_options.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
@@ -390,12 +391,20 @@ Command add_report_command(CLI::App& app) {
   auto a = std::make_shared<ReportArgs>();
   CLI::App* sub =
       app.add_subcommand("report", "Write report.md, report.html, results.json and results.csv");
-  sub->add_option("--out", a->out_dir, "Folder to write the report into")->required();
-  sub->add_option("--check-json", a->check_json,
-                  "Use this `pxflow check --json` file instead of running the check");
-  sub->add_option("--bench-json", a->bench_files,
-                  "Use this `pxflow bench --json` file instead of running the bench; more than "
-                  "one: the report also compares them with the first (pxflow compare)");
+  declare_path(sub->add_option("--out", a->out_dir, "Folder to write the report into")
+                   ->required()
+                   ->type_name("DIR"),
+               PathKind::OwnedFolder);
+  declare_path(sub->add_option("--check-json", a->check_json,
+                               "Use this `pxflow check --json` file instead of running the check")
+                   ->type_name("FILE"),
+               PathKind::InputFile);
+  declare_path(
+      sub->add_option("--bench-json", a->bench_files,
+                      "Use this `pxflow bench --json` file instead of running the bench; more "
+                      "than one: the report also compares them with the first (pxflow compare)")
+          ->type_name("FILE"),
+      PathKind::InputFile);
   add_backends_option(*sub, a->backends, "of the check, the bench and the family sections");
   add_backend_option(*sub, a->backend, "of the accuracy table and the flow pictures");
   add_threads_option(*sub, a->threads,
@@ -422,7 +431,10 @@ Command add_report_command(CLI::App& app) {
               if (o->count() > 0) a->given.insert(o->get_name());
             return run_report(*a);
           },
-          kReportExamples};
+          kReportExamples,
+          {"--check-json {CHECK} --bench-json {BENCH} --no-accuracy --backends "
+           "ref-original,ref-local"},
+          {"--out {OUT} --backends ref-original,ref-local --quick --no-accuracy"}};
 }
 
 }  // namespace pxflow::cli

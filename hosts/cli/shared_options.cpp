@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "list_option.hpp"
+#include "path_options.hpp"
 #include "progress.hpp"
 #include "sample_data.hpp"
 
@@ -81,11 +82,11 @@ CLI::Option* add_device_option(CLI::App& sub, std::string& device) {
 }
 
 CLI::Option* add_json_option(CLI::App& sub, std::string& path, const std::string& detail) {
-  return add(sub, "--json", path, detail);
+  return declare_path(add(sub, "--json", path, detail), PathKind::OutputFile, ".json");
 }
 
 CLI::Option* add_data_option(CLI::App& sub, std::string& dir, const std::string& detail) {
-  return add(sub, "--data", dir, detail);
+  return declare_path(add(sub, "--data", dir, detail), PathKind::InputFolder);
 }
 
 CLI::Option* add_seed_option(CLI::App& sub, std::uint64_t& seed, const std::string& detail) {

@@ -103,6 +103,10 @@ struct FamilyOption {
   // May be given more than once (the dut family's --dut): `apply` is called for each value, in
   // command-line order.
   bool repeatable = false;
+  std::string value_name = "VALUE";  // what the value is, in --help: "NAME=SPEC", "SECONDS"
+  // The value is a file pxflow reads (--m4-firmware): an input of every command, which no output
+  // may overwrite (hosts/cli/path_options.hpp).
+  bool reads_file = false;
 };
 
 // An environment variable a family reads: every --help and man page lists it (ENVIRONMENT).

@@ -67,6 +67,7 @@ std::string wait_failure_line(const std::string& who, double waited_seconds,
 FamilyOption device_timeout_option() {
   FamilyOption o;
   o.flag = "--device-timeout,--dut-timeout";
+  o.value_name = "SECONDS";
   o.help =
       "Seconds a device (Vulkan, OpenCL, --dut, m4-qemu) may take per 1 M candidate positions "
       "(POIs x (2S+1)^2) before it is called hung; every wait is allowed at least this once "

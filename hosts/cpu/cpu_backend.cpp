@@ -134,7 +134,8 @@ BackendFamily cpu_family() {
   family.options.push_back({"--disable-isa",
                             "Mask CPU ISAs for this run, a comma-separated list of " +
                                 cpu::known_isas() + " (replaces PXFLOW_DISABLE)",
-                            [](const std::string& list) { cpu::set_disabled_isas(list); }});
+                            [](const std::string& list) { cpu::set_disabled_isas(list); }, false,
+                            "LIST"});
   family.check_environment = cpu::check_environment;
   family.environment.push_back(
       {cpu::kDisableEnvironment,

@@ -15,6 +15,7 @@ BackendFamily dut_family() {
   f.name = "dut";
   FamilyOption dut;
   dut.flag = "--dut";
+  dut.value_name = "NAME=SPEC";
   dut.help =
       "A device under test as a backend row NAME, repeatable: NAME=exec:COMMAND [ARG...], "
       "NAME=tcp:HOST:PORT or NAME=serial:/dev/ttyXXX[,BAUD] (docs/dut-protocol.md)";

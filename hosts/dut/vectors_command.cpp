@@ -25,7 +25,9 @@
 #include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
+#include "owned_folder.hpp"
 #include "param_fields.hpp"
+#include "path_options.hpp"
 #include "progress.hpp"
 #include "synthetic.hpp"
 
@@ -191,6 +193,10 @@ int pxv_check_flow(uint32_t pair, uint32_t flow_x_bits, uint32_t flow_y_bits, in
 }
 )";
 
+// The list of the files a vectors folder holds (io/owned_folder.hpp): a folder without it that
+// holds files is refused, so a user's manifest.json is never replaced.
+constexpr const char* kVectorsManifest = ".pxflow-vectors";
+
 // The files of each --format, in the order they are written.
 std::vector<std::string> vector_files(const std::string& format) {
   if (format == "bin") return {"manifest.json", "frames.bin", "records.bin", "flow.bin"};
@@ -205,10 +211,13 @@ int write_vectors(const VectorsArgs& a) {
     plan.read(a.from);
     for (const auto& [prev, next] : list) plan.read_all({prev, next});
   }
-  plan.make_folder("--out", a.out);
+  plan.make_folder("--out", a.out, kVectorsManifest);
   std::map<std::string, OutputFile*> out;
   for (const std::string& name : vector_files(a.format))
     out[name] = &plan.file("--out", (std::filesystem::path(a.out) / name).string());
+  OutputFile& listed =
+      plan.file("--out", (std::filesystem::path(a.out) / kVectorsManifest).string());
+  const std::vector<std::string> previous = manifest_names(a.out, kVectorsManifest);
   plan.prepare();
   const Vectors v = make_vectors(a, list);
   std::string frames, flow;
@@ -250,6 +259,11 @@ int write_vectors(const VectorsArgs& a) {
                                    c_array("pxv_flow", flow));
     out["pxflow_vectors_check.c"]->write(kCChecker);
   }
+  // The other format's files of an earlier run go: the folder holds one set of vectors.
+  listed.write(manifest_text(vector_files(a.format)));
+  std::vector<std::string> may_write = vector_files("bin");
+  for (const std::string& name : vector_files("c")) may_write.push_back(name);
+  remove_unwritten(a.out, previous, may_write, vector_files(a.format));
   std::printf("wrote %s (%dx%d, %s) to %s\n", counted(v.pairs.size(), "pair").c_str(), v.p.width,
               v.p.height, source_text(a).c_str(), a.out.c_str());
   return 0;
@@ -325,23 +339,37 @@ Command add_vectors_command(CLI::App& app) {
       "vectors",
       "Write test vectors (inputs, parameters, expected records and flow bits) for "
       "on-target tests; `vectors verify DIR RECORDS` checks records made elsewhere");
-  sub->add_option("--out", a->out, "Folder to write the vectors into (created if missing)");
+  declare_path(sub->add_option("--out", a->out,
+                               "Folder to write the vectors into (created if missing; a folder "
+                               "that holds other files than an earlier run's vectors is refused)")
+                   ->type_name("DIR"),
+               PathKind::OwnedFolder);
   a->problem.add_to(*sub);
   CLI::Option* cases =
       sub->add_option("--cases", a->cases, "Random pairs (seeded)")->check(CLI::Range(1, 100000));
   CLI::Option* seed = add_seed_option(*sub, a->seed, "of the first pair; pair i has seed + i");
-  sub->add_option("--from", a->from,
-                  "Vectors of these pairs instead of random ones: a list file, one 'PREV NEXT' per "
-                  "line (paths relative to the list), every frame one size");
-  sub->add_option("--size", a->size, "Frame size of raw frames in the --from list, WxH");
+  declare_path(
+      sub->add_option("--from", a->from,
+                      "Vectors of these pairs instead of random ones: a list file, one 'PREV "
+                      "NEXT' per line (paths relative to the list), every frame one size")
+          ->type_name("FILE"),
+      PathKind::InputFile);
+  sub->add_option("--size", a->size, "Frame size of raw frames in the --from list, WxH")
+      ->type_name("WxH");
   add_progress_flag(*sub);
   sub->add_option("--format", a->format, "bin (files + manifest.json) or c (C arrays + checker)")
+      ->type_name("bin|c")
       ->check(CLI::IsMember({"bin", "c"}));
   CLI::App* verify = sub->add_subcommand("verify",
                                          "Compare RECORDS (a file of 32-byte records, "
                                          "all pairs in order) with the vectors in DIR");
-  verify->add_option("DIR", a->verify_dir, "The vectors' folder")->required();
-  verify->add_option("RECORDS", a->verify_records, "The records to check")->required();
+  declare_path(
+      verify->add_option("DIR", a->verify_dir, "The vectors' folder")->required()->type_name("DIR"),
+      PathKind::InputFolder);
+  declare_path(verify->add_option("RECORDS", a->verify_records, "The records to check")
+                   ->required()
+                   ->type_name("FILE"),
+               PathKind::InputFile);
   return {sub,
           [a, verify, cases, seed] {
             a->random_options_given = cases->count() + seed->count() > 0;
@@ -352,7 +380,8 @@ Command add_vectors_command(CLI::App& app) {
                   "pxflow vectors --help)");
             return write_vectors(*a);
           },
-          kVectorsExamples};
+          kVectorsExamples,
+          {"--cases 1", "--from {PAIRS}", "verify {VECTORS} {RECORDS}"}};
 }
 
 }  // namespace

@@ -1,7 +1,5 @@
 #include "gap8_flow_runner.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -26,25 +24,12 @@ std::uint32_t align_up(std::uint64_t v) {
   return static_cast<std::uint32_t>((v + kAlign - 1) & ~std::uint64_t{kAlign - 1});
 }
 
-// libelf reads files: the embedded bytes go through a private temporary file, removed at once.
+// The kernel ELF is embedded in pxflow and loaded from memory: no file is written or read.
 gap8::ElfImage load_embedded(std::span<const std::uint8_t> elf, gap8::Memory& memory) {
-  const char* dir = std::getenv("TMPDIR");
-  std::string path = std::string(dir && *dir ? dir : "/tmp") + "/pxflow-gap8-XXXXXX";
-  const int fd = mkstemp(path.data());
-  if (fd < 0) throw BackendError("gap8: cannot create a temporary file for the kernel ELF");
-  const bool written = write(fd, elf.data(), elf.size()) == static_cast<ssize_t>(elf.size());
-  close(fd);
   try {
-    if (!written) throw BackendError("gap8: cannot write the kernel ELF to " + path);
-    gap8::ElfImage image = gap8::LoadElf(path, memory);
-    unlink(path.c_str());
-    return image;
+    return gap8::LoadElfBytes("the embedded kernel ELF", elf, memory);
   } catch (const gap8::ElfError& e) {
-    unlink(path.c_str());
     throw BackendError(std::string("gap8: ") + e.what());
-  } catch (...) {
-    unlink(path.c_str());
-    throw;
   }
 }
 

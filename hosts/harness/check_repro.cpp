@@ -4,6 +4,7 @@
 
 #include "grid.hpp"
 #include "interrupt.hpp"
+#include "output_plan.hpp"
 #include "param_fields.hpp"
 #include "registry.hpp"
 #include "shell_word.hpp"
@@ -68,23 +69,26 @@ std::vector<std::string> MismatchExplainer::write_reproducer(const CaseLabel& la
                                                              const Reproducer& r) {
   if (run_dir_.empty()) {
     // One folder per run, never one that exists: pxflow-repro-1, -2, ... whichever is free.
-    for (int n = 1; run_dir_.empty(); ++n) {
-      const std::string name = "pxflow-repro-" + std::to_string(n);
-      std::error_code ec;
-      if (fs::create_directory(fs::path(o_.dir) / name, ec))
-        run_dir_ = name;
-      else if (ec || n > 9999)
-        return {label.prefix() + " no reproducer: cannot create " +
-                (fs::path(o_.dir) / name).string() + ": " +
-                (ec ? ec.message() : "every name up to pxflow-repro-9999 is taken")};
+    try {
+      for (int n = 1; run_dir_.empty(); ++n) {
+        const std::string name = "pxflow-repro-" + std::to_string(n);
+        if (o_.make_folder(name))
+          run_dir_ = name;
+        else if (n > 9999)
+          return {label.prefix() + " no reproducer: every name up to pxflow-repro-9999 is taken"};
+      }
+    } catch (const OutputError& e) {
+      return {label.prefix() + " no reproducer: " + e.what()};
     }
   }
   const fs::path relative = fs::path(run_dir_) / folder_name(label.who);
   const fs::path folder = fs::path(o_.dir) / relative;
-  std::error_code ec;
-  if (!fs::create_directory(folder, ec))
-    return {label.prefix() + " no reproducer: cannot create " + folder.string() + ": " +
-            (ec ? ec.message() : "it exists")};
+  try {
+    if (!o_.make_folder(relative.string()))
+      return {label.prefix() + " no reproducer: " + folder.string() + " exists"};
+  } catch (const OutputError& e) {
+    return {label.prefix() + " no reproducer: " + e.what()};
+  }
   const std::string mine = flow_command(o_.program, label.who, r.params, folder.string());
   const std::string theirs = flow_command(o_.program, kReferenceBackend, r.params, folder.string());
   const std::string size = std::to_string(r.params.width) + "x" + std::to_string(r.params.height);

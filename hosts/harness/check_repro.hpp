@@ -21,6 +21,9 @@ struct ReproOptions {
   // Writes a whole file at `path`, relative to `dir`, through the command's output plan. Empty:
   // no reproducers (pxflow check --no-repro, or a library caller that wants none).
   std::function<void(const std::string& path, std::string_view bytes)> write;
+  // Makes the folder `path`, relative to `dir`, through the same plan: false when it exists;
+  // throws OutputError when it cannot be made.
+  std::function<bool(const std::string& path)> make_folder;
   std::string dir = ".";  // an existing folder; each run makes its own pxflow-repro-N in it
   std::string program = "pxflow";  // the printed commands' start, with the run's global options
   ShrinkLimits limits;             // per backend

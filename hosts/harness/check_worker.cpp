@@ -15,6 +15,7 @@
 #include "guarded_run.hpp"
 #include "interrupt.hpp"
 #include "registry.hpp"
+#include "system_files.hpp"
 
 namespace pxflow::worker {
 namespace {
@@ -95,7 +96,7 @@ int serve(const std::string& row, const BackendOptions& options) {
   // never into a reply.
   const int in = fcntl(0, F_DUPFD_CLOEXEC, 3), out = fcntl(1, F_DUPFD_CLOEXEC, 3);
   dup2(2, 1);
-  const int null = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  const int null = open_null_device(false);
   if (null >= 0) dup2(null, 0), ::close(null);
   install_fault_reporter(out);
   std::unique_ptr<Backend> backend;

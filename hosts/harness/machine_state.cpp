@@ -2,18 +2,19 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <thread>
+
+#include "system_files.hpp"
 
 namespace pxflow {
 
 MachineState read_machine_state() {
   MachineState s;
   s.cpus = static_cast<int>(std::thread::hardware_concurrency());
-  if (std::ifstream in("/proc/loadavg"); in) in >> s.load_1min;
-  std::ifstream info("/proc/cpuinfo");
+  std::istringstream(read_system_file("/proc/loadavg")) >> s.load_1min;
+  std::istringstream info(read_system_file("/proc/cpuinfo"));
   double sum = 0;
   int n = 0;
   for (std::string line; std::getline(info, line);)
@@ -28,7 +29,7 @@ MachineState read_machine_state() {
 
 CpuTimes read_cpu_times() {
   CpuTimes t;
-  std::ifstream stat("/proc/stat");
+  std::istringstream stat(read_system_file("/proc/stat"));
   std::string cpu;
   std::uint64_t v[8] = {};  // user nice system idle iowait irq softirq steal
   if (!(stat >> cpu) || cpu != "cpu") return t;
@@ -38,7 +39,7 @@ CpuTimes read_cpu_times() {
   t.idle = v[3] + v[4];
   t.steal = v[7];
   // /proc/self/stat: fields 14 and 15 (utime, stime) follow the command name in parentheses.
-  std::ifstream self("/proc/self/stat");
+  std::istringstream self(read_system_file("/proc/self/stat"));
   std::string line;
   std::getline(self, line);
   const auto close = line.rfind(')');

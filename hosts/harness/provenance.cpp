@@ -5,18 +5,19 @@
 
 #include <chrono>
 #include <ctime>
-#include <fstream>
+#include <sstream>
 #include <string_view>
 #include <thread>
 
 #include "pxflow_version.h"
+#include "system_files.hpp"
 
 namespace pxflow {
 namespace {
 
 // The value of the first line of `path` that starts with `key` ("key : value", "KEY=value").
 std::string first_value_of(const std::string& path, const std::string& key) {
-  std::ifstream in(path);
+  std::istringstream in(read_system_file(path));
   for (std::string line; std::getline(in, line);)
     if (line.rfind(key, 0) == 0) {
       auto v = line.substr(line.find_first_of(":=") + 1);

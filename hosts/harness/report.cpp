@@ -1,17 +1,18 @@
 #include "report.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <iterator>
 #include <sstream>
 
 #include "errors.hpp"
 #include "json_document.hpp"
+#include "owned_folder.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
 #include "report_csv.hpp"
 #include "report_sections.hpp"
 #include "svg_chart.hpp"
+#include "system_files.hpp"
 
 namespace pxflow {
 namespace {
@@ -35,11 +36,6 @@ std::string base64(const std::string& bytes) {
     out += {k[v >> 18], k[(v >> 12) & 63], i + 1 < bytes.size() ? k[(v >> 6) & 63] : '=', '='};
   }
   return out;
-}
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 // A table cell: a '|' would end it, so it is escaped.
@@ -147,8 +143,9 @@ std::string render_html(const std::vector<Section>& secs, const std::filesystem:
     for (const auto& c : s.charts) o << "<div>" << svg_chart(c) << "</div>";
     for (const auto& p : s.pictures)  // inlined, so the page stays one self-contained file
       o << "<figure><img alt='" << html_escape(p.caption)
-        << "' style='max-width:100%' src='data:image/png;base64," << base64(slurp(dir / p.file))
-        << "'><figcaption>" << html_escape(p.caption) << "</figcaption></figure>";
+        << "' style='max-width:100%' src='data:image/png;base64,"
+        << base64(read_own_output((dir / p.file).string())) << "'><figcaption>"
+        << html_escape(p.caption) << "</figcaption></figure>";
     if (!s.rows.empty()) o << html_table(s);
   }
   if (first_screen) o << "</div>";
@@ -172,14 +169,6 @@ const std::vector<std::string>& report_file_names() {
   return names;
 }
 
-bool is_report_folder(const std::filesystem::path& dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(dir, ec)) return true;
-  if (fs::is_regular_file(dir / kManifest, ec)) return true;
-  return fs::is_directory(dir, ec) && fs::is_empty(dir, ec);
-}
-
 }  // namespace
 
 std::size_t registry_rank(const std::string& backend) {
@@ -192,11 +181,7 @@ std::size_t registry_rank(const std::string& backend) {
 ReportOutputs plan_report(OutputPlan& plan, const std::string& out_dir,
                           const std::vector<std::string>& pictures) {
   namespace fs = std::filesystem;
-  if (!out_dir.empty() && !is_report_folder(out_dir))
-    throw InputError("--out " + out_dir + ": holds files and no previous pxflow report (" +
-                     kManifest +
-                     "); give a new or empty folder, so that no file of yours is replaced");
-  plan.make_folder("--out", out_dir);
+  plan.make_folder("--out", out_dir, kManifest);
   ReportOutputs out;
   out.dir = out_dir;
   for (const std::string& name : report_file_names())
@@ -204,28 +189,9 @@ ReportOutputs plan_report(OutputPlan& plan, const std::string& out_dir,
   out.files[kManifest] = &plan.file("--out", (fs::path(out_dir) / kManifest).string());
   for (const std::string& name : pictures)
     out.pictures[name] = &plan.file("--out", (fs::path(out_dir) / name).string());
-  std::ifstream manifest(fs::path(out_dir) / kManifest);
-  out.previous_manifest.assign(std::istreambuf_iterator<char>(manifest), {});
+  out.previous = manifest_names(out_dir, kManifest);
   return out;
 }
-
-namespace {
-
-// The files the previous report listed, that this one can write but did not this time (a picture
-// of a run with --no-accuracy): only names in `out`, never anything else a manifest names.
-void remove_stale_files(const ReportOutputs& out, const std::vector<std::string>& written) {
-  namespace fs = std::filesystem;
-  std::istringstream manifest(out.previous_manifest);
-  for (std::string name; std::getline(manifest, name);) {
-    const bool ours = out.files.contains(name) || out.pictures.contains(name);
-    if (!ours || std::find(written.begin(), written.end(), name) != written.end()) continue;
-    std::error_code ec;
-    const fs::path f = fs::path(out.dir) / name;
-    if (fs::is_regular_file(fs::symlink_status(f, ec))) fs::remove(f, ec);
-  }
-}
-
-}  // namespace
 
 void write_report(ReportOutputs& out, const ReportInputs& in) {
   const Json build = build_provenance();
@@ -286,10 +252,11 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
   out.files["accuracy.csv"]->write(accuracy_csv(in.accuracy_rows));
   std::vector<std::string> written = report_file_names();
   for (const auto& p : in.pictures) written.push_back(p.file);
-  std::string manifest;
-  for (const auto& name : written) manifest += name + "\n";
-  out.files[kManifest]->write(manifest);
-  remove_stale_files(out, written);
+  out.files[kManifest]->write(manifest_text(written));
+  std::vector<std::string> may_write;
+  for (const auto& [name, file] : out.files) may_write.push_back(name);
+  for (const auto& [name, file] : out.pictures) may_write.push_back(name);
+  remove_unwritten(out.dir, out.previous, may_write, written);
 }
 
 }  // namespace pxflow

@@ -56,7 +56,7 @@ struct ReportOutputs {
   std::string dir;
   std::map<std::string, OutputFile*> files;     // by file name: report_file_names() and more
   std::map<std::string, OutputFile*> pictures;  // by file name, written by the caller
-  std::string previous_manifest;                // of the report the folder holds, if any
+  std::vector<std::string> previous;            // the files the folder's earlier report listed
 };
 
 // Plans the report's folder `out_dir` in `plan`: it must be missing (it is created), empty, or

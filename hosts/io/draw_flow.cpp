@@ -47,6 +47,10 @@ Layout layout(const Params& p, std::span<const PoiRecord> records) {
 
 void check_png_name(const std::string& option, const std::string& path) {
   if (path.empty()) throw InputError(option + " needs a file name (got an empty one)");
+  // Standard output, a device or a pipe has no name to keep (--draw - | display, /dev/null).
+  std::error_code ec;
+  const auto st = std::filesystem::status(path, ec);
+  if (path == "-" || std::filesystem::is_character_file(st) || std::filesystem::is_fifo(st)) return;
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char ch) { return std::tolower(ch); });

@@ -10,7 +10,8 @@
 
 namespace pxflow {
 
-// Throws InputError unless `path` ends in .png: checked before any work.
+// Throws InputError unless `path` ends in .png (standard output, a device or a pipe aside):
+// checked before any work.
 void check_png_name(const std::string& option, const std::string& path);
 
 struct DrawCaption {

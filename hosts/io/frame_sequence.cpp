@@ -13,6 +13,7 @@
 
 #include "counted.hpp"
 #include "errors.hpp"
+#include "file_inputs.hpp"
 #include "input_file.hpp"
 #include "video_file.hpp"
 
@@ -156,10 +157,15 @@ std::unique_ptr<FrameSequence> open_frame_sequence(const std::string& source,
   }
   std::error_code ec;
   const auto st = fs::status(source, ec);
-  if (fs::is_directory(st))
+  if (fs::is_directory(st)) {
+    note_input_folder("SOURCE", source);  // a file written inside would be read as a frame
     return std::make_unique<FileFrames>(folder_frames(source, raw_size.has_value()), raw_size);
-  if (!fs::exists(st) && source.find_first_of("*?[") != std::string::npos)
-    return std::make_unique<FileFrames>(glob_frames(source), raw_size);
+  }
+  if (!fs::exists(st) && source.find_first_of("*?[") != std::string::npos) {
+    std::vector<std::string> files = glob_frames(source);
+    for (const std::string& f : files) note_input(f);
+    return std::make_unique<FileFrames>(std::move(files), raw_size);
+  }
   require_readable_input(source, source);
   if (raw_size) return std::make_unique<RawFrames>(source, *raw_size);
   if (is_image_name(source))

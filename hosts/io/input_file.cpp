@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "errors.hpp"
+#include "file_inputs.hpp"
 
 namespace pxflow {
 namespace fs = std::filesystem;
@@ -50,6 +51,7 @@ bool is_stream(const std::string& path) {
 }
 
 void require_readable_input(const std::string& label, const std::string& path) {
+  note_input(path);  // before any refusal: a path named as an input is never written
   require_existing(label, path);
   std::error_code ec;
   const auto st = fs::status(path, ec);

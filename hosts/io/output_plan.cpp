@@ -11,6 +11,8 @@
 #include <iostream>
 
 #include "errors.hpp"
+#include "file_inputs.hpp"
+#include "owned_folder.hpp"
 
 namespace pxflow {
 namespace {
@@ -192,18 +194,37 @@ void OutputFolder::write(const std::string& name, std::string_view bytes) {
   if (plan_ == nullptr) throw std::logic_error(option_ + " " + path + ": folder not prepared");
   plan_->check_not_an_input(option_, path);
   write_whole(option_ + " " + path, path, bytes);
+  written_.push_back(name);
 }
 
-void OutputPlan::read(const std::string& path) {
-  if (path != kStdoutPath && !path.empty()) inputs_.push_back(path);
+bool OutputFolder::make_subfolder(const std::string& name) {
+  const fs::path path = fs::path(dir_) / name;
+  if (plan_ == nullptr) throw std::logic_error(option_ + " " + path.string() + ": not prepared");
+  plan_->check_not_an_input(option_, path.string());
+  std::error_code ec;
+  if (fs::create_directory(path, ec)) return true;
+  if (ec) throw OutputError(option_ + ": cannot create " + path.string() + ": " + ec.message());
+  return false;
 }
+
+void OutputFolder::remove_earlier() {
+  if (plan_ == nullptr) return;
+  std::vector<std::string> earlier;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir_, ec))
+    if (matches(entry.path().filename().string(), pattern_))
+      earlier.push_back(entry.path().filename().string());
+  remove_unwritten(dir_, earlier, earlier, written_);
+}
+
+void OutputPlan::read(const std::string& path) { note_input(path); }
 
 void OutputPlan::read_all(const std::vector<std::string>& paths) {
   for (const std::string& p : paths) read(p);
 }
 
 void OutputPlan::read_folder(const std::string& option, const std::string& dir) {
-  input_folders_.push_back({option, dir});
+  note_input_folder(option, dir);
 }
 
 OutputFile& OutputPlan::file(const std::string& option, const std::string& path) {
@@ -222,13 +243,14 @@ OutputFolder& OutputPlan::folder(const std::string& option, const std::string& d
   return folders_.emplace_back(option, dir, pattern);
 }
 
-void OutputPlan::make_folder(const std::string& option, const std::string& dir) {
+void OutputPlan::make_folder(const std::string& option, const std::string& dir,
+                             const std::string& manifest) {
   if (prepared_) throw std::logic_error(option + ": output added after the plan was prepared");
-  made_folders_.push_back({option, dir});
+  made_folders_.push_back({option, dir, manifest});
 }
 
 void OutputPlan::check_not_an_input(const std::string& option, const std::string& path) const {
-  for (const std::string& in : inputs_)
+  for (const std::string& in : inputs_noted())
     if (same_file(path, in))
       throw InputError(option + " " + path + ": is an input (" + in +
                        "); pxflow never overwrites an input, choose another name");
@@ -256,7 +278,7 @@ void OutputPlan::check_output(const std::string& option, const std::string& path
 void OutputPlan::check_not_in_input_folder(const std::string& option,
                                            const std::string& path) const {
   const fs::path where = resolved(path);
-  for (const auto& [in_option, folder] : input_folders_) {
+  for (const auto& [in_option, folder] : input_folders_noted()) {
     const fs::path f = resolved(folder);
     if (where == f || inside(where, f))
       throw InputError(option + " " + path + ": is inside " + folder + ", the folder " + in_option +
@@ -268,8 +290,9 @@ void OutputPlan::prepare() {
   if (prepared_) throw std::logic_error("output plan prepared twice");
   std::vector<fs::path> created;  // removed again (when still empty) if the plan is refused
   try {
-    for (const auto& [option, dir] : made_folders_) {
+    for (const auto& [option, dir, manifest] : made_folders_) {
       if (dir.empty()) throw InputError(option + " needs a folder name (got an empty one)");
+      check_owned_folder(option, dir, manifest);
       std::error_code ec;
       if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         throw InputError(option + " " + dir + ": is a file, not a folder");
@@ -304,7 +327,7 @@ void OutputPlan::check_and_open() {
   for (const Claim& c : claims) check_output(c.option, c.path, false);
   for (const OutputFolder& f : folders_) {
     check_output(f.option_, f.dir_, true);
-    for (const std::string& in : inputs_)
+    for (const std::string& in : inputs_noted())
       if (resolved(in).parent_path() == resolved(f.dir_) &&
           matches(fs::path(in).filename().string(), f.pattern_))
         throw InputError(f.option_ + " " + f.dir_ + ": holds the input " + in + ", which a " +

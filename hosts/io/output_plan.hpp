@@ -84,13 +84,22 @@ class OutputFolder {
   const std::string& dir() const { return dir_; }
   // Writes `name` (a plain file name) in the folder; refuses an input.
   void write(const std::string& name, std::string_view bytes);
+  // Removes the files of the pattern that this run did not write (an earlier, longer run's
+  // pair-000004.png): the folder's pictures are one run's. Called when the run ends or stops.
+  void remove_earlier();
+  // Makes the folder `name` (a relative path) inside: false when it exists; OutputError when it
+  // cannot be made (check's pxflow-repro-N).
+  bool make_subfolder(const std::string& name);
 
  private:
   friend class OutputPlan;
   std::string option_, dir_, pattern_;  // pattern: e.g. "pair-NNNNNN.png", for messages
+  std::vector<std::string> written_;
   const class OutputPlan* plan_ = nullptr;
 };
 
+// Inputs are the process's (io/file_inputs.hpp): every file read through hosts/io and every input
+// option of the command's table, whichever plan is asking; read() and read_folder() add to them.
 class OutputPlan {
  public:
   void read(const std::string& path);  // a file the command reads ("-" ignored)
@@ -100,9 +109,10 @@ class OutputPlan {
   OutputStream& stream(const std::string& option, const std::string& path);
   OutputFolder& folder(const std::string& option, const std::string& dir,
                        const std::string& pattern);
-  // A folder the plan's files go into, created by prepare() when missing (report --out, vectors
-  // --out); it is removed again if prepare() refuses and it was created empty.
-  void make_folder(const std::string& option, const std::string& dir);
+  // A folder the plan's files go into, owned by pxflow (report --out, vectors --out; the rule of
+  // io/owned_folder.hpp, with `manifest` the file name of its list of files): prepare() refuses
+  // a folder of other files and creates a missing one, removed again if prepare() refuses.
+  void make_folder(const std::string& option, const std::string& dir, const std::string& manifest);
   // Checks the plan as described at the top and opens every temporary; throws InputError.
   void prepare();
   // Throws InputError when `path` is one of the inputs (for outputs named during the run).
@@ -112,12 +122,13 @@ class OutputPlan {
   void check_output(const std::string& option, const std::string& path, bool is_folder) const;
   void check_not_in_input_folder(const std::string& option, const std::string& path) const;
   void check_and_open();
-  std::vector<std::string> inputs_;
-  std::vector<std::pair<std::string, std::string>> input_folders_;  // option, folder
   std::deque<OutputFile> files_;
   std::deque<OutputStream> streams_;
   std::deque<OutputFolder> folders_;
-  std::vector<std::pair<std::string, std::string>> made_folders_;  // option, folder
+  struct MadeFolder {
+    std::string option, dir, manifest;
+  };
+  std::vector<MadeFolder> made_folders_;
   bool prepared_ = false;
 };
 

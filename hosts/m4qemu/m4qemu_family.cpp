@@ -144,6 +144,8 @@ BackendFamily m4qemu_family() {
   f.rows.push_back(m4qemu::m4_qemu_row());
   FamilyOption firmware;
   firmware.flag = "--m4-firmware";
+  firmware.value_name = "ELF";
+  firmware.reads_file = true;
   firmware.help =
       "The firmware ELF the m4-qemu row runs under QEMU (default: the one built or installed with "
       "this pxflow)";
@@ -154,6 +156,7 @@ BackendFamily m4qemu_family() {
   };
   FamilyOption link;
   link.flag = "--m4-link";
+  link.value_name = "semihosting|uart";
   link.help =
       "The link to the m4-qemu firmware: semihosting (default; QEMU's stdin/stdout, fast) or uart "
       "(the board's UART as QEMU models it, about 20 KB/s); docs/cortex-m4.md";

@@ -113,7 +113,7 @@ TEST_CASE("a folder where a file belongs is a directory, whatever the option", "
   REQUIRE(::mkdir(dir.c_str(), 0755) == 0);
   require_bad_input({"flow", "--size", "32x32", f.a, dir}, dir + ": is a directory");
   require_bad_input({"flow", "--pairs", dir}, "--pairs " + dir + ": is a directory");
-  require_bad_input({"merge", f.dir.path("m.json"), dir}, dir + ": is a directory");
+  require_bad_input({"merge", "--json", f.dir.path("m.json"), dir}, dir + ": is a directory");
   require_bad_input({"report", "--out", f.dir.path("r"), "--check-json", dir, "--no-accuracy"},
                     "--check-json " + dir + ": is a directory");
   require_bad_input({"report", "--out", f.dir.path("r"), "--bench-json", dir, "--no-accuracy"},

@@ -53,7 +53,7 @@ std::pair<json, json> whole_and_merged(const TempDir& dir, std::vector<std::stri
   const RunResult whole = pxflow_run(with({"--json", dir.path("whole.json")}));
   INFO(whole.out << whole.err);
   REQUIRE(whole.exit_code == expected_exit);
-  std::vector<std::string> merge = {"merge", dir.path("merged.json")};
+  std::vector<std::string> merge = {"merge", "--json", dir.path("merged.json")};
   for (int k = m; k >= 1; --k) {
     const std::string file = dir.path(numbered_json("shard", k));
     const RunResult r =
@@ -145,7 +145,7 @@ TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the camp
   TempDir dir;
   // The generated corpus is 4 cases per setting, then 20 limit cases: of 7 shards of these 36
   // cases, shard 3/7 holds cases 10..14, the 320x240 and 640x480 ones, n/a for test-small-only.
-  std::vector<std::string> merge = {"merge", dir.path("m.json")};
+  std::vector<std::string> merge = {"merge", "--json", dir.path("m.json")};
   for (int k = 1; k <= 7; ++k) {
     const std::string file = dir.path(numbered_json("s", k));
     const RunResult r = pxflow_run({"check", "--backend", "test-small-only", "--generated-only",
@@ -162,7 +162,7 @@ TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the camp
   CHECK(m.exit_code == 0);
   CHECK(read(dir.path("m.json"))["passed"] == 25);
   // A campaign in which no shard compared anything tested nothing: merge exits 1.
-  std::vector<std::string> skipped = {"merge", "-"};
+  std::vector<std::string> skipped = {"merge", "--json", "-"};
   for (int k = 1; k <= 2; ++k) {
     const std::string file = dir.path(numbered_json("u", k));
     CHECK(pxflow_run({"check", "--backend", "test-unavailable", "--generated-only", "--shard",
@@ -203,7 +203,7 @@ TEST_CASE("merge: mismatched, repeated or merged files are refused with one line
 
   const std::string out = dir.path("out.json");
   auto refused = [&](std::vector<std::string> files, const std::string& says) {
-    files.insert(files.begin(), {"merge", out});
+    files.insert(files.begin(), {"merge", "--json", out});
     const RunResult r = pxflow_run(files);
     INFO(r.out << r.err);
     CHECK(r.exit_code == 2);
@@ -223,11 +223,12 @@ TEST_CASE("merge: mismatched, repeated or merged files are refused with one line
   refused({dir.path("nope.json")}, "nope.json: no such file");
 
   // A merged file is no shard; OUT may not be one of the inputs.
-  REQUIRE(pxflow_run({"merge", dir.path("m.json"), dir.path("a1.json"), dir.path("a2.json")})
-              .exit_code == 0);
+  REQUIRE(
+      pxflow_run({"merge", "--json", dir.path("m.json"), dir.path("a1.json"), dir.path("a2.json")})
+          .exit_code == 0);
   refused({dir.path("m.json")}, "a merged file");
-  const RunResult self =
-      pxflow_run({"merge", dir.path("a1.json"), dir.path("a1.json"), dir.path("a2.json")});
+  const RunResult self = pxflow_run(
+      {"merge", "--json", dir.path("a1.json"), dir.path("a1.json"), dir.path("a2.json")});
   CHECK(self.exit_code == 2);
   CHECK(self.err.find("is an input") != std::string::npos);
 }
@@ -241,7 +242,8 @@ TEST_CASE("merge: shards missing make an incomplete verdict, exit 1, and - write
                     std::string(k) + "/3", "--json", dir.path(std::string("s") + k + ".json")});
     REQUIRE(r.exit_code == 0);
   }
-  const RunResult r = pxflow_run({"merge", "-", dir.path("s3.json"), dir.path("s1.json")});
+  const RunResult r =
+      pxflow_run({"merge", "--json", "-", dir.path("s3.json"), dir.path("s1.json")});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 1);
   const json m = json::parse(r.out);  // stdout is the JSON alone; the summary went to stderr
@@ -259,8 +261,9 @@ TEST_CASE("merge: the merged file is a check file pxflow report accepts", "[shar
         pxflow_run({"check", "--backends", "ref-original,ref-local", "--generated-only", "--shard",
                     std::string(k) + "/2", "--json", dir.path(std::string("s") + k + ".json")})
             .exit_code == 0);
-  REQUIRE(pxflow_run({"merge", dir.path("m.json"), dir.path("s1.json"), dir.path("s2.json")})
-              .exit_code == 0);
+  REQUIRE(
+      pxflow_run({"merge", "--json", dir.path("m.json"), dir.path("s1.json"), dir.path("s2.json")})
+          .exit_code == 0);
   REQUIRE(pxflow_run({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
                       "--json", dir.path("b.json")})
               .exit_code == 0);
@@ -303,7 +306,7 @@ TEST_CASE("report: a check's failure lines and an incomplete merge, named, and n
   REQUIRE(pxflow_run({"check", "--backends", "ref-original,ref-local", "--generated-only",
                       "--shard", "1/2", "--json", dir.path("s1.json")})
               .exit_code == 0);
-  REQUIRE(pxflow_run({"merge", dir.path("m.json"), dir.path("s1.json")}).exit_code == 1);
+  REQUIRE(pxflow_run({"merge", "--json", dir.path("m.json"), dir.path("s1.json")}).exit_code == 1);
   CHECK(
       report("m.json", "rm").find("Incomplete: shard 2/2 not given: its cases were not checked") !=
       std::string::npos);

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <map>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -22,5 +23,8 @@ class ElfError : public std::runtime_error {
 };
 
 ElfImage LoadElf(const std::string& path, Memory& memory);
+
+// The same from bytes in memory (an ELF embedded in a program); `name` names it in errors.
+ElfImage LoadElfBytes(const std::string& name, std::span<const uint8_t> bytes, Memory& memory);
 
 }  // namespace gap8

@@ -13,6 +13,7 @@
 #include "gap8_study.hpp"
 #include "json_document.hpp"
 #include "output_plan.hpp"
+#include "path_options.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -129,18 +130,26 @@ Command add_gap8_command(CLI::App& app) {
       "gap8", "The GAP8 kernel on the cluster model beside the ISCAS 2022 paper's tables");
   o->problem.add_to(*sub);
   sub->add_option("--variant", o->variant, gap8_variant_names() + ", or all (the paper's three)")
-      ->capture_default_str();
-  sub->add_option("--cores", o->cores, "Core counts, e.g. 1,8 or 1-8")->capture_default_str();
+      ->capture_default_str()
+      ->type_name("NAME|all");
+  sub->add_option("--cores", o->cores, "Core counts, e.g. 1,8 or 1-8")
+      ->capture_default_str()
+      ->type_name("LIST");
   sub->add_option("--mhz", o->mhz, "Cluster clock for fps and latency")->capture_default_str();
   add_json_option(*sub, o->json_path, "the figures; with '-' instead of the tables");
   sub->add_flag("--no-contention", o->no_contention, "Do not model TCDM bank conflicts");
   sub->add_flag("--chunked", o->chunked, "Split POIs in contiguous chunks, not round robin");
   sub->add_option("--crop", o->crop,
-                  "Use the window WxH+X+Y of PREV and NEXT (e.g. 64x64+100+40), before --bin");
+                  "Use the window WxH+X+Y of PREV and NEXT (e.g. 64x64+100+40), before --bin")
+      ->type_name("WxH+X+Y");
   sub->add_option("--bin", o->bin, "Average N x N pixels of PREV and NEXT into one (after --crop)")
       ->check(CLI::Range(1, 64));
-  sub->add_option("frames", o->frames, "PREV NEXT (default: a real pair, all 64 POIs accepted)");
-  return {sub, [o] { return run_gap8(*o); }, kGap8Examples};
+  declare_path(
+      sub->add_option("frames", o->frames, "PREV NEXT (default: a real pair, all 64 POIs accepted)")
+          ->type_name("PREV NEXT"),
+      PathKind::InputFile);
+  return {
+      sub, [o] { return run_gap8(*o); }, kGap8Examples, {"--variant fast --cores 1 {PREV} {NEXT}"}};
 }
 
 }  // namespace pxflow::cli
