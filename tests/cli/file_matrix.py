@@ -768,9 +768,13 @@ def main():
     ap.add_argument("--part", choices=["declarations", "outputs", "signals", "all"],
                     default="all")
     ap.add_argument("--commands", default="", help="comma-separated commands (default: all)")
+    ap.add_argument("--listing-from", default="",
+                    help="take the option table from this pxflow and run the cases on PXFLOW "
+                         "(an older build, to show which cases it fails)")
     a = ap.parse_args()
     pxflow = os.path.abspath(a.pxflow)
-    listing = json.loads(run([pxflow, "--list-options"]).stdout)
+    listing = json.loads(run([os.path.abspath(a.listing_from or a.pxflow),
+                              "--list-options"]).stdout)
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="pxflow-matrix-") as root:
         fixtures_dir = os.path.join(root, "fixtures")

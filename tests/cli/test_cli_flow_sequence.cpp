@@ -136,19 +136,25 @@ TEST_CASE("CSV rows, text lines, files and the sequence errors", "[cli][sequence
   TempDir dir;
   std::string size;
   extract_frames(kData + "/tree.avi", 3, dir, size);
-  const auto text = run_pxflow({"flow", "--size", size, "--csv", dir.path("out.csv"), "--jsonl",
-                                dir.path("out.jsonl"), dir.path("")});
+  // Outputs inside the folder read are refused (the next run would read them as frames).
+  const auto inside =
+      run_pxflow({"flow", "--size", size, "--csv", dir.path("out.csv"), dir.path("")});
+  CHECK(inside.exit_code == 2);
+  CHECK(inside.err.find("pxflow never writes where it reads") != std::string::npos);
+  TempDir out_dir;
+  const auto text = run_pxflow({"flow", "--size", size, "--csv", out_dir.path("out.csv"), "--jsonl",
+                                out_dir.path("out.jsonl"), dir.path("")});
   REQUIRE(text.exit_code == 0);
   const auto out = lines_of(text.out);
   REQUIRE(out.size() == 3);  // one line per pair, then the summary
   CHECK(out[0].rfind("pair 0  ", 0) == 0);
   CHECK(out[2].find("2 pairs (3 frames)") != std::string::npos);
-  const auto csv = lines_of(pxflow::test::slurp(dir.path("out.csv")));
+  const auto csv = lines_of(pxflow::test::slurp(out_dir.path("out.csv")));
   REQUIRE(csv.size() == 3);
   CHECK(csv[0].rfind("pair,prev,next,crop,bin,backend,profile,width,height,flow_x,flow_y,", 0) ==
         0);
   CHECK(csv[1].find(",,1,ref-original,px4flow-64,") != std::string::npos);  // no crop, bin 1
-  const auto jsonl = lines_of(pxflow::test::slurp(dir.path("out.jsonl")));
+  const auto jsonl = lines_of(pxflow::test::slurp(out_dir.path("out.jsonl")));
   REQUIRE(jsonl.size() == 2);
   CHECK(csv[2].find(json::parse(jsonl[1])["flow_x_bits"].get<std::string>()) != std::string::npos);
 

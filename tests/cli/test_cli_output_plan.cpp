@@ -64,10 +64,11 @@ TEST_CASE("check refuses a --json that is a frame it reads, before any work", "[
                     "pxflow never writes where it reads");
   CHECK(slurp(frame) == before);
   CHECK(test::run_program("/bin/ls", {"-A", dir.path("data")}).out == "rubberwhale1.png\n");
-  // Generated cases only read no folder: the same path is then an ordinary output.
-  const auto r = run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only",
-                             "--data", dir.path("data"), "--json", dir.path("data/c.json")});
-  CHECK(r.exit_code == 0);
+  // A folder named as --data is never written into, even by a run that reads none of it
+  // (--generated-only): an input option's value is an input, whatever the command then reads.
+  require_bad_input({"check", "--backends", "ref-original,ref-local", "--generated-only", "--data",
+                     dir.path("data"), "--json", dir.path("data/c.json")},
+                    "pxflow never writes where it reads");
 }
 
 TEST_CASE("two outputs that are one file are refused, whatever their spelling", "[cli][plan]") {
@@ -117,7 +118,7 @@ TEST_CASE("report --out never touches a folder of the user's", "[cli][plan]") {
   dir.write("mine/results.csv", "my,data\n");
   require_bad_input({"report", "--out", dir.path("mine"), "--check-json", dir.path("c.json"),
                      "--bench-json", dir.path("b.json"), "--no-accuracy"},
-                    "no previous pxflow report");
+                    "no earlier pxflow output (.pxflow-report)");
   CHECK(slurp(dir.path("mine/report.md")) == "my notes");
   CHECK(slurp(dir.path("mine/results.csv")) == "my,data\n");
   CHECK(test::run_program("/bin/ls", {"-A", dir.path("mine")}).out == "report.md\nresults.csv\n");
