@@ -172,12 +172,17 @@ const std::vector<std::string>& report_file_names() {
   return names;
 }
 
+// A new folder, one with a manifest, or one that holds nothing but pxflow's own temporaries (a
+// run killed before its manifest: its leftovers never block the next one, which removes them).
 bool is_report_folder(const std::filesystem::path& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(dir, ec)) return true;
   if (fs::is_regular_file(dir / kManifest, ec)) return true;
-  return fs::is_directory(dir, ec) && fs::is_empty(dir, ec);
+  if (!fs::is_directory(dir, ec)) return false;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (!is_pxflow_temporary(entry.path().filename().string())) return false;
+  return !ec;
 }
 
 }  // namespace
