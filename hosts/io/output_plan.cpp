@@ -351,10 +351,10 @@ bool OutputStream::stop(const std::string& stopped_by) noexcept {
     done_ = true;
     const int fd = descriptor_ >= 0 ? descriptor_ : fd_;
     if (descriptor_ == 1) std::fflush(stdout);
-    if (stopped_by != "SIGPIPE" && fd >= 0) (void)write_all(fd, {marker, n});
+    const bool marked = stopped_by != "SIGPIPE" && fd >= 0 && write_all(fd, {marker, n});
     if (fd_ >= 0) ::close(fd_);
     fd_ = -1;
-    return descriptor_ < 0;
+    return descriptor_ < 0 && marked;  // standard output is never a file "kept"
   }
   try {
     const off_t end = static_cast<off_t>(record_end_);
