@@ -95,16 +95,24 @@ int open_or_stop(const std::string& path, const std::string& label) {
 }
 
 long read_or_stop(int fd, void* buf, std::size_t n, const std::string& label) {
+  // Only a wait looks at the flag: a regular file's read never waits, and a run stopped then
+  // says what it had done at its own stop point. A signal that came just before poll() would
+  // not cut it short: the wait goes in slices of a second.
+  const auto waited = [&] { stop_if_interrupted_while("reading " + label); };
   for (;;) {
-    if (interrupt_signal() != 0) stop_if_interrupted_while("reading " + label);
-    // A signal that came just before read() would not cut it short: wait in slices of a second.
     struct pollfd p {
       fd, POLLIN, 0
     };
     const int ready = ::poll(&p, 1, 1000);
-    if (ready == 0 || (ready < 0 && errno == EINTR)) continue;
+    if (ready == 0 || (ready < 0 && errno == EINTR)) {
+      waited();
+      continue;
+    }
     const ssize_t got = ::read(fd, buf, n);
-    if (got < 0 && errno == EINTR) continue;
+    if (got < 0 && errno == EINTR) {
+      waited();
+      continue;
+    }
     return static_cast<long>(got);
   }
 }

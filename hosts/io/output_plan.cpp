@@ -265,6 +265,7 @@ void PlannedPath::append(std::string_view bytes) {
     discard();
     throw OutputError(label() + ": cannot write: " + why + " (the previous file is unchanged)");
   }
+  if (descriptor_ == 1) throw OutputError(label() + ": cannot write to standard output: " + why);
   throw OutputError(label() + ": cannot write: " + why);
 }
 
