@@ -178,7 +178,7 @@ bool is_pxflow_temporary(const std::string& filename) {
 
 PlannedPath::~PlannedPath() { discard(); }
 
-std::string PlannedPath::try_open() {
+std::string PlannedPath::try_open(bool clean) {
   if (descriptor_ >= 0) {  // standard output, or another descriptor the caller opened
     direct_ = true;
     const int flags = ::fcntl(descriptor_, F_GETFL);
@@ -202,7 +202,7 @@ std::string PlannedPath::try_open() {
            "another name";
   const std::string dir = folder_of(target_);
   const std::string name = fs::path(target_).filename().string();
-  remove_dead_temporaries(dir, [&](const std::string& n) { return n == name; });
+  if (clean) remove_dead_temporaries(dir, [&](const std::string& n) { return n == name; });
   if (std::string why = space_problem(dir); !why.empty()) return why;
   tmp_ = temporary_name(target_);
   fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
@@ -380,7 +380,7 @@ void OutputFolder::write(const std::string& name, std::string_view bytes) {
   // Written whole, as a planned file is: its temporary first, renamed into place.
   OutputFile file(option_, path);
   file.prepared_ = true;
-  if (const std::string why = file.try_open(); !why.empty())
+  if (const std::string why = file.try_open(false); !why.empty())
     throw OutputError(file.label() + ": " + why);
   file.write(bytes);
 }

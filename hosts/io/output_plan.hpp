@@ -80,8 +80,9 @@ class PlannedPath {
   friend class OutputPlan;
   friend class OutputFolder;
   void open();  // throws InputError: see the top of this file
-  // What stops `open` (one line after the label), or "" when it is ready.
-  std::string try_open();
+  // What stops `open` (one line after the label), or "" when it is ready. `clean`: remove the
+  // dead temporaries of the target first (an OutputFolder did so once for all its files).
+  std::string try_open(bool clean = true);
   void append(std::string_view bytes);  // OutputError; EPIPE: the SIGPIPE stop (Interrupted)
   void commit();                        // renames the temporary into place
   void discard();                       // removes the temporary
