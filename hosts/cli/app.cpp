@@ -1,5 +1,7 @@
 // pxflow's command line: parses the subcommand, runs it, and turns every error into one line on
-// stderr: exit 2 for bad input, 1 for a failure while running.
+// stderr: exit 2 for bad input, 1 for a failure while running, 128 + N after a stop signal N
+// (129 SIGHUP, 130 SIGINT, 141 SIGPIPE or EPIPE on standard output, 143 SIGTERM; the signal
+// policy is core/interrupt.hpp's).
 #include <cstdio>
 #include <new>
 

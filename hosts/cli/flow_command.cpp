@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <iostream>
 
@@ -150,14 +151,34 @@ int run_single(const FlowOptions& o, const BackendRow& row, const FrameShaping& 
   return 0;
 }
 
-// What a sequence that stopped early (Ctrl-C, a bad frame, a failed backend) kept: its streams
-// hold every completed pair (OutputStream), and the summary says the run is incomplete.
-void say_incomplete(int pairs, std::initializer_list<const OutputStream*> streams) {
-  std::string kept;
-  for (const OutputStream* s : streams)
-    if (s && !s->to_stdout() && s->records() > 0) kept += " " + s->option() + " " + s->path();
+// What a sequence that stopped early (a signal, EPIPE, a bad frame, a failed backend) kept: each
+// stream in `kept` holds every completed pair and ends in its incomplete marker (OutputStream),
+// and the summary says the run is incomplete.
+void say_incomplete(int pairs, const std::vector<const OutputStream*>& kept) {
+  std::string where;
+  for (const OutputStream* s : kept)
+    if (!s->to_stdout())
+      where += (where.empty() ? "" : ", ") + s->option() + " " + s->path() + " (marked incomplete)";
+  if (!where.empty()) where = "; kept " + counted(kept.front()->records(), "pair") + " in " + where;
   std::fprintf(stderr, "flow: incomplete: %d pair%s done before the stop%s\n", pairs,
-               pairs == 1 ? "" : "s", kept.empty() ? "" : ("; kept in" + kept).c_str());
+               pairs == 1 ? "" : "s", where.c_str());
+}
+
+// What ended a run early, for the marker's "stopped_by" (io/output_plan.hpp).
+std::string stop_reason(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const Interrupted& i) {
+    return signal_name(i.signal);
+  } catch (const InputError&) {
+    return "bad input";
+  } catch (const OutputError&) {
+    return "write error";
+  } catch (const BackendError&) {
+    return "backend error";
+  } catch (...) {
+    return "error";
+  }
 }
 
 // What a sequence run reads: the pairs of a list file (--pairs), or a sequence's frames.
@@ -191,7 +212,7 @@ struct SequenceOutputs {
 SequenceOutputs plan_sequence_outputs(OutputPlan& plan, const FlowOptions& o) {
   SequenceOutputs out;
   out.jsonl = o.jsonl_given ? &plan.stream("--jsonl", o.jsonl) : nullptr;
-  out.csv = o.csv_given ? &plan.stream("--csv", o.csv) : nullptr;
+  out.csv = o.csv_given ? &plan.stream("--csv", o.csv, StreamFormat::csv) : nullptr;
   out.draw = o.draw_given ? &plan.folder("--draw", o.draw, "pair-NNNNNN.png") : nullptr;
   plan.prepare();
   if (out.csv) out.csv->header(csv_header());
@@ -219,10 +240,11 @@ class SequenceRun {
     }
     if (out_.jsonl) out_.jsonl->add(json_document(pair_json(r), -1));
     if (out_.csv) out_.csv->add(csv_row(pairs_, r));
-    if (out_.lines) std::fputs(pair_line(pairs_, r).c_str(), out_.lines);
     backend_seconds_ += r.host_seconds;
     last_what_ = what_ran(r);
-    ++pairs_;
+    ++pairs_;  // done: in every output (its line is not an output a stop could keep)
+    if (out_.lines) std::fputs(pair_line(pairs_ - 1, r).c_str(), out_.lines);
+    if (out_.lines == stdout) check_stdout();  // a reader that went away stops the run now
   }
 
   int pairs() const { return pairs_; }
@@ -296,7 +318,13 @@ int run_sequence(const FlowOptions& o, const BackendRow& row, const FrameShaping
     stop_if_interrupted(std::to_string(run.pairs()) + " pairs done");
   } catch (...) {
     if (out.draw) out.draw->remove_earlier();
-    if (run.pairs() > 0) say_incomplete(run.pairs(), {out.jsonl, out.csv});
+    // Every stream that holds pairs is kept, cut to its last one and marked incomplete; one
+    // whose write failed is not (its previous file stays).
+    const std::string why = stop_reason(std::current_exception());
+    std::vector<const OutputStream*> kept;
+    for (OutputStream* s : {out.jsonl, out.csv})
+      if (s && s->stop(why)) kept.push_back(s);
+    if (run.pairs() > 0) say_incomplete(run.pairs(), kept);
     throw;
   }
   if (out.draw) out.draw->remove_earlier();
@@ -354,7 +382,12 @@ Command add_flow_command(CLI::App& app) {
       "Every input may be a file or a pipe (a FIFO, /dev/stdin, bash's <(cat a.raw)).\n"
       "A sequence prints a line per pair and a summary (pairs, frames, pairs/s); --jsonl and\n"
       "--csv write one object or row per pair (- = stdout, the lines then go to stderr with\n"
-      "--progress or on a terminal).");
+      "--progress or on a terminal).\n"
+      "A sequence that stops early (a signal, a closed pipe, a bad frame, a failed backend)\n"
+      "keeps its completed pairs in --jsonl and --csv, each file then ending in one marker line\n"
+      "(a finished one has none):\n"
+      "  --jsonl  {\"incomplete\": {\"records\": 243, \"stopped_by\": \"SIGINT\"}}\n"
+      "  --csv    # incomplete: 243 records, stopped by SIGINT");
   o->problem.add_to(*sub);
   sub->add_option("--size", o->size,
                   "Inputs are raw 8-bit frames of WIDTHxHEIGHT (e.g. 64x64), whatever their name")

@@ -72,8 +72,17 @@ std::string help_sections(const std::vector<std::string>& examples) {
                      "be written") +
       term_paragraph("2", 3,
                      "Bad input: one line on stderr names the file, option, key or backend; "
-                     "nothing else is written") +
-      term_paragraph("130", 3, "Interrupted by SIGINT (Ctrl-C); 143: by SIGTERM") + "\n";
+                     "found before any work, nothing is written (a bad frame in the middle of a "
+                     "sequence stops it as below)") +
+      term_paragraph("129", 3, "Stopped by SIGHUP (the terminal closed)") +
+      term_paragraph("130", 3, "Stopped by SIGINT (Ctrl-C)") +
+      term_paragraph("141", 3,
+                     "Stopped by SIGPIPE: the reader of standard output went away (`| head`)") +
+      term_paragraph("143", 3, "Stopped by SIGTERM") + "\n" +
+      "After a stop no file is left half written: a whole file (--json, a report's) keeps its\n"
+      "previous version; a sequence keeps its completed records in --jsonl and --csv, each file\n"
+      "ending in an incomplete marker line (see pxflow flow --help). A second signal during the\n"
+      "stop ends pxflow at once, keeping the same.\n\n";
   const auto variables = environment();
   std::size_t width = 0;
   for (const auto& v : variables) width = std::max(width, v.name.size());

@@ -78,7 +78,7 @@ class RawFrames final : public FrameSequence {
  public:
   RawFrames(const std::string& source, FrameSize size) : source_(source), size_(size) {
     if (source == "-") return;
-    fd_ = ::open(source.c_str(), O_RDONLY | O_CLOEXEC);
+    fd_ = open_or_stop(source, source);
     if (fd_ < 0)
       throw InputError(source + ": cannot open for reading (" + std::strerror(errno) + ")");
   }
@@ -90,8 +90,7 @@ class RawFrames final : public FrameSequence {
     std::vector<std::uint8_t> px(bytes);
     std::size_t got = 0;
     while (got < bytes) {
-      const ssize_t n = ::read(fd_, px.data() + got, bytes - got);
-      if (n < 0 && errno == EINTR) continue;
+      const long n = read_or_stop(fd_, px.data() + got, bytes - got, source_);
       if (n < 0) throw InputError(source_ + ": read failed (" + std::strerror(errno) + ")");
       if (n == 0) break;
       got += static_cast<std::size_t>(n);

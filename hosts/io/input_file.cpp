@@ -1,6 +1,7 @@
 #include "input_file.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -10,6 +11,7 @@
 
 #include "errors.hpp"
 #include "file_inputs.hpp"
+#include "interrupt.hpp"
 
 namespace pxflow {
 namespace fs = std::filesystem;
@@ -65,7 +67,7 @@ void require_readable_input(const std::string& label, const std::string& path) {
 std::vector<std::uint8_t> read_input(const std::string& label, const std::string& path,
                                      std::uint64_t max_bytes, const std::string& why) {
   require_readable_input(label, path);
-  const Fd in{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  const Fd in{open_or_stop(path, label)};
   if (in.fd < 0)
     throw InputError(label + ": cannot open for reading (" + std::strerror(errno) + ")");
   struct stat st {};
@@ -75,8 +77,7 @@ std::vector<std::uint8_t> read_input(const std::string& label, const std::string
   std::vector<std::uint8_t> bytes;
   std::uint8_t chunk[1 << 16];
   for (;;) {
-    const ssize_t n = ::read(in.fd, chunk, sizeof chunk);
-    if (n < 0 && errno == EINTR) continue;
+    const long n = read_or_stop(in.fd, chunk, sizeof chunk, label);
     if (n < 0) throw InputError(label + ": read failed (" + std::strerror(errno) + ")");
     if (n == 0) break;
     if (bytes.size() + static_cast<std::uint64_t>(n) > max_bytes)
@@ -85,6 +86,37 @@ std::vector<std::uint8_t> read_input(const std::string& label, const std::string
   }
   if (bytes.empty()) throw InputError(label + ": file is empty");
   return bytes;
+}
+
+int open_or_stop(const std::string& path, const std::string& label) {
+  for (;;) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0 || errno != EINTR) return fd;
+    stop_if_interrupted_while("opening " + label);
+  }
+}
+
+long read_or_stop(int fd, void* buf, std::size_t n, const std::string& label) {
+  // Only a wait looks at the flag: a regular file's read never waits, and a run stopped then
+  // says what it had done at its own stop point. A signal that came just before poll() would
+  // not cut it short: the wait goes in slices of a second.
+  const auto waited = [&] { stop_if_interrupted_while("reading " + label); };
+  for (;;) {
+    struct pollfd p {
+      fd, POLLIN, 0
+    };
+    const int ready = ::poll(&p, 1, 1000);
+    if (ready == 0 || (ready < 0 && errno == EINTR)) {
+      waited();
+      continue;
+    }
+    const ssize_t got = ::read(fd, buf, n);
+    if (got < 0 && errno == EINTR) {
+      waited();
+      continue;
+    }
+    return static_cast<long>(got);
+  }
 }
 
 std::string read_input_text(const std::string& label, const std::string& path) {

@@ -4,6 +4,7 @@
 // Every refusal is an InputError whose line starts with `label`: the path itself, or the option
 // and the path ("--pairs LIST").
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,6 +21,14 @@ void require_readable_input(const std::string& label, const std::string& path);
 // InputError "LABEL: holds N bytes, WHY" (a stream: "more than N"), read no further than that.
 std::vector<std::uint8_t> read_input(const std::string& label, const std::string& path,
                                      std::uint64_t max_bytes, const std::string& why);
+
+// read(2) of up to `n` bytes that a stop signal ends: a read cut short (EINTR), and every second
+// spent waiting (a FIFO, a pipe, a terminal), look at the signal flag (an Interrupted "SIGINT
+// while reading LABEL") and go on waiting. read()'s result otherwise (-1: errno, never EINTR).
+long read_or_stop(int fd, void* buf, std::size_t n, const std::string& label);
+
+// open(path, O_RDONLY) that a stop signal ends (a FIFO's open waits for its writer); -1: errno.
+int open_or_stop(const std::string& path, const std::string& label);
 
 // A text input (JSON, a list of pairs): read_input with a bound no file pxflow writes comes near.
 std::string read_input_text(const std::string& label, const std::string& path);

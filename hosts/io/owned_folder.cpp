@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "errors.hpp"
+#include "output_plan.hpp"
 #include "system_files.hpp"
 
 namespace pxflow {
@@ -14,8 +15,13 @@ void check_owned_folder(const std::string& option, const std::string& dir,
                         const std::string& manifest) {
   std::error_code ec;
   if (!fs::exists(dir, ec) || fs::is_regular_file(fs::path(dir) / manifest, ec)) return;
-  if (fs::is_directory(dir, ec) && fs::is_empty(dir, ec)) return;
   if (!fs::is_directory(dir, ec)) return;  // a file: OutputPlan::prepare names it
+  // Empty, or holding nothing but pxflow's own temporaries (a run killed before its manifest:
+  // its leftovers never block the next run, which removes them).
+  bool others = false;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    others |= !is_pxflow_temporary(entry.path().filename().string());
+  if (!others && !ec) return;
   throw InputError(option + " " + dir + ": holds files and no earlier pxflow output (" + manifest +
                    "); give a new or empty folder, so that no file of yours is replaced");
 }

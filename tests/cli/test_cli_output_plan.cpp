@@ -160,7 +160,7 @@ TEST_CASE("Ctrl-C stops accuracy, vectors and gap8 with exit 130", "[cli][plan]"
 TEST_CASE("a sequence that stops early keeps every completed pair and says so", "[cli][plan]") {
   test::TempDir dir;
   dir.write("out.jsonl", "previous\n");
-  SECTION("interrupted after N pairs: N lines, exit 130") {
+  SECTION("interrupted after N pairs: N lines and the marker, exit 130") {
     const auto r = interrupt_once_started(
         {"flow", "--jsonl", dir.path("out.jsonl"), "--csv", dir.path("out.csv"), "--set",
          "search_radius=20", kData + "/vtest.avi"},
@@ -174,12 +174,20 @@ TEST_CASE("a sequence that stops early keeps every completed pair and says so", 
       CHECK(slurp(dir.path("out.jsonl")) == "previous\n");
     } else {
       const std::size_t n = std::stoul(r.err.substr(at + 18));
-      CHECK(lines_in(slurp(dir.path("out.jsonl"))) == n);
-      CHECK(lines_in(slurp(dir.path("out.csv"))) == n + 1);  // and the header
-      CHECK(r.err.find("pairs done before the stop; kept in --jsonl") != std::string::npos);
+      const std::string jsonl = slurp(dir.path("out.jsonl")), csv = slurp(dir.path("out.csv"));
+      CHECK(lines_in(jsonl) == n + 1);  // and the incomplete marker
+      CHECK(jsonl.ends_with("{\"incomplete\": {\"records\": " + std::to_string(n) +
+                            ", \"stopped_by\": \"SIGINT\"}}\n"));
+      CHECK(lines_in(csv) == n + 2);  // the header and the marker
+      CHECK(
+          csv.ends_with("\n# incomplete: " + std::to_string(n) + " records, stopped by SIGINT\n"));
+      CHECK(r.err.find(" pairs done before the stop; kept " + std::to_string(n) +
+                       " pairs in --jsonl " + dir.path("out.jsonl") +
+                       " (marked incomplete), --csv " + dir.path("out.csv") +
+                       " (marked incomplete)") != std::string::npos);
     }
   }
-  SECTION("a bad frame after three good ones: two pairs kept, exit 2") {
+  SECTION("a bad frame after three good ones: two pairs kept and marked, exit 2") {
     REQUIRE(::mkdir(dir.path("seq").c_str(), 0755) == 0);
     for (const char* f : {"seq/f1.raw", "seq/f2.raw", "seq/f3.raw"})
       dir.write(f, std::string(64 * 64, '\x40'));
@@ -188,9 +196,11 @@ TEST_CASE("a sequence that stops early keeps every completed pair and says so", 
         run_pxflow({"flow", "--size", "64x64", "--jsonl", dir.path("out.jsonl"), dir.path("seq")});
     INFO(r.err);
     CHECK(r.exit_code == 2);
-    CHECK(r.err.find("flow: incomplete: 2 pairs done before the stop; kept in --jsonl") !=
+    CHECK(r.err.find("flow: incomplete: 2 pairs done before the stop; kept 2 pairs in --jsonl") !=
           std::string::npos);
-    CHECK(lines_in(slurp(dir.path("out.jsonl"))) == 2);
+    const std::string jsonl = slurp(dir.path("out.jsonl"));
+    CHECK(lines_in(jsonl) == 3);
+    CHECK(jsonl.ends_with("{\"incomplete\": {\"records\": 2, \"stopped_by\": \"bad input\"}}\n"));
   }
   SECTION("Ctrl-C on a pipe: the writer dies too, and the run is still incomplete") {
     // Ctrl-C reaches the whole pipeline: the writer dies and pxflow sees the end of its input;
@@ -202,13 +212,14 @@ TEST_CASE("a sequence that stops early keeps every completed pair and says so", 
         "(head -c 12288 /dev/zero; exec sleep 600) >'" + fifo + "' & w=$!; " +
         quoted({"flow", "--size", "64x64", "--jsonl", dir.path("out.jsonl"), "-"}) + " <'" + fifo +
         "' >/dev/null 2>'" + err + "' & p=$!; n=0; until [ \"$(cat '" + dir.path("") +
-        "'out.jsonl.tmp.* 2>/dev/null | wc -l)\" -ge 2 ] || [ $n -ge 3000 ]; do sleep 0.01; "
+        "'.out.jsonl.pxflow-*.tmp 2>/dev/null | wc -l)\" -ge 2 ] || [ $n -ge 3000 ]; do sleep "
+        "0.01; "
         "n=$((n+1)); done; kill -INT $p; kill $w; wait $p; echo rc=$?; cat '" +
         err + "' >&2";
     const auto r = test::run_program("/bin/sh", {"-c", script});
     INFO(r.out << r.err);
     CHECK(r.out.rfind("rc=130", 0) == 0);
     CHECK(r.err.find("flow: incomplete: 2 pairs done before the stop") != std::string::npos);
-    CHECK(lines_in(slurp(dir.path("out.jsonl"))) == 2);
+    CHECK(lines_in(slurp(dir.path("out.jsonl"))) == 3);  // and the incomplete marker
   }
 }
