@@ -14,7 +14,11 @@ namespace {
 const std::vector<EnvironmentVariable> kCoreEnvironment = {
     {"PXFLOW_OPENCV_MODULE",
      "The OpenCV module to load (libpxflow_opencv.so, needed to decode images and video) "
-     "instead of the one beside pxflow or in ../lib/pxflow"}};
+     "instead of the one beside pxflow or in ../lib/pxflow"},
+    {"PXFLOW_STOP_GRACE_MS",
+     "Milliseconds after a first SIGINT, SIGTERM or SIGHUP in which another is the same stop "
+     "(default 1000); a later one ends the run at once, keeping the streams' whole records; 0: "
+     "any second signal does"}};
 
 constexpr std::size_t kWidth = 100;
 

@@ -5,9 +5,12 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <ctime>
 
 namespace pxflow {
 namespace {
@@ -87,10 +90,27 @@ void flush_in_flight(const char* stopped_by) {
   }
 }
 
+// CLOCK_MONOTONIC in milliseconds (clock_gettime is async-signal-safe).
+long long now_ms() {
+  timespec t{};
+  ::clock_gettime(CLOCK_MONOTONIC, &t);
+  return static_cast<long long>(t.tv_sec) * 1000 + t.tv_nsec / 1000000;
+}
+
+std::atomic<long long> g_first_ms{0};
+long long g_grace_ms = kStopGraceMs;  // PXFLOW_STOP_GRACE_MS, read once at install
+
 extern "C" void on_stop_signal(int sig) {
   const int saved_errno = errno;
   int first = 0;
   if (g_signal.compare_exchange_strong(first, sig)) {  // the first: a request to stop
+    g_first_ms.store(now_ms());
+    errno = saved_errno;
+    return;
+  }
+  // Within the grace after the first, the same stop delivered twice (`timeout -s INT`, a double
+  // Ctrl-C): the wind-down goes on and keeps what one signal keeps.
+  if (now_ms() - g_first_ms.load() < g_grace_ms) {
     errno = saved_errno;
     return;
   }
@@ -135,6 +155,8 @@ std::size_t put_number(char* out, std::size_t v) {
 }  // namespace
 
 void install_interrupt_handlers() {
+  if (const char* grace = std::getenv("PXFLOW_STOP_GRACE_MS"); grace && *grace)
+    g_grace_ms = std::max(0LL, std::atoll(grace));
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) install(sig, on_stop_signal);
   install(SIGPIPE, on_broken_pipe);
   install(SIGXFSZ, on_ignored_signal);

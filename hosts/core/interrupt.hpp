@@ -5,7 +5,10 @@
 //     installed without SA_RESTART, so a blocked read returns EINTR). Whole files are written only
 //     when complete and streams keep their completed records (io/output_plan); the CLI says
 //     whether any file changed and exits 128 + the signal: 130, 143, 129.
-//   - A second one (or any later one) during that wind-down ends the process at once, in the
+//   - Another one within kStopGraceMs of the first is the same stop delivered twice (`timeout -s
+//     INT` sends two; so does an impatient double Ctrl-C): the wind-down goes on and keeps what
+//     one signal keeps, exit 128 + the first signal.
+//   - One later than that, during a wind-down that is taking long, ends the process at once, in the
 //     handler, with async-signal-safe calls only: every stream in the in-flight table below that
 //     holds records is cut to its last complete record, gets the incomplete marker and is renamed
 //     into place; every other temporary is removed; one line on stderr; _exit(128 + the signal).
@@ -22,6 +25,10 @@
 #include <string>
 
 namespace pxflow {
+
+// How long after the first stop signal another one is taken as the same stop (see above); the
+// environment variable PXFLOW_STOP_GRACE_MS sets another (0: a second signal ends at once).
+inline constexpr long long kStopGraceMs = 1000;
 
 struct Interrupted : std::runtime_error {
   int signal;

@@ -50,7 +50,9 @@ void check_png_name(const std::string& option, const std::string& path) {
   // Standard output, a device or a pipe has no name to keep (--draw - | display, /dev/null).
   std::error_code ec;
   const auto st = std::filesystem::status(path, ec);
-  if (path == "-" || std::filesystem::is_character_file(st) || std::filesystem::is_fifo(st)) return;
+  if (descriptor_of(path) >= 0 || std::filesystem::is_character_file(st) ||
+      std::filesystem::is_fifo(st))
+    return;
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char ch) { return std::tolower(ch); });
