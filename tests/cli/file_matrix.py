@@ -170,6 +170,8 @@ class Matrix:
         self.results = []  # (status, name, detail)
         self.codes = {}  # command -> exit codes seen
         self.fixture_digests = {p: digest(p) for p in fixtures.files()}
+        self.pristine = fixtures.root + ".pristine"
+        shutil.copytree(fixtures.root, self.pristine, symlinks=True)
         self.counter = 0
 
     # ---- bookkeeping
@@ -224,9 +226,14 @@ class Matrix:
         return r
 
     def fixtures_intact(self):
+        """The inputs' problems; a changed input is then restored, so that each case is judged
+        on its own."""
         changed = [p for p, d in self.fixture_digests.items()
                    if not os.path.exists(p) or digest(p) != d]
         extra = [p for p in self.fx.files() if p not in self.fixture_digests]
+        if changed or extra:
+            shutil.rmtree(self.fx.root)
+            shutil.copytree(self.pristine, self.fx.root, symlinks=True)
         return ["input changed: " + p for p in changed] + ["file written among inputs: " + p
                                                             for p in extra]
 
@@ -320,8 +327,10 @@ class Matrix:
                 self.case("%s %s" % (command.name, option["name"]),
                           lambda: ["an output named by position: name it by an option"])
                 continue
-            runs = self.accepting_runs(command, option)
             label = "%s %s" % (command.name, option["name"])
+            if option["required"] and command.runs:
+                self.case("%s omitted" % label, lambda: self.omitted(command, command.runs[0]))
+            runs = self.accepting_runs(command, option)
             if not runs:
                 self.case(label + " accepted", lambda: ["no matrix run accepts it"])
                 continue
@@ -353,8 +362,7 @@ class Matrix:
                     self.case("%s %s%s" % (label, scenario, run_tag(f_args)),
                               lambda s=scenario: self.folder_scenario(command, probe, f_args,
                                                                       f_code, s))
-            if option["required"]:
-                self.case("%s omitted" % label, lambda: self.omitted(command, first_args))
+
 
     def onto_input(self, command, option, run_args, target, spelling):
         d = self.workdir()
@@ -560,6 +568,9 @@ class Matrix:
                       lambda a=run_args: self.stop(command, a, [signal.SIGINT] * 2, 0.5))
             self.case("%s long%s SIGPIPE" % (command.name, tag),
                       lambda a=run_args: self.sigpipe(command, a))
+            if any("{KEPT}." in a and a.endswith((".jsonl", ".csv")) for a in run_args):
+                self.case("%s long%s file-size-limit" % (command.name, tag),
+                          lambda a=run_args: self.size_limit(command, a))
         for run_args in command.runs[:1]:
             for key in re.findall(r"\{[A-Z0-9]+\}", " ".join(run_args)):
                 if key in ("{VIDEO}",) or os.path.isdir(self.fx.paths[key]):
@@ -620,7 +631,9 @@ class Matrix:
             proc.wait()
             return ["not stopped within %.0f s of the signal" % STOP_WITHIN]
         p = self.stop_verdict(code, 128 + signals[0], err, d)
-        nothing_done = "no output file was changed" in err  # pxflow's own claim, then checked
+        # pxflow's own claim that nothing was done excuses a previous file early in the run; a
+        # second into it, a long run has finished work to keep, whatever it claims.
+        nothing_done = "no output file was changed" in err and at < 1.0
         for out, kept in outs:
             p += kept_output(out, must_keep=kept and not nothing_done)
         return p + self.fixtures_intact()
@@ -651,6 +664,34 @@ class Matrix:
         for out, _ in outs:
             p += kept_output(out, must_keep=False)
         return p + note + self.fixtures_intact()
+
+    def size_limit(self, command, run_args):
+        """A disk that fills during the work, as `ulimit -f 32` has it (any file system): the
+        run ends with exit 1, the previous files intact, and nothing claimed as kept."""
+        d = self.workdir()
+        args, outs = self.long_outputs(self.substitute(run_args), d)
+
+        def limit():
+            import resource
+            resource.setrlimit(resource.RLIMIT_FSIZE, (32 << 10, 32 << 10))
+
+        r = subprocess.run([self.pxflow, command.name] + args, capture_output=True, text=True,
+                           timeout=HANG_GUARD, preexec_fn=limit)
+        p = self.stop_verdict(r.returncode, 1, r.stderr, d)
+        failed = re.findall(r"--[a-z-]+ (\S+): cannot write", r.stderr)
+        if not failed and r.returncode >= 0:
+            p.append("no output named as failed: " + r.stderr.strip()[-200:])
+        kept_line = "".join(l for l in r.stderr.splitlines() if "kept" in l)
+        for out, _ in outs:
+            if out in failed:
+                if open(out, "rb").read() != b"previous output\n":
+                    p.append("%s: not the previous file after its write failed" %
+                             os.path.basename(out))
+                if out in kept_line:
+                    p.append("claims the failed %s was kept" % os.path.basename(out))
+            else:
+                p += kept_output(out, must_keep=False)
+        return p + self.fixtures_intact()
 
     def stop_verdict(self, code, expect, err, d):
         p = []
