@@ -110,7 +110,7 @@ TEST_CASE("resume: the fixed corpus with n/a cases and a required skip", "[resum
   CHECK(whole["backends"][3]["state"] == "failed");
 }
 
-TEST_CASE("resume: the stopped file names its campaign; its backends are incomplete", "[resume]") {
+TEST_CASE("resume: the stopped file names its campaign, its backends are incomplete", "[resume]") {
   TempDir dir;
   const std::string file = dir.path("ci.json");
   const RunResult r = pxflow_run({"check", "--backends", "ref-original,ref-local", "--cases",
@@ -182,7 +182,7 @@ TEST_CASE("resume: what cannot be resumed is refused with one line, exit 2", "[r
   refused({"merge", dir.path("m.json"), file}, "finish it first with pxflow check --resume");
 }
 
-TEST_CASE("report: a stopped report keeps its check in --out, the next one finishes it",
+TEST_CASE("resume: a stopped report keeps its check in --out, the next one finishes it",
           "[resume]") {
   TempDir dir;
   const std::string out = dir.path("report");

@@ -36,7 +36,7 @@ RunResult interrupted_when(const std::string& args, const std::string& out, cons
 
 }  // namespace
 
-TEST_CASE("SIGINT to a running check --json keeps what it checked; --resume finishes it",
+TEST_CASE("resume: SIGINT to a running check --json keeps what it checked, --resume finishes it",
           "[resume][signal]") {
   TempDir dir;
   const std::string json_path = dir.path("ci.json"), err = dir.path("err.txt");
@@ -66,7 +66,7 @@ TEST_CASE("SIGINT to a running check --json keeps what it checked; --resume fini
   CHECK(run_program("/bin/ls", {"-A", dir.path("")}).out == "ci.json\nerr.txt\n");
 }
 
-TEST_CASE("SIGINT to a running bench --json keeps its rows; report and compare say incomplete",
+TEST_CASE("resume: SIGINT to a running bench --json keeps its rows, report and compare say so",
           "[resume][signal]") {
   TempDir dir;
   const std::string bench = dir.path("b.json"), out = dir.path("out.txt");
