@@ -40,7 +40,7 @@ struct CheckArgs {
   BackendOptions backend_options;
   std::string globals;  // the global options given (--dut, --disable-isa ...): they shape the run
   CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr,
-              *shard_opt = nullptr, *repro_dir_opt = nullptr, *resume_opt = nullptr;
+              *shard_opt = nullptr, *repro_dir_opt = nullptr;
   const CLI::App* sub = nullptr;
 };
 
@@ -273,11 +273,12 @@ Command add_check_command(CLI::App& app) {
   add_json_option(*sub, a->json_path,
                   "also written when a signal stops the check: what it checked, \"complete\": "
                   "false; --resume goes on from it");
-  a->resume_opt = sub->add_option(
-      "--resume", a->resume_path,
-      "Finish the check a signal stopped, from its --json FILE: the cases not done, with the "
-      "file's campaign and options; the result (the uninterrupted run's) replaces FILE, or goes "
-      "to --json");
+  sub->add_option("--resume", a->resume_path,
+                  "Finish the check a signal stopped, from its --json FILE: the "
+                  "cases not done, with the file's campaign and options; the "
+                  "result (the uninterrupted run's) replaces FILE, or goes to "
+                  "--json (docs/harness.md, Stopping and resuming a campaign)")
+      ->type_name("FILE");
   a->data_opt = add_data_option(*sub, a->data_dir);
   sub->add_flag("--generated-only", a->generated_only,
                 "Skip the real frames (random, hostile, threshold cases only)");
