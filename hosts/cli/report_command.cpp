@@ -424,7 +424,11 @@ int report_exit_code(const Json& check) {
   if (verdict == "nothing-checked")
     std::cout << "the check compared nothing but the reference: the report is not a pass\n";
   if (verdict == "incomplete")
-    std::cout << "the check is an incomplete merge (see Conformance): the report is not a pass\n";
+    std::cout << (check.value("complete", true)
+                      ? "the check is an incomplete merge (see Conformance): the report is not a "
+                        "pass\n"
+                      : "the check was stopped before its end (see Conformance; pxflow check "
+                        "--resume finishes it): the report is not a pass\n");
   return verdict == "passed" ? 0 : 1;
 }
 

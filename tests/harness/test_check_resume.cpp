@@ -129,6 +129,15 @@ TEST_CASE("resume: the stopped file names its campaign, its backends are incompl
   CHECK(j["backends"][0]["state"] == "reference");
   CHECK(j["backends"][1]["state"] == "incomplete");
   CHECK(j["backends"][1]["passed"] == 2);
+  // The report shows a stopped check as such, and it is not a pass.
+  const RunResult shown = pxflow_run({"report", "--out", dir.path("r"), "--check-json", file,
+                                      "--no-accuracy", "--quick", "--backends", "ref-original"});
+  INFO(shown.out << shown.err);
+  CHECK(shown.exit_code == 1);
+  CHECK(shown.out.find("the check was stopped before its end") != std::string::npos);
+  CHECK(slurp(dir.path("r/report.md"))
+            .find("Incomplete: a signal stopped this check after 2 of 8 cases") !=
+        std::string::npos);
   // Resumed into another file: the stopped one is an input, left as it was.
   const std::string before = slurp(file);
   const RunResult done = pxflow_run({"check", "--resume", file, "--json", dir.path("done.json")});
@@ -137,7 +146,7 @@ TEST_CASE("resume: the stopped file names its campaign, its backends are incompl
   CHECK(slurp(file) == before);
   CHECK(read(dir.path("done.json"))["complete"] == true);
   CHECK(read(dir.path("done.json"))["backends"][1]["passed"] == 8);
-  CHECK(run_program("/bin/ls", {"-A", dir.path("")}).out == "ci.json\ndone.json\n");
+  CHECK(run_program("/bin/ls", {"-A", dir.path("")}).out == "ci.json\ndone.json\nr\n");
 }
 
 TEST_CASE("resume: what cannot be resumed is refused with one line, exit 2", "[resume]") {
