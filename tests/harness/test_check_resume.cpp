@@ -2,7 +2,7 @@
 // into the uninterrupted run's result: the same verdict, counts, states and failure lines
 // (docs/harness.md, "Stopping and resuming a campaign"). The stops come from the test-only
 // PXFLOW_TEST_STOP_AFTER_CASES=N (the check raises SIGINT on itself after N cases);
-// tests/cli/test_cli_resume.cpp sends real signals.
+// test_resume_signals.cpp sends real signals.
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <nlohmann/json.hpp>
