@@ -8,6 +8,7 @@
 #include "counted.hpp"
 #include "errors.hpp"
 #include "frame_io.hpp"
+#include "interrupt.hpp"
 #include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
@@ -107,6 +108,13 @@ int run_bench_command(const BenchArgs& a) {
   r.command = a.command;
   const std::string json = json_document(bench_json(r));
   if (json_file) json_file->write(json);
+  if (r.stop) {  // app.cpp prints the line, exit 128 + the signal
+    const std::string where =
+        !json_file       ? "nothing written (--json FILE keeps a stopped bench's rows)"
+        : json_to_stdout ? "the JSON on standard output holds its rows, \"complete\": false"
+                         : a.json_path + " holds its rows, \"complete\": false";
+    throw Interrupted(r.stop->signal, std::string(r.stop->what()) + "; " + where);
+  }
   return 0;
 }
 
@@ -149,7 +157,9 @@ Command add_bench_command(CLI::App& app) {
                 "The default sweeps' quick subset: batch <= 256 and the frame sizes, no radius or "
                 "thread sweep, --min-time 0.05 unless given (what report --quick runs)");
   add_device_option(*sub, a->backend_options.device);
-  add_json_option(*sub, a->json_path, "the table then goes to stderr");
+  add_json_option(*sub, a->json_path,
+                  "the table then goes to stderr; a bench a signal stops writes the rows it "
+                  "measured, \"complete\": false");
   add_progress_flag(*sub);
   // Spellings that meant something else here than in the other commands.
   add_renamed_option(*sub, "--size", "--sizes WxH[,WxH...]");

@@ -1,15 +1,20 @@
 // pxflow check: the cross-check of every backend against ref-original.
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "check.hpp"
+#include "check_resume.hpp"
 #include "check_worker.hpp"
 #include "command_line.hpp"
 #include "commands.hpp"
+#include "counted.hpp"
 #include "device_wait.hpp"
 #include "errors.hpp"
+#include "input_file.hpp"
 #include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
@@ -23,6 +28,7 @@ constexpr const char* kHelp = " (see pxflow check --help)";
 
 struct CheckArgs {
   std::string backend, backends, require, json_path, shard, repro_dir;
+  std::string resume_path;  // --resume FILE: the stopped check to finish
   double repro_seconds = ShrinkLimits{}.seconds;
   bool no_repro = false;
   std::string data_dir = CorpusOptions{}.data_dir;
@@ -36,6 +42,7 @@ struct CheckArgs {
   std::string globals;  // the global options given (--dut, --disable-isa ...): they shape the run
   CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr,
               *shard_opt = nullptr, *repro_dir_opt = nullptr;
+  const CLI::App* sub = nullptr;
 };
 
 // --backend NAME runs one backend, --backends LIST several: one meaning each, never both.
@@ -80,12 +87,12 @@ std::string command_line(const CheckArgs& a) {
 
 // Where reproducers go: --repro-dir, else the --json file's folder, else the working folder. The
 // default is used only where files can be made (a check in a read-only folder still runs).
-OutputFolder* plan_reproducers(const CheckArgs& a, OutputPlan& plan) {
+OutputFolder* plan_reproducers(const CheckArgs& a, const std::string& json_path, OutputPlan& plan) {
   if (a.no_repro) return nullptr;
   std::string dir = a.repro_dir;
   if (a.repro_dir_opt->count() == 0) {
-    const std::filesystem::path json(a.json_path);
-    dir = a.json_path.empty() || a.json_path == kStdoutPath || !json.has_parent_path()
+    const std::filesystem::path json(json_path);
+    dir = json_path.empty() || json_path == kStdoutPath || !json.has_parent_path()
               ? "."
               : json.parent_path().string();
     if (::access(dir.c_str(), W_OK) != 0) return nullptr;
@@ -93,14 +100,13 @@ OutputFolder* plan_reproducers(const CheckArgs& a, OutputPlan& plan) {
   return &plan.folder("--repro-dir", dir, "pxflow-repro-N");
 }
 
-int run_check_command(const CheckArgs& a) {
-  if (!a.worker_row.empty()) return worker::serve(a.worker_row, a.backend_options);
+// The options of a new campaign, from the command line.
+CheckOptions options_from_args(const CheckArgs& a) {
   CheckOptions o;
   o.backends = chosen_backends(a);
   o.require = split_list(a.require);
   o.fuzz_pairs = a.cases;
   if (a.shard_opt->count() > 0) o.shard = parse_shard("--shard", a.shard);
-  o.verbose = a.verbose;
   o.backend_options = a.backend_options;
   o.isolation = {a.worker_command, a.case_timeout};
   o.corpus.seed = a.seed;
@@ -113,14 +119,108 @@ int run_check_command(const CheckArgs& a) {
   o.corpus.limits_only = a.limits_only;
   o.corpus.real = !a.generated_only && !a.limits_only;
   o.command = command_line(a);
+  o.banner = "pxflow check: seed " + std::to_string(a.seed) +
+             (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
+                          : ", fixed corpus") +
+             (o.shard.count > 1 ? ", shard " + o.shard.text() : "");
+  return o;
+}
+
+// With --resume, the options that shape no result; the campaign's come from the file.
+constexpr std::string_view kResumeTakes[] = {"--resume",        "--json",    "--repro-dir",
+                                             "--no-repro",      "--verbose", "--progress",
+                                             "--repro-seconds", "--help"};
+
+// The stopped check of --resume FILE, refused (one line, exit 2) unless this run can finish it.
+CheckReport read_stopped_check(const CheckArgs& a, const BuildIdentity& built) {
+  for (const CLI::Option* opt : a.sub->get_options())
+    if (opt->count() > 0 &&
+        std::ranges::find(kResumeTakes, opt->get_name()) == std::end(kResumeTakes))
+      throw InputError(
+          opt->get_name() + " given with --resume: the campaign's options come from " +
+          "the file (only --json, --repro-dir, --no-repro, --repro-seconds, --verbose " +
+          "and --progress go with it)" + kHelp);
+  const std::string label = "--resume " + a.resume_path;
+  Json j;
+  try {
+    j = Json::parse(read_input_text(label, a.resume_path));
+  } catch (const Json::exception&) {
+    throw InputError(label + ": not valid JSON (expected a file of pxflow check --json)");
+  }
+  CheckReport r;
+  try {
+    r = check_from_json(j);
+  } catch (const InputError& e) {
+    throw InputError(label + ": " + e.what());
+  }
+  if (!j.contains("options") && j.value("merged_from", Json()).is_null())
+    throw InputError(label + ": has no \"options\": not a check file of this pxflow" + kHelp);
+  check_resumable(label, r, built.version, built.commit);
+  if (r.options.global_options != a.globals)
+    throw InputError(label + ": ran with the global options '" + r.options.global_options +
+                     "' (here '" + a.globals + "'): resume it as pxflow" +
+                     r.options.global_options + " check --resume " + shell_word(a.resume_path));
+  return r;
+}
+
+// The options of the stopped campaign `r`: the rest of it runs as its beginning ran.
+CheckOptions options_from_file(const CheckArgs& a, const CheckReport& r) {
+  CheckOptions o;
+  o.backends = r.campaign.backends;
+  o.require = r.campaign.require;
+  o.fuzz_pairs = r.campaign.fuzz_pairs;
+  o.shard = r.shard;
+  o.backend_options = {r.options.threads, r.options.device};
+  o.isolation = {check_worker_command(*a.sub, o.backend_options), r.options.case_timeout};
+  o.corpus.seed = r.seed;
+  o.corpus.data_dir = r.options.data_dir;
+  o.corpus.limits_only = r.options.limits_only;
+  o.corpus.real = !r.campaign.generated_only && !r.options.limits_only;
+  o.command = r.command;
+  o.resume = &r;
+  o.resume_file = a.resume_path;
+  o.banner = "pxflow check: resuming " + a.resume_path + " after " + std::to_string(r.cases) +
+             " of " + counted(r.cases_total(), "case") + " (seed " + std::to_string(r.seed) + ")";
+  return o;
+}
+
+// Where the result goes: --json, else (with --resume) back to the stopped check's file, which is
+// then read first and replaced whole by the combined result.
+std::string json_output(const CheckArgs& a) {
+  return a.json_path.empty() && !a.resume_path.empty() ? a.resume_path : a.json_path;
+}
+
+// The line an interrupted check ends with (app.cpp prints it, exit 128 + the signal).
+Interrupted stopped(const Interrupted& stop, const std::string& json_path) {
+  const std::string where =
+      json_path.empty() ? "nothing written (--json FILE keeps a stopped check's work)"
+      : json_path == kStdoutPath
+          ? "the JSON on standard output holds them"
+          : json_path + " holds them; pxflow check --resume " + shell_word(json_path) + " goes on";
+  return Interrupted(stop.signal, std::string(stop.what()) + "; " + where);
+}
+
+int run_check_command(const CheckArgs& a) {
+  if (!a.worker_row.empty()) return worker::serve(a.worker_row, a.backend_options);
   const BuildIdentity built = build_identity();
+  std::optional<CheckReport> before;
+  if (!a.resume_path.empty()) before = read_stopped_check(a, built);
+  CheckOptions o = before ? options_from_file(a, *before) : options_from_args(a);
+  o.global_options = a.globals;
+  o.verbose = a.verbose;
   o.pxflow_version = built.version;
   o.pxflow_commit = built.commit;
-  const bool json_to_stdout = a.json_path == kStdoutPath;
+  const std::string json_path = json_output(a);
+  const bool json_to_stdout = json_path == kStdoutPath;
   OutputPlan plan;
-  if (o.corpus.real) plan.read_folder("--data", a.data_dir);
-  OutputFile* const json_file = a.json_path.empty() ? nullptr : &plan.file("--json", a.json_path);
-  OutputFolder* const repro = plan_reproducers(a, plan);
+  if (o.corpus.real) plan.read_folder("--data", o.corpus.data_dir);
+  std::error_code ec;  // the file resumed is an input, unless it is the one the result replaces
+  if (before && !std::filesystem::equivalent(a.resume_path, json_path, ec))
+    plan.read(a.resume_path);
+  OutputFile* const json_file =
+      json_path.empty() ? nullptr
+                        : &plan.file(a.json_path.empty() ? "--resume" : "--json", json_path);
+  OutputFolder* const repro = plan_reproducers(a, json_path, plan);
   plan.prepare();
   if (repro) {
     o.repro.dir = repro->dir();
@@ -131,10 +231,6 @@ int run_check_command(const CheckArgs& a) {
   }
   o.repro.program = "pxflow" + a.globals;
   o.repro.limits.seconds = a.repro_seconds;
-  o.banner = "pxflow check: seed " + std::to_string(a.seed) +
-             (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
-                          : ", fixed corpus") +
-             (o.shard.count > 1 ? ", shard " + o.shard.text() : "");
   // With the JSON on stdout, everything for humans goes to stderr.
   std::ostream& human = json_to_stdout ? std::cerr : std::cout;
   const CheckReport r = run_check(o, human);
@@ -145,8 +241,8 @@ int run_check_command(const CheckArgs& a) {
   if (merge_judges)
     human << "shard " << o.shard.text()
           << " compared nothing: exit 0, pxflow merge judges the whole campaign\n";
-  const std::string json = json_document(check_json(r));
-  if (json_file) json_file->write(json);
+  if (json_file) json_file->write(json_document(check_json(r)));
+  if (r.stop) throw stopped(*r.stop, json_path);
   return r.ok() || merge_judges ? 0 : 1;
 }
 
@@ -158,6 +254,7 @@ const std::vector<std::string> kCheckExamples = {
     "check --dut ref=exec:pxflow-dut-ref --require ref  # a kernel outside pxflow",
     "check --backends m4-qemu --require m4-qemu  # the Cortex-M4 firmware under QEMU",
     "check --cases 10000 --seed 7 --shard 2/4 --json s2.json  # one quarter of a campaign",
+    "check --resume ci.json  # finish a check a signal stopped (Ctrl-C: its --json file kept it)",
 };
 
 Command add_check_command(CLI::App& app) {
@@ -177,7 +274,16 @@ Command add_check_command(CLI::App& app) {
                                  "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
                                  "`pxflow merge` combines the parts' --json files)")
                      ->type_name("K/M");
-  add_json_option(*sub, a->json_path);
+  add_json_option(*sub, a->json_path,
+                  "also written when a signal stops the check: what it checked, \"complete\": "
+                  "false; --resume goes on from it");
+  declare_path(sub->add_option("--resume", a->resume_path,
+                               "Finish the check a signal stopped, from its --json FILE: the "
+                               "cases not done, with the file's campaign and options; the "
+                               "result (the uninterrupted run's) replaces FILE, or goes to "
+                               "--json (docs/harness.md, Stopping and resuming a campaign)")
+                   ->type_name("FILE"),
+               PathKind::UpdatedFile);
   a->data_opt = add_data_option(*sub, a->data_dir);
   sub->add_flag("--generated-only", a->generated_only,
                 "Skip the real frames (random, hostile, threshold cases only)");
@@ -210,6 +316,7 @@ Command add_check_command(CLI::App& app) {
   add_device_option(*sub, a->backend_options.device);
   return {sub,
           [a, sub] {
+            a->sub = sub;
             a->globals = global_options(*sub);
             a->worker_command = check_worker_command(*sub, a->backend_options);
             return run_check_command(*a);

@@ -29,6 +29,8 @@ const char* path_kind_name(PathKind kind) {
       return "output-folder";
     case PathKind::OwnedFolder:
       return "owned-folder";
+    case PathKind::UpdatedFile:
+      return "updated-file";
   }
   return "?";
 }

@@ -22,6 +22,7 @@ enum class PathKind {
   OutputFile,    // a file written, '-' standard output
   OutputFolder,  // an existing folder files are written into (--repro-dir, flow --draw)
   OwnedFolder,   // a folder pxflow makes and owns (report --out): its rule is io's
+  UpdatedFile,   // a file read, then replaced whole by the result (check --resume FILE)
 };
 
 const char* path_kind_name(PathKind kind);  // "input-file", ...

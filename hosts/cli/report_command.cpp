@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <set>
 
 #include "accuracy_json.hpp"
@@ -17,6 +18,7 @@
 #include "grid.hpp"
 #include "input_file.hpp"
 #include "interrupt.hpp"
+#include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
 #include "path_options.hpp"
@@ -284,13 +286,20 @@ void read_given_results(ReportInputs& in, const ReportArgs& a) {
   if (!a.no_accuracy) accuracy::require_backend_runs(accuracy_options(a));
 }
 
+// A stopped report keeps the check it ran here in its folder, and the next `report --out` with
+// the same check reuses it (complete) or finishes it (stopped in the check); a report that
+// completes removes it (its results.json holds the check).
+constexpr const char* kKeptCheck = "check.json";
+
 // The report's folder and files, planned and prepared in `plan` before any work: a folder or
 // file that cannot be made fails first.
 ReportOutputs plan_report_outputs(OutputPlan& plan, const ReportArgs& a) {
   plan.read_all({a.check_json});
   plan.read_all(a.bench_files);
   if (a.check_json.empty() || !a.no_accuracy) plan.read_folder("--data", a.data_dir);
-  std::vector<std::string> pictures;  // planned even with --no-accuracy: a previous report's go
+  // The files written besides report_file_names(): planned even with --no-accuracy (a previous
+  // report's pictures go) and without a stop (a kept check goes).
+  std::vector<std::string> pictures{kKeptCheck};
   for (const char* video : accuracy::kVideos) pictures.push_back(picture_file(video));
   ReportOutputs out = plan_report(plan, a.out_dir, pictures);
   plan.prepare();
@@ -301,7 +310,32 @@ std::string backends_flag(const ReportArgs& a) {
   return a.backends.empty() ? "" : " --backends " + a.backends;
 }
 
-// The check: read from --check-json, or run here with the report's options.
+// The check a stopped report kept in the folder, when it is this report's check (the same
+// command and build); anything else there is set aside with a line, and the check runs anew.
+std::optional<CheckReport> kept_check(const ReportArgs& a, const std::string& command) {
+  const std::string path = (std::filesystem::path(a.out_dir) / kKeptCheck).string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  CheckReport r;
+  try {
+    r = check_from_json(Json::parse(read_input_text(path, path)));
+  } catch (const std::exception& e) {
+    std::cout << "== " << path << ": not a check file (" << e.what() << "): checked anew\n";
+    return std::nullopt;
+  }
+  const BuildIdentity built = build_identity();
+  if (r.command != command || r.pxflow_version != built.version ||
+      r.pxflow_commit != built.commit || !r.merged_from.empty()) {
+    std::cout << "== " << path << ": another check (" << r.command << ", pxflow "
+              << r.pxflow_version << "): checked anew\n";
+    return std::nullopt;
+  }
+  return r;
+}
+
+// The check: read from --check-json, or run here with the report's options (reusing or
+// finishing the check a stopped report kept). A signal that stops it throws Interrupted, with
+// in.check holding what was checked.
 void add_check(ReportInputs& in, const ReportArgs& a) {
   if (!a.check_json.empty()) {
     in.check_command = recorded_command(in.check, "check", a.check_json);
@@ -313,13 +347,31 @@ void add_check(ReportInputs& in, const ReportArgs& a) {
   o.corpus.data_dir = a.data_dir;
   o.backend_options = a.backend_options();
   o.isolation.worker_command = a.check_workers;
+  o.global_options = a.globals;
+  const BuildIdentity built = build_identity();
+  o.pxflow_version = built.version, o.pxflow_commit = built.commit;
   in.check_command = a.pxflow("check") + " --seed " + std::to_string(a.seed) + backends_flag(a) +
                      a.shared_flags() +
                      (a.data_dir == kSampleDataDir ? "" : " --data " + shell_word(a.data_dir));
-  std::cout << "== " << in.check_command << "\n";
+  o.command = in.check_command;
+  const std::optional<CheckReport> kept = kept_check(a, o.command);
+  const std::string kept_path = (std::filesystem::path(a.out_dir) / kKeptCheck).string();
+  if (kept && kept->complete) {
+    std::cout << "== " << in.check_command << ": reusing " << kept_path
+              << ", a stopped report's complete check\n";
+    in.check = check_json(*kept);
+    return;
+  }
+  if (kept) o.resume = &*kept, o.resume_file = kept_path;
+  std::cout << "== " << in.check_command
+            << (kept ? " (resuming " + kept_path + " after " + std::to_string(kept->cases) +
+                           " cases)"
+                     : "")
+            << "\n";
   const CheckReport r = run_check(o, std::cout);
   std::cout << r.passed << " passed, " << r.failed << " failed, " << r.skipped << " skipped\n";
   in.check = check_json(r);
+  if (r.stop) throw *r.stop;
 }
 
 // The bench: read from --bench-json, or run here with its own default profile and sweeps, so
@@ -343,8 +395,23 @@ void add_bench(ReportInputs& in, const ReportArgs& a) {
                      (a.quick ? " --quick" : "");
   std::cout << "== " << in.bench_command << "\n";
   BenchReport r = run_bench(o, std::cout);
+  if (r.stop) throw *r.stop;  // the report's bench is not kept: it reruns whole
   r.command = in.bench_command;
   in.bench = bench_json(r);
+}
+
+// A signal stopped the report's work: the check it ran here is kept in the folder (with the
+// manifest that keeps the folder the report's), and the line says how to go on.
+Interrupted keep_check(ReportOutputs& out, const ReportInputs& in, const ReportArgs& a,
+                       const Interrupted& stop) {
+  if (!a.check_json.empty() || in.check.is_null()) return stop;
+  out.pictures.at(kKeptCheck)->write(json_document(in.check));
+  write_stopped_manifest(out, {kKeptCheck});
+  const std::string path = (std::filesystem::path(a.out_dir) / kKeptCheck).string();
+  return Interrupted(stop.signal, std::string(stop.what()) + "; " + path + " keeps the check (" +
+                                      (in.check.value("complete", true) ? "complete" : "stopped") +
+                                      "): pxflow report --out " + shell_word(a.out_dir) +
+                                      " goes on from it");
 }
 
 // As `pxflow check` and `pxflow merge`: a failure, an incomplete merge or a check that compared
@@ -358,7 +425,11 @@ int report_exit_code(const Json& check) {
   if (verdict == "nothing-checked")
     std::cout << "the check compared nothing but the reference: the report is not a pass\n";
   if (verdict == "incomplete")
-    std::cout << "the check is an incomplete merge (see Conformance): the report is not a pass\n";
+    std::cout << (check.value("complete", true)
+                      ? "the check is an incomplete merge (see Conformance): the report is not a "
+                        "pass\n"
+                      : "the check was stopped before its end (see Conformance; pxflow check "
+                        "--resume finishes it): the report is not a pass\n");
   return verdict == "passed" ? 0 : 1;
 }
 
@@ -368,12 +439,16 @@ int run_report(const ReportArgs& a) {
   read_given_results(in, a);
   OutputPlan plan;
   ReportOutputs out = plan_report_outputs(plan, a);
-  add_check(in, a);
-  add_bench(in, a);
-  describe_backends(in, a);
-  if (!a.no_accuracy) add_accuracy(in, a);
-  add_family_sections(in, a);
-  stop_if_interrupted("the report's measurements, before any file was written");
+  try {
+    add_check(in, a);
+    add_bench(in, a);
+    describe_backends(in, a);
+    if (!a.no_accuracy) add_accuracy(in, a);
+    add_family_sections(in, a);
+    stop_if_interrupted("the report's measurements, before any report file was written");
+  } catch (const Interrupted& e) {
+    throw keep_check(out, in, a, e);
+  }
   if (!a.no_accuracy) add_pictures(in, a, out);
   write_report(out, in);
   std::cout << "wrote " << a.out_dir << "/report.md, report.html, results.json and CSV files\n";

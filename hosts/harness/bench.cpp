@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstring>
 #include <map>
 #include <optional>
@@ -431,6 +432,10 @@ std::vector<const BackendRow*> rows_to_run(const std::vector<std::string>& names
   return rows;
 }
 
+std::string points_done(const BenchReport& r) {
+  return std::to_string(r.points_done) + " of " + std::to_string(r.points_total) + " bench points";
+}
+
 }  // namespace
 
 std::vector<BenchPoint> default_bench_points(const Params& base, const std::string& name) {
@@ -481,19 +486,25 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
         << " cycle on one thread (measured again on as many threads as a row is given); x bound = "
            "a row's cycles per frame over the bound's\n";
   bench.print_header();
-  std::size_t done = 0;
-  for (const auto& pt : o.points) {
-    stop_if_interrupted(std::to_string(done) + " of " + std::to_string(o.points.size()) +
-                        " bench points");
-    progress("bench: point " + std::to_string(++done) + " of " + std::to_string(o.points.size()) +
-             ": " + point_label(pt));
-    validate(pt.params);
-    out << "-- " << point_label(pt) << "\n";
-    const Inputs in = make_inputs(pt.params, pt.batch);
-    std::vector<PoiRecord> expected(poi_count(pt.params) * static_cast<std::size_t>(pt.batch));
-    OpCounts counts;
-    find_backend(kReferenceBackend).create({})->run(in.batch_for(0), pt.params, expected, counts);
-    for (const BackendRow* row : rows) bench.measure(*row, pt, in, expected, report);
+  report.points_total = o.points.size();
+  try {
+    for (const auto& pt : o.points) {
+      stop_if_interrupted(points_done(report));
+      progress("bench: point " + std::to_string(report.points_done + 1) + " of " +
+               std::to_string(o.points.size()) + ": " + point_label(pt));
+      validate(pt.params);
+      out << "-- " << point_label(pt) << "\n";
+      const Inputs in = make_inputs(pt.params, pt.batch);
+      std::vector<PoiRecord> expected(poi_count(pt.params) * static_cast<std::size_t>(pt.batch));
+      OpCounts counts;
+      find_backend(kReferenceBackend).create({})->run(in.batch_for(0), pt.params, expected, counts);
+      for (const BackendRow* row : rows) bench.measure(*row, pt, in, expected, report);
+      ++report.points_done;
+    }
+  } catch (const Interrupted& e) {  // the rows measured so far stay: each one is whole
+    report.complete = false;
+    report.stop = Interrupted(e.signal, std::string(e.signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                                            " after " + points_done(report));
   }
   progress("");
   for (const auto& s : report.skipped) out << "skipped " << s << "\n";

@@ -3,10 +3,12 @@
 // clock; speed-ups only between rows of the same clock.
 #pragma once
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "backend.hpp"
+#include "interrupt.hpp"
 #include "result_fields.hpp"
 #include "result_json.hpp"
 
@@ -86,6 +88,12 @@ struct BenchReport {
   // What each opened backend ran (provenance.hpp: describe_backend), in registry order.
   Json backends = Json::array();
   std::string command;  // the command line that made this report, for its JSON
+  // False when a signal stopped the bench: `rows` holds every row it measured, the points before
+  // the stopped one whole, and `stop` says which signal (the command writes the file, then
+  // throws it).
+  bool complete = true;
+  std::size_t points_done = 0, points_total = 0;
+  std::optional<Interrupted> stop;
 };
 
 // The default sweeps around `base` (the profile with any --set applied).
@@ -101,7 +109,8 @@ constexpr double kQuickMinSeconds = 0.05;
 void set_sweep_threads(std::vector<BenchPoint>& points, int threads);
 
 // Runs every point: prints the backends with what each runs, then one aligned table (a group of
-// rows per point, the bound's ratio and the speed-up over ref-original as columns).
+// rows per point, the bound's ratio and the speed-up over ref-original as columns). A signal
+// stops it between samples: the report then holds what was measured, marked incomplete.
 BenchReport run_bench(const BenchOptions& o, std::ostream& out);
 
 // A row's fields as the bench's JSON and CSV carry them (bench_json.cpp): the only list of them.

@@ -205,6 +205,11 @@ BenchComparison compare_bench_files(std::span<const BenchFile> files) {
       c.warnings.push_back(f.label + " was measured on a disturbed machine (" + why +
                            "): a significant change may be that load, not the build; rerun "
                            "both on a quiet machine");
+    if (!f.bench.value("complete", true))
+      c.warnings.push_back(f.label + " is incomplete: a signal stopped its bench after " +
+                           std::to_string(f.bench.value("points_done", 0L)) + " of " +
+                           std::to_string(f.bench.value("points_total", 0L)) +
+                           " points; only the points it measured are compared");
   }
   // The baseline's measured rows by point, each point's clocks in its file's order.
   std::map<PointKey, std::vector<const Json*>> base;

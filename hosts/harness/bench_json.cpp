@@ -59,7 +59,12 @@ std::span<const ResultField<BenchRow>> bench_row_fields() { return kBenchRowFiel
 Json bench_json(const BenchReport& r) {
   Json rows = Json::array();
   for (const BenchRow& b : r.rows) rows.push_back(fields_json(bench_row_fields(), b));
+  // "complete": false: a signal stopped the bench after `points_done` whole points of
+  // `points_total`; every row measured is kept (the stopped point's finished backends too).
   Json j{{"command", r.command},
+         {"complete", r.complete},
+         {"points_done", r.points_done},
+         {"points_total", r.points_total},
          {"backends", r.backends},
          {"machine", machine_json(r.machine)},
          // Which machine and build: what pxflow compare names each file by.

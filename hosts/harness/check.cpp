@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <memory>
@@ -10,6 +12,7 @@
 #include <sstream>
 
 #include "check_counts.hpp"
+#include "check_resume.hpp"
 #include "counted.hpp"
 #include "errors.hpp"
 #include "estimate.hpp"
@@ -211,11 +214,149 @@ BackendState state_from_name(const std::string& name) {
 }
 
 std::string CheckReport::verdict() const {
+  if (!complete) return "incomplete";
   if (failed > 0) return "failed";
   if (!missing_shards.empty()) return "incomplete";
   if (compared == 0) return "nothing-checked";
   return "passed";
 }
+
+namespace {
+
+// A contender's tallies before a case, to undo a case a signal cut short: the file then holds
+// whole cases only, and a resumed run checks that case again from its start.
+struct Mark {
+  BackendState state;
+  long passed, failed, not_applicable, pairs;
+  double seconds;
+  std::size_t failures, limits;
+};
+
+Mark mark(const BackendOutcome& b) {
+  return {b.state, b.passed,  b.failed,          b.not_applicable,
+          b.pairs, b.seconds, b.failures.size(), b.limits.size()};
+}
+
+void undo(BackendOutcome& b, const Mark& m) {
+  b.state = m.state, b.passed = m.passed, b.failed = m.failed;
+  b.not_applicable = m.not_applicable, b.pairs = m.pairs, b.seconds = m.seconds;
+  b.failures.resize(m.failures), b.limits.resize(m.limits);
+}
+
+std::string cases_done(const CheckReport& r) {
+  return std::to_string(r.cases) + " of " + counted(r.range.size(), "case");
+}
+
+// One case: ref-original's answer and its own counts, then every opened contender against it.
+// Returns 1 when ref-original miscounts (a failure no backend's tally holds), else 0.
+long check_case(Checker& checker, std::vector<Contender>& contenders, const CheckCase& c,
+                long index, std::ostream& out) {
+  std::vector<FramePair> views;
+  for (const auto& p : c.pairs) views.push_back(p.view());
+  const auto r0 = std::chrono::steady_clock::now();
+  const ReferenceAnswer e = reference_answer(views, c.params);
+  const double reference_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - r0).count();
+  // The answer's own counts: a miscounting ref-original would hold every row to wrong counts.
+  const std::string reference_counts =
+      counts_verdict({"ref-original", c.name, c.setting}, RefVariant::kOriginal, e.counts,
+                     e.records, c.params, c.pairs.size());
+  if (!reference_counts.empty()) out << reference_counts << '\n' << std::flush;
+  for (auto& k : contenders)
+    if (k.backend) checker.run_case(k, c, e, index, reference_seconds);
+  return reference_counts.empty() ? 0 : 1;
+}
+
+// PXFLOW_TEST_STOP_AFTER_CASES=N, a test-only knob (docs/harness.md, "Stopping and resuming a
+// campaign"): after N cases of this run the check raises SIGINT on itself, exactly as a Ctrl-C
+// there would, so that tests stop a campaign at a known case. 0 (unset): never.
+long test_stop_after_cases() {
+  const char* n = std::getenv("PXFLOW_TEST_STOP_AFTER_CASES");
+  return n ? std::strtol(n, nullptr, 10) : 0;
+}
+
+// Runs the cases of the range not done yet, in order; a signal stops it between cases (a case
+// it cut short is undone) and throws Interrupted.
+void run_cases(const CheckOptions& o, Campaign& campaign, std::vector<Contender>& contenders,
+               CheckReport& report, long& reference_failures, std::ostream& out) {
+  Checker checker(o, out);
+  // Totals on the live line for the fixed corpus as for a fuzz campaign: this run's share.
+  const std::string of_cases = " of " + counted(report.range.size(), "case") + ", ";
+  const std::string of_pairs = " of " + counted(campaign.pairs_in(report.range), "pair");
+  const long stop_after = test_stop_after_cases(), first = report.range.first + report.cases;
+  for (long index = first; index < report.range.end; ++index) {
+    stop_if_interrupted(cases_done(report));
+    const CheckCase c = campaign.take(index);
+    progress("check: " + std::to_string(report.cases + 1) + of_cases +
+             std::to_string(report.pairs + static_cast<long>(c.pairs.size())) + of_pairs);
+    std::vector<Mark> marks;
+    for (const Contender& k : contenders) marks.push_back(mark(k.outcome));
+    try {
+      reference_failures += check_case(checker, contenders, c, index, out);
+    } catch (const Interrupted&) {
+      for (std::size_t i = 0; i < contenders.size(); ++i) undo(contenders[i].outcome, marks[i]);
+      throw;
+    }
+    ++report.cases;
+    report.pairs += static_cast<long>(c.pairs.size());
+    if (index + 1 - first == stop_after) std::raise(SIGINT);
+  }
+}
+
+void describe_campaign(CheckReport& report, const Campaign& campaign, const CheckOptions& o,
+                       const std::vector<Contender>& contenders) {
+  CampaignInfo& info = report.campaign;
+  info.kind = campaign.kind();
+  info.fuzz_pairs = o.fuzz_pairs;
+  info.generated_only = !o.corpus.real;
+  info.fingerprint = campaign.fingerprint();
+  info.settings = campaign.settings();
+  for (const auto& k : contenders) info.backends.push_back(k.row->name);
+  info.require = o.require;
+  info.cases = campaign.cases();
+  info.pairs = campaign.pairs();
+  report.options = {o.corpus.data_dir,    o.backend_options.device,  o.global_options,
+                    o.corpus.limits_only, o.backend_options.threads, o.isolation.case_timeout};
+}
+
+// Takes over the stopped run `o.resume`: its cases done, its tallies and failure lines. Returns
+// its failures no backend's tally holds.
+long take_over(const CheckOptions& o, CheckReport& report, std::vector<Contender>& contenders) {
+  const CheckReport& before = *o.resume;
+  const std::string label = "--resume " + o.resume_file;
+  check_same_campaign(label, before, report);
+  for (std::size_t i = 0; i < contenders.size(); ++i) {
+    Contender& k = contenders[i];
+    check_same_backend(label, before.backends[i], k.outcome, k.backend != nullptr);
+    k.outcome = before.backends[i];
+    if (k.outcome.state == BackendState::kIncomplete) k.outcome.state = BackendState::kPassed;
+  }
+  report.cases = before.cases;
+  report.pairs = before.pairs;
+  return reference_count_failures(before);
+}
+
+// The totals over the backends; a stopped run's backends that failed nothing yet are incomplete.
+void tally(CheckReport& report, std::vector<Contender>& contenders, long reference_failures) {
+  report.failed = reference_failures;
+  for (auto& k : contenders) {
+    BackendOutcome& b = k.outcome;
+    if (b.state == BackendState::kReference) {
+      b.reason = "the answer the others are checked against";
+    } else if (!k.backend) {
+      (b.state == BackendState::kFailed ? report.failed : report.skipped) += report.cases;
+    } else {
+      report.passed += b.passed;
+      report.failed += b.failed;
+      report.not_applicable += b.not_applicable;
+      report.compared += b.passed + b.failed;
+      if (!report.complete && b.state == BackendState::kPassed) b.state = BackendState::kIncomplete;
+    }
+    report.backends.push_back(b);
+  }
+}
+
+}  // namespace
 
 CheckReport run_check(const CheckOptions& o, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -236,19 +377,10 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
                      (o.fuzz_pairs > 0 ? "batches of 256 pairs" : "the fixed corpus") +
                      "): at most that many shards (see pxflow check --help)");
   report.range = shard_range(campaign.cases(), o.shard);
-  CampaignInfo& info = report.campaign;
-  info.kind = campaign.kind();
-  info.fuzz_pairs = o.fuzz_pairs;
-  info.generated_only = !o.corpus.real;
-  info.fingerprint = campaign.fingerprint();
-  info.settings = campaign.settings();
-  for (const auto& k : contenders) info.backends.push_back(k.row->name);
-  info.require = o.require;
-  info.cases = campaign.cases();
-  info.pairs = campaign.pairs();
+  describe_campaign(report, campaign, o, contenders);
+  long reference_failures = o.resume ? take_over(o, report, contenders) : 0;
 
   if (!o.banner.empty()) out << o.banner << "\n";
-  Checker checker(o, out);
   for (auto& k : contenders) {
     if (k.backend || k.outcome.state == BackendState::kReference) continue;
     if (k.outcome.state == BackendState::kFailed)
@@ -256,56 +388,17 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
     else
       out << "skip " << k.row->name << " (" << k.outcome.reason << ")\n";
   }
-
-  // Totals on the live line for the fixed corpus as for a fuzz campaign: this run's share.
-  const std::string of_cases = " of " + counted(report.range.size(), "case") + ", ";
-  const std::string of_pairs = " of " + counted(campaign.pairs_in(report.range), "pair");
-  for (long index = report.range.first; index < report.range.end; ++index) {
-    stop_if_interrupted(counted(report.cases, "finished case"));
-    const CheckCase c = campaign.take(index);
-    ++report.cases;
-    report.pairs += static_cast<long>(c.pairs.size());
-    progress("check: " + std::to_string(report.cases) + of_cases + std::to_string(report.pairs) +
-             of_pairs);
-    std::vector<FramePair> views;
-    for (const auto& p : c.pairs) views.push_back(p.view());
-    const auto r0 = std::chrono::steady_clock::now();
-    const ReferenceAnswer e = reference_answer(views, c.params);
-    const double reference_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - r0).count();
-    // The answer's own counts: a miscounting ref-original would hold every row to wrong counts.
-    const std::string reference_counts =
-        counts_verdict({"ref-original", c.name, c.setting}, RefVariant::kOriginal, e.counts,
-                       e.records, c.params, c.pairs.size());
-    if (!reference_counts.empty()) {
-      out << reference_counts << '\n' << std::flush;
-      ++report.failed;
-    }
-    try {
-      for (auto& k : contenders)
-        if (k.backend) checker.run_case(k, c, e, index, reference_seconds);
-    } catch (const Interrupted&) {
-      stop_if_interrupted(counted(report.cases - 1, "finished case"));  // says what was done
-      throw;
-    }
+  try {
+    run_cases(o, campaign, contenders, report, reference_failures, out);
+  } catch (const Interrupted& e) {
+    report.complete = false;
+    report.stop = Interrupted(e.signal, std::string(e.signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                                            " after " + cases_done(report));
   }
   progress("");  // clears the live line
-
-  for (auto& k : contenders) {
-    BackendOutcome& b = k.outcome;
-    if (b.state == BackendState::kReference) {
-      b.reason = "the answer the others are checked against";
-    } else if (!k.backend) {
-      (b.state == BackendState::kFailed ? report.failed : report.skipped) += report.cases;
-    } else {
-      report.passed += b.passed;
-      report.failed += b.failed;
-      report.not_applicable += b.not_applicable;
-      report.compared += b.passed + b.failed;
-    }
-    report.backends.push_back(b);
-  }
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  tally(report, contenders, reference_failures);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() +
+                   (o.resume ? o.resume->seconds : 0);
   return report;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,11 +11,14 @@
 #include "check_campaign.hpp"
 #include "check_corpus.hpp"
 #include "check_repro.hpp"
+#include "interrupt.hpp"
 #include "isolated_row.hpp"
 #include "result_fields.hpp"
 #include "result_json.hpp"
 
 namespace pxflow {
+
+struct CheckReport;
 
 struct CheckOptions {
   std::vector<std::string> backends;  // empty: every registered backend
@@ -34,6 +38,11 @@ struct CheckOptions {
   std::string banner;
   // What the results file records of the run: the command and the binary that ran it.
   std::string command, pxflow_version, pxflow_commit;
+  std::string global_options;  // " --dut ...": recorded for `check --resume` (RunOptions)
+  // A stopped run of this campaign (check_resume.hpp): this run goes on from its first case not
+  // done, with its tallies and failure lines, as if it had never stopped.
+  const CheckReport* resume = nullptr;
+  std::string resume_file;  // its file, for messages
 };
 
 // How a backend came out of a check (JSON and reports spell it with state_name()).
@@ -69,6 +78,16 @@ struct CampaignInfo {
   bool operator==(const CampaignInfo&) const = default;
 };
 
+// What shaped a single run beyond its campaign (the file's "options"): what `pxflow check
+// --resume` runs the rest of a stopped campaign with.
+struct RunOptions {
+  std::string data_dir, device, global_options;
+  bool limits_only = false;
+  int threads = 0;
+  double case_timeout = 0;  // --case-timeout; 0: the scaled allowance
+  bool operator==(const RunOptions&) const = default;
+};
+
 // One shard's file in a merged result.
 struct MergedShard {
   std::string file;
@@ -91,11 +110,19 @@ struct CheckReport {
   double seconds = 0;  // wall time of the run (merged: summed over the shards)
   std::vector<MergedShard> merged_from;
   std::vector<int> missing_shards;  // merged: the shards not given (incomplete)
+  RunOptions options;               // of a single run
+  // False when a signal stopped the run: it holds the cases [range.first, range.first + cases)
+  // and `stop` says which signal (the command writes the file, then throws it).
+  bool complete = true;
+  std::optional<Interrupted> stop;
 
-  // "failed" (something failed), "incomplete" (a merge without every shard), "nothing-checked"
-  // (no backend but the reference ran a case: a run of skips is not green) or "passed".
+  // "incomplete" (a run stopped by a signal, whatever it found so far; a merge without every
+  // shard when nothing failed), "failed" (something failed), "nothing-checked" (no backend but
+  // the reference ran a case: a run of skips is not green) or "passed".
   std::string verdict() const;
   bool ok() const { return verdict() == "passed"; }
+  // The cases this run was to check: its shard's (a merge: the whole campaign's).
+  long cases_total() const { return merged_from.empty() ? range.size() : campaign.cases; }
 };
 
 // Runs the check, printing progress lines to `out` as it goes (and a live counter to stderr

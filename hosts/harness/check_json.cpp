@@ -57,6 +57,27 @@ CampaignInfo campaign_from_json(const Json& j) {
   return c;
 }
 
+Json options_json(const CheckReport& r) {
+  if (!r.merged_from.empty()) return {};
+  const RunOptions& o = r.options;
+  return {{"data", o.data_dir},
+          {"limits_only", o.limits_only},
+          {"device", o.device},
+          {"threads", o.threads},
+          {"case_timeout", o.case_timeout},
+          {"global_options", o.global_options}};
+}
+
+void options_from_json(CheckReport& r, const Json& j) {
+  RunOptions& o = r.options;
+  j.at("data").get_to(o.data_dir);
+  j.at("limits_only").get_to(o.limits_only);
+  j.at("device").get_to(o.device);
+  j.at("threads").get_to(o.threads);
+  j.at("case_timeout").get_to(o.case_timeout);
+  j.at("global_options").get_to(o.global_options);
+}
+
 Json shard_json(const Shard& s, const CaseRange& r) {
   Json j{{"index", s.index}, {"count", s.count}};
   j.update(range_json(r));
@@ -97,12 +118,18 @@ void backends_from_json(CheckReport& r, const Json& all) {
     fields_from_json(backend_outcome_fields(), j, r.backends.emplace_back());
 }
 
-// A single run's file has `shard`; a merge's has `merged_from` and `missing_shards` instead
-// (check_from_json requires one set). The check itself has no CSV file: its csv flags are unused.
+// A single run's file has `shard` and `options`; a merge's has `merged_from` and
+// `missing_shards` instead (check_from_json requires one set). "complete": false marks a run a
+// signal stopped after `cases` of its `cases_total` (files older than the key are complete).
+// The check itself has no CSV file: its csv flags are unused.
 const std::array kCheckReportFields{
     ResultField<CheckReport>{"verdict", [](const CheckReport& r) -> Json { return r.verdict(); }},
+    ResultField<CheckReport>{"complete", &member_get<&CheckReport::complete>,
+                             &member_set<&CheckReport::complete>, false, true},
     member_field<&CheckReport::seed>("seed"),
     member_field<&CheckReport::cases>("cases"),
+    ResultField<CheckReport>{"cases_total",
+                             [](const CheckReport& r) -> Json { return r.cases_total(); }},
     member_field<&CheckReport::pairs>("pairs"),
     member_field<&CheckReport::passed>("passed"),
     member_field<&CheckReport::failed>("failed"),
@@ -132,6 +159,7 @@ const std::array kCheckReportFields{
           r.range = {s.at("first_case").get<long>(), s.at("end_case").get<long>()};
         },
         false, true},
+    ResultField<CheckReport>{"options", &options_json, &options_from_json, false, true},
     ResultField<CheckReport>{"merged_from", &merged_from_json, &merged_from_from_json, false, true},
     ResultField<CheckReport>{"missing_shards",
                              [](const CheckReport& r) -> Json {

@@ -44,6 +44,10 @@ void check_consistent(const ShardFile& f) {
   if (!r.merged_from.empty())
     throw InputError(f.file + ": a merged file: give the shard files themselves" +
                      std::string(kHelp));
+  if (!r.complete)
+    throw InputError(f.file + ": a stopped check (" + std::to_string(r.cases) + " of " +
+                     std::to_string(r.cases_total()) + " cases): finish it first with pxflow " +
+                     "check --resume " + f.file + kHelp);
   const CaseRange want = shard_range(r.campaign.cases, r.shard);
   bool ok = r.shard.index >= 1 && r.shard.index <= r.shard.count && r.range.first == want.first &&
             r.range.end == want.end && r.cases == want.size() &&

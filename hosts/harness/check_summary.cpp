@@ -44,11 +44,15 @@ std::string scope(const CheckReport& r) {
       s += "\nincomplete: " + missing_shards_text(r.missing_shards, given.front().count);
     return s;
   }
+  const std::string stopped =
+      r.complete ? ""
+                 : "\nincomplete: stopped after " + counted(r.cases, "case") + " of " +
+                       std::to_string(r.cases_total()) + " (pxflow check --resume FILE goes on)";
   if (r.shard.count > 1)
     return "shard " + r.shard.text() + ": " + ran + " (cases " + std::to_string(r.range.first) +
            ".." + std::to_string(r.range.end - 1) + " of the campaign's " +
-           std::to_string(r.campaign.cases) + ")" + format(" in %.2f s", r.seconds);
-  return ran + format(" in %.2f s", r.seconds);
+           std::to_string(r.campaign.cases) + ")" + format(" in %.2f s", r.seconds) + stopped;
+  return ran + format(" in %.2f s", r.seconds) + stopped;
 }
 
 // "limits/KIND of ROW,ROW SETTING": the entries found from this row's own predicate, short.

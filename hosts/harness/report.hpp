@@ -70,6 +70,10 @@ ReportOutputs plan_report(OutputPlan& plan, const std::string& out_dir,
 // report can write (a hand-edited manifest cannot delete anything else).
 void write_report(ReportOutputs& out, const ReportInputs& in);
 
+// The manifest of a report a signal stopped: the previous report's files and `kept`, the files
+// the stopped one wrote (its check), so that the folder stays the report's.
+void write_stopped_manifest(ReportOutputs& out, const std::vector<std::string>& kept);
+
 // Position of a backend in the registry (backend_rows()); names this build does not have (a
 // results file of another build) come after every row. Every table and chart sorts by it.
 std::size_t registry_rank(const std::string& backend);

@@ -183,8 +183,23 @@ Section conformance(const Json& check, const std::string& cmd) {
     const int count = from.empty() ? 0 : from.front().value("count", 0);
     s.text += " Incomplete: " + missing_shards_text(missing, count) + ".";
   }
+  if (!check.value("complete", true))
+    s.text += " **Incomplete: a signal stopped this check after " +
+              std::to_string(check.value("cases", 0L)) + " of " +
+              std::to_string(check.value("cases_total", 0L)) +
+              " cases; the counts are those of the cases done (pxflow check --resume FILE "
+              "finishes it).**";
   for (const Json* b : backends) s.text += failure_lines(*b);
   return s;
+}
+
+// A bench a signal stopped ("complete": false) is shown with what it measured, and says so.
+std::string stopped_bench_note(const Json& bench) {
+  if (bench.value("complete", true)) return "";
+  return " **Incomplete: a signal stopped this bench after " +
+         std::to_string(bench.value("points_done", 0L)) + " of " +
+         std::to_string(bench.value("points_total", 0L)) +
+         " points; the rows are those it measured.**";
 }
 
 Section throughput(const Json& bench, const std::string& cmd) {
@@ -203,7 +218,8 @@ Section throughput(const Json& bench, const std::string& cmd) {
   for (const auto& r : bench["rows"])
     if (!pick && timed(r) && host_clock(r)) pick = &r;
   if (!pick) {
-    s.text = "No row was timed by the host clock. Command: `" + cmd + "`.";
+    s.text =
+        "No row was timed by the host clock. Command: `" + cmd + "`." + stopped_bench_note(bench);
     return s;
   }
   const std::string point = point_name(*pick);
@@ -260,7 +276,7 @@ Section throughput(const Json& bench, const std::string& cmd) {
   if (std::any_of(model_rows.begin(), model_rows.end(),
                   [](const Json* r) { return counts_instructions(*r); }))
     s.text += kInstructionNote;
-  s.text += bound_text(bench);
+  s.text += bound_text(bench) + stopped_bench_note(bench);
   if (!host.bars.empty()) s.charts.push_back(host);
   if (!sim.bars.empty()) s.charts.push_back(sim);
   return s;

@@ -142,7 +142,7 @@ TEST_CASE("report: a reused folder loses only the files the report wrote there",
         "report.md\nreport.html\nresults.json\nresults.csv\nconformance.csv\naccuracy.csv\n");
 }
 
-TEST_CASE("SIGINT and SIGTERM stop a run soon, leave the previous file, exit 130 and 143",
+TEST_CASE("SIGINT and SIGTERM stop a run soon, exit 130 and 143, --json keeps what was done",
           "[cli][lost]") {
   for (const auto& [sig, code] : {std::pair{"INT", "130"}, std::pair{"TERM", "143"}}) {
     test::TempDir dir;
@@ -169,7 +169,9 @@ TEST_CASE("SIGINT and SIGTERM stop a run soon, leave the previous file, exit 130
     INFO("stopped " << ms << " ms after the signal");
     CHECK(r.err.find(std::string("pxflow: interrupted: SIG") + sig + " after") !=
           std::string::npos);
-    CHECK(slurp(json) == "{\"previous\": true}\n");
+    // The previous file is replaced whole by the cases checked (docs/harness.md, "Stopping and
+    // resuming a campaign"), and no temporary is left.
+    CHECK(slurp(json).find("\"complete\": false") != std::string::npos);
     CHECK(test::run_program("/bin/ls", {"-A", dir.path("")}).out == "err.txt\nprev.json\n");
   }
 }
