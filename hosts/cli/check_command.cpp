@@ -143,7 +143,7 @@ CheckReport read_stopped_check(const CheckArgs& a, const BuildIdentity& built) {
   const std::string label = "--resume " + a.resume_path;
   Json j;
   try {
-    j = Json::parse(read_input_text(label, a.resume_path));
+    j = Json::parse(read_updated_text(label, a.resume_path));
   } catch (const Json::exception&) {
     throw InputError(label + ": not valid JSON (expected a file of pxflow check --json)");
   }

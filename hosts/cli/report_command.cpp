@@ -27,6 +27,7 @@
 #include "registry.hpp"
 #include "report.hpp"
 #include "sample_data.hpp"
+#include "system_files.hpp"
 #include "truth_pairs.hpp"
 
 namespace pxflow::cli {
@@ -318,7 +319,8 @@ std::optional<CheckReport> kept_check(const ReportArgs& a, const std::string& co
   if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
   CheckReport r;
   try {
-    r = check_from_json(Json::parse(read_input_text(path, path)));
+    // The report's own file in its own folder: read back, not an input (the run replaces it).
+    r = check_from_json(Json::parse(read_own_output(path)));
   } catch (const std::exception& e) {
     std::cout << "== " << path << ": not a check file (" << e.what() << "): checked anew\n";
     return std::nullopt;

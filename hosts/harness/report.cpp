@@ -172,14 +172,10 @@ const std::vector<std::string>& report_file_names() {
 }  // namespace
 
 void write_stopped_manifest(ReportOutputs& out, const std::vector<std::string>& kept) {
-  std::string manifest = out.previous_manifest;
-  std::istringstream previous(out.previous_manifest);
-  std::vector<std::string> names;
-  for (std::string name; std::getline(previous, name);) names.push_back(name);
-  if (!manifest.empty() && manifest.back() != '\n') manifest += '\n';
+  std::vector<std::string> names = out.previous;
   for (const std::string& name : kept)
-    if (std::find(names.begin(), names.end(), name) == names.end()) manifest += name + "\n";
-  out.files[kManifest]->write(manifest);
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  out.files[kManifest]->write(manifest_text(names));
 }
 
 std::size_t registry_rank(const std::string& backend) {

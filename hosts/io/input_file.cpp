@@ -52,8 +52,9 @@ bool is_stream(const std::string& path) {
   return fs::is_fifo(fs::status(path, ec));
 }
 
-void require_readable_input(const std::string& label, const std::string& path) {
-  note_input(path);  // before any refusal: a path named as an input is never written
+namespace {
+
+void require_readable(const std::string& label, const std::string& path) {
   require_existing(label, path);
   std::error_code ec;
   const auto st = fs::status(path, ec);
@@ -64,29 +65,7 @@ void require_readable_input(const std::string& label, const std::string& path) {
   throw InputError(label + ": not a regular file or a pipe");
 }
 
-std::vector<std::uint8_t> read_input(const std::string& label, const std::string& path,
-                                     std::uint64_t max_bytes, const std::string& why) {
-  require_readable_input(label, path);
-  const Fd in{open_or_stop(path, label)};
-  if (in.fd < 0)
-    throw InputError(label + ": cannot open for reading (" + std::strerror(errno) + ")");
-  struct stat st {};
-  if (::fstat(in.fd, &st) == 0 && S_ISREG(st.st_mode) &&
-      static_cast<std::uint64_t>(st.st_size) > max_bytes)
-    throw InputError(label + ": holds " + count_text(st.st_size) + ", " + why);
-  std::vector<std::uint8_t> bytes;
-  std::uint8_t chunk[1 << 16];
-  for (;;) {
-    const long n = read_or_stop(in.fd, chunk, sizeof chunk, label);
-    if (n < 0) throw InputError(label + ": read failed (" + std::strerror(errno) + ")");
-    if (n == 0) break;
-    if (bytes.size() + static_cast<std::uint64_t>(n) > max_bytes)
-      throw InputError(label + ": holds more than " + count_text(max_bytes) + ", " + why);
-    bytes.insert(bytes.end(), chunk, chunk + n);
-  }
-  if (bytes.empty()) throw InputError(label + ": file is empty");
-  return bytes;
-}
+}  // namespace
 
 int open_or_stop(const std::string& path, const std::string& label) {
   for (;;) {
@@ -119,9 +98,54 @@ long read_or_stop(int fd, void* buf, std::size_t n, const std::string& label) {
   }
 }
 
+namespace {
+
+std::vector<std::uint8_t> read_bytes(const std::string& label, const std::string& path,
+                                     std::uint64_t max_bytes, const std::string& why) {
+  require_readable(label, path);
+  const Fd in{open_or_stop(path, label)};
+  if (in.fd < 0)
+    throw InputError(label + ": cannot open for reading (" + std::strerror(errno) + ")");
+  struct stat st {};
+  if (::fstat(in.fd, &st) == 0 && S_ISREG(st.st_mode) &&
+      static_cast<std::uint64_t>(st.st_size) > max_bytes)
+    throw InputError(label + ": holds " + count_text(st.st_size) + ", " + why);
+  std::vector<std::uint8_t> bytes;
+  std::uint8_t chunk[1 << 16];
+  for (;;) {
+    const long n = read_or_stop(in.fd, chunk, sizeof chunk, label);
+    if (n < 0) throw InputError(label + ": read failed (" + std::strerror(errno) + ")");
+    if (n == 0) break;
+    if (bytes.size() + static_cast<std::uint64_t>(n) > max_bytes)
+      throw InputError(label + ": holds more than " + count_text(max_bytes) + ", " + why);
+    bytes.insert(bytes.end(), chunk, chunk + n);
+  }
+  if (bytes.empty()) throw InputError(label + ": file is empty");
+  return bytes;
+}
+
+}  // namespace
+
+void require_readable_input(const std::string& label, const std::string& path) {
+  note_input(path);  // before any refusal: a path named as an input is never written
+  require_readable(label, path);
+}
+
+std::vector<std::uint8_t> read_input(const std::string& label, const std::string& path,
+                                     std::uint64_t max_bytes, const std::string& why) {
+  note_input(path);
+  return read_bytes(label, path, max_bytes, why);
+}
+
 std::string read_input_text(const std::string& label, const std::string& path) {
   const std::vector<std::uint8_t> bytes =
       read_input(label, path, kMaxTextBytes, "too large for a JSON or list file");
+  return std::string(bytes.begin(), bytes.end());
+}
+
+std::string read_updated_text(const std::string& label, const std::string& path) {
+  const std::vector<std::uint8_t> bytes =
+      read_bytes(label, path, kMaxTextBytes, "too large for a JSON or list file");
   return std::string(bytes.begin(), bytes.end());
 }
 

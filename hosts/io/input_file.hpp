@@ -33,4 +33,8 @@ int open_or_stop(const std::string& path, const std::string& label);
 // A text input (JSON, a list of pairs): read_input with a bound no file pxflow writes comes near.
 std::string read_input_text(const std::string& label, const std::string& path);
 
+// The same for a file the command then replaces whole with its result (check --resume FILE, as
+// sed -i does): checked alike, but not noted as an input, so the result may take its place.
+std::string read_updated_text(const std::string& label, const std::string& path);
+
 }  // namespace pxflow
