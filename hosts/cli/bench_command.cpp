@@ -82,6 +82,22 @@ std::vector<BenchPoint> bench_points(const BenchArgs& a) {
   return pts;
 }
 
+// Exit 1 when a row's records differ from ref-original or nothing was timed at all: a bench
+// that measured nothing is no success.
+int bench_verdict(const BenchReport& r, std::ostream& out) {
+  int timed = 0, differ = 0;
+  for (const BenchRow& row : r.rows) {
+    timed += !row.samples_ns_per_frame.empty();
+    differ += row.note.find("records differ") != std::string::npos;
+  }
+  if (differ > 0)
+    out << "pxflow bench: " << counted(differ, "row") << " not timed because its records differ "
+        << "from ref-original (exit 1; pxflow check names the difference)\n";
+  else if (timed == 0)
+    out << "pxflow bench: nothing was timed (exit 1)\n";
+  return differ > 0 || timed == 0 ? 1 : 0;
+}
+
 int run_bench_command(const BenchArgs& a) {
   if (!a.backend.empty() && !a.backends.empty())
     throw InputError("--backend " + a.backend + ": given with --backends " + a.backends +
@@ -115,7 +131,7 @@ int run_bench_command(const BenchArgs& a) {
                          : a.json_path + " holds its rows, \"complete\": false";
     throw Interrupted(r.stop->signal, std::string(r.stop->what()) + "; " + where);
   }
-  return 0;
+  return bench_verdict(r, out);
 }
 
 }  // namespace

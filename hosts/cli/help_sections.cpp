@@ -72,8 +72,8 @@ std::string help_sections(const std::vector<std::string>& examples) {
       "Exit status:\n" + term_paragraph("0", 3, "Success") +
       term_paragraph("1", 3,
                      "A check failed (or compared nothing but the reference), a backend or a "
-                     "device failed, compare --fail-above found a slowdown, or a result could not "
-                     "be written") +
+                     "device failed, a bench timed nothing or found records that differ, compare "
+                     "--fail-above found a slowdown, or a result could not be written") +
       term_paragraph("2", 3,
                      "Bad input: one line on stderr names the file, option, key or backend; "
                      "found before any work, nothing is written (a bad frame in the middle of a "

@@ -249,3 +249,14 @@ TEST_CASE("no device is left behind a wrapper when pxflow is killed with SIGKILL
   for (const pid_t p : started) CHECK(process_ended(p));
   CHECK_FALSE(process_with_word(word));
 }
+
+TEST_CASE("a bench whose only row's records differ times nothing and exits 1", "[dut][faults]") {
+  // The device answers its first run (the bench's check before timing) with a wrong field.
+  const auto r = run_pxflow(
+      {"bench", "--dut", std::string("f=exec:") + DUT_FAULTY + " wrong-field 1 " + unique_word(),
+       "--backends", "f", "--batch", "1", "--sizes", "64x64", "--min-time", "0"});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("not timed: records differ") != std::string::npos);
+  CHECK(r.out.find("1 row not timed because its records differ") != std::string::npos);
+}
