@@ -270,8 +270,10 @@ class Matrix:
         if r.returncode != expect:
             problems.append("exit %d, expected %d (stderr: %s)" % (r.returncode, expect,
                                                                     r.stderr.strip()[-300:]))
-        if stderr_has and stderr_has not in r.stderr:
-            problems.append("stderr lacks %r: %s" % (stderr_has, r.stderr.strip()[-300:]))
+        wanted = (stderr_has,) if isinstance(stderr_has, str) else stderr_has or ()
+        if wanted and not any(w in r.stderr for w in wanted):
+            problems.append("stderr lacks %s: %s" % (" or ".join(map(repr, wanted)),
+                                                    r.stderr.strip()[-300:]))
         problems += ["temporary left: " + t for t in temporaries(folder)]
         problems += self.fixtures_intact()
         return problems
@@ -382,7 +384,9 @@ class Matrix:
                                  os.path.basename(os.path.dirname(target)),
                                  os.path.basename(target))
         r = self.pxflow_run(command, self.substitute(run_args) + [option["name"], value])
-        return self.common_checks(r, d, 2)
+        # A folder output named by an input file is no folder: refused as such.
+        return self.common_checks(r, d, 2, ("pxflow never overwrites an input",
+                                            "is a file, not a folder", "names no existing folder"))
 
     def inside_folder(self, command, option, run_args, folder, kind):
         d = self.workdir()
@@ -390,7 +394,7 @@ class Matrix:
         if kind != "output-file":
             value = folder
         r = self.pxflow_run(command, self.substitute(run_args) + [option["name"], value])
-        return self.common_checks(r, d, 2)
+        return self.common_checks(r, d, 2, "pxflow never writes where it reads")
 
     def file_scenario(self, command, option, run_args, code, scenario):
         d = self.workdir()
@@ -418,7 +422,8 @@ class Matrix:
             mode = 0o600 if scenario == "mode-0600" else 0o444
             os.chmod(value, mode)
             r = self.pxflow_run(command, args + [option["name"], value])
-            p = self.common_checks(r, d, code if mode == 0o600 else 2)
+            p = self.common_checks(r, d, code if mode == 0o600 else 2,
+                                   None if mode == 0o600 else option["name"] + " ")
             now = open(value, "rb").read()
             if mode == 0o444 and now != old:
                 p.append("a read-only output was replaced")
@@ -521,7 +526,7 @@ class Matrix:
             with open(mine, "w") as f:
                 f.write("a user's file\n")
             r = self.pxflow_run(command, args + [option["name"], value])
-            p = self.common_checks(r, d, 2)
+            p = self.common_checks(r, d, 2, "no file of yours is replaced")
             if open(mine).read() != "a user's file\n":
                 p.append("a user's file in the folder was replaced")
             return p
