@@ -9,9 +9,10 @@
 //     INT` sends two; so does an impatient double Ctrl-C): the wind-down goes on and keeps what
 //     one signal keeps, exit 128 + the first signal.
 //   - One later than that, during a wind-down that is taking long, ends the process at once, in the
-//     handler, with async-signal-safe calls only: every stream in the in-flight table below that
-//     holds records is cut to its last complete record, gets the incomplete marker and is renamed
-//     into place; every other temporary is removed; one line on stderr; _exit(128 + the signal).
+//     handler, with async-signal-safe calls only (the last resort io/in_flight.hpp sets): every
+//     stream that holds records is cut to its last complete record, gets the incomplete marker and
+//     is renamed into place; every other temporary is removed; one line on stderr; _exit(128 + the
+//     signal).
 //   - SIGPIPE (a reader that went away, `| head -3`): a stop like the first SIGINT, exit 141
 //     (128 + SIGPIPE), the streams kept; the write that caused it returns EPIPE, which
 //     io/output_plan turns into the same stop at once (stop_now). It is never the last resort.
@@ -53,32 +54,10 @@ void stop_if_interrupted_while(const std::string& doing);
 // EPIPE on standard output is SIGPIPE's stop.
 [[noreturn]] void stop_now(int sig, const std::string& why);
 
-// The outputs being written, for the handler's last resort above: a fixed table the signal
-// handler reads without locks. io/output_plan keeps it up to date; nothing else needs it.
-namespace in_flight {
+// The handler's last resort on a late second signal (above): a function that keeps or removes the
+// temporaries being written, with async-signal-safe calls only, given the first signal's name.
+// io/in_flight.hpp sets it when it holds a temporary; interrupt itself touches no file.
+using LastResort = void (*)(const char* stopped_by);
+void set_last_resort(LastResort flush);
 
-enum class Kind : int {
-  whole_file,  // removed: the previous file stays
-  stream,      // kept when it holds records: cut to its last record, marked, renamed into place
-  complete,    // written and synced: renamed into place
-  discarded    // being removed
-};
-enum class Marker : int { json_lines, csv };
-
-// A slot for the temporary `tmp` (open as `fd`) of `target`; -1 when the table is full or a
-// path too long (that temporary is then left to the next run's clean-up of dead temporaries).
-int begin(const std::string& tmp, const std::string& target, int fd, Kind kind, Marker marker);
-void set_kind(int slot, Kind kind);
-// A stream's state after a complete record: its size in bytes and its records.
-void record(int slot, std::size_t offset, std::size_t records);
-void end(int slot);
-
-// The last line of a stream that stopped before its end (written into `buf`, at most `cap`
-// bytes; its length), the one definition of the marker, async-signal-safe:
-//   JSON lines: {"incomplete": {"records": 243, "stopped_by": "SIGINT"}}
-//   CSV:        # incomplete: 243 records, stopped by SIGINT
-std::size_t format_marker(char* buf, std::size_t cap, Marker marker, std::size_t records,
-                          const char* stopped_by);
-
-}  // namespace in_flight
 }  // namespace pxflow

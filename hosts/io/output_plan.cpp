@@ -16,6 +16,7 @@
 
 #include "errors.hpp"
 #include "file_inputs.hpp"
+#include "in_flight.hpp"
 #include "interrupt.hpp"
 #include "owned_folder.hpp"
 

@@ -25,7 +25,7 @@
 // intact. A stream (OutputStream: --jsonl, --csv) is appended to as each record completes. A
 // finished stream is renamed into place as it is. A stream that stopped early (a signal, EPIPE
 // on standard output, a bad frame, a failed backend) and holds records is kept: it ends at its
-// last complete record, followed by one marker line (core/interrupt.hpp, in_flight::
+// last complete record, followed by one marker line (io/in_flight.hpp, in_flight::
 // format_marker), so no completed record is lost and a partial file is never taken for a whole
 // one:
 //   JSON lines: {"incomplete": {"records": 243, "stopped_by": "SIGINT"}}

@@ -188,7 +188,8 @@ TEST_CASE("resume: what cannot be resumed is refused with one line, exit 2", "[r
   std::ofstream(dir.path("text.json")) << "not json";
   refused({"check", "--resume", dir.path("text.json")}, "not valid JSON");
   // Another campaign's shards cannot merge a stopped one: it is finished first.
-  refused({"merge", dir.path("m.json"), file}, "finish it first with pxflow check --resume");
+  refused({"merge", "--json", dir.path("m.json"), file},
+          "finish it first with pxflow check --resume");
 }
 
 TEST_CASE("resume: a stopped report keeps its check in --out, the next one finishes it",

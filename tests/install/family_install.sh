@@ -16,7 +16,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 cmake -S "$src" -B "$work" -DBUILD_TESTING=OFF -DPXFLOW_WITH_ALL=OFF -DPXFLOW_MAN_PAGES=OFF \
       -DPXFLOW_WITH_LIBRARY_FAMILY=ON "-DPXFLOW_EXTRA_FAMILY_DIRS=$src/tests/install/library_family" \
       >"$work.log" 2>&1 || { cat "$work.log"; fail "configure"; }
-grep -q "pxflow: installed libraries: pxflow_core pxflow_library_family_kernel pxflow_own_files pxflow_reference" \
+grep -q "pxflow: installed libraries: pxflow_core pxflow_library_family_kernel pxflow_own_files pxflow_interrupt pxflow_reference" \
   "$work.log" || { grep "installed libraries" "$work.log"; fail "the family's library is not installed, or not in link order"; }
 
 targets=$(echo "$work"/CMakeFiles/Export/*/pxflowTargets.cmake)
