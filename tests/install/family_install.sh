@@ -29,7 +29,7 @@ grep -q "libpxflow_library_family_kernel.a" "$work/cmake_install.cmake" \
   || fail "cmake --install would not copy the family's library"
 grep -qx "find_dependency(FakeSdkPackage)" "$work/pxflow-package/pxflowConfig.cmake" \
   || fail "pxflowConfig.cmake does not find the SDK"
-grep -q "^Libs: .*-lpxflow_core -lpxflow_library_family_kernel -lpxflow_own_files -lpxflow_reference .*-L/opt/fakesdk/lib -lfakesdk" \
+grep -q "^Libs: .*-lpxflow_core -lpxflow_library_family_kernel -lpxflow_own_files -lpxflow_interrupt -lpxflow_reference .*-L/opt/fakesdk/lib -lfakesdk" \
   "$work/pxflow-package/pxflow.pc" || { grep Libs "$work/pxflow-package/pxflow.pc"; fail "pxflow.pc"; }
 "$src/tests/install/exported_interface.sh" "$work"  # the family's folder and definition stay its own
 echo "family install: ok"
