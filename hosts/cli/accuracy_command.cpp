@@ -81,7 +81,7 @@ Command add_accuracy_command(CLI::App& app) {
           },
           kAccuracyExamples,
           {"--cases 1 --video-pairs 0 --data {DATA}"},
-          {"--cases 400 --video-pairs 0 --data {DATA} --json {OUT}.json"}};
+          {"--cases 2000 --video-pairs 0 --data {DATA} --json {OUT}.json"}};
 }
 
 }  // namespace pxflow::cli

@@ -187,7 +187,7 @@ Command add_bench_command(CLI::App& app) {
           },
           kBenchExamples,
           {"--backend ref-local --batch 1 --sizes 64x64 --min-time 0"},
-          {"--backend ref-local --batch 1,16 --sizes 64x64,320x240 --min-time 0.5 --json "
+          {"--backend ref-local --batch 1,16 --sizes 64x64,320x240 --min-time 2 --json "
            "{KEPT}.json"}};
 }
 

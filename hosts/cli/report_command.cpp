@@ -511,7 +511,7 @@ Command add_report_command(CLI::App& app) {
           kReportExamples,
           {"--check-json {CHECK} --bench-json {BENCH} --no-accuracy --backends "
            "ref-original,ref-local"},
-          {"--out {OUT} --backends ref-original,ref-local --quick --no-accuracy"}};
+          {"--out {OUT} --backends ref-original,ref-local --no-accuracy"}};
 }
 
 }  // namespace pxflow::cli

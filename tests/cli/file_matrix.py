@@ -655,7 +655,7 @@ class Matrix:
             lines += chunk.count(b"\n") if chunk else 0
             time.sleep(0.01)
         proc.stdout.close()
-        code, err = self.finish(command, proc, STOP_WITHIN)
+        code, err = self.finish(command, proc, 2.0)  # a write soon after: the stop, 141
         expect, note = 141, []
         if code is None:  # it writes nothing to standard output while it works: stop it
             os.kill(proc.pid, signal.SIGINT)
