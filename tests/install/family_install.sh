@@ -22,8 +22,10 @@ grep -q "pxflow: installed libraries: pxflow_core pxflow_library_family_kernel p
 targets=$(echo "$work"/CMakeFiles/Export/*/pxflowTargets.cmake)
 grep -q "add_library(pxflow::library_family_kernel STATIC IMPORTED)" "$targets" \
   || fail "pxflowTargets.cmake does not export the family's library"
-grep -A4 "set_target_properties(pxflow::core PROPERTIES" "$targets" | grep "INTERFACE_LINK_LIBRARIES" \
-  | grep -qF '\$<LINK_ONLY:pxflow::library_family_kernel>;\$<LINK_ONLY:FakeSdk::fake>' \
+# The whole block first: `... | grep -q` under pipefail races with the writer (SIGPIPE).
+core_block=$(grep -A4 "set_target_properties(pxflow::core PROPERTIES" "$targets")
+grep "INTERFACE_LINK_LIBRARIES" <<<"$core_block" \
+  | grep -F '\$<LINK_ONLY:pxflow::library_family_kernel>;\$<LINK_ONLY:FakeSdk::fake>' >/dev/null \
   || fail "pxflow::core does not link the family's library and the SDK"
 grep -q "libpxflow_library_family_kernel.a" "$work/cmake_install.cmake" \
   || fail "cmake --install would not copy the family's library"

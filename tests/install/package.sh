@@ -41,10 +41,14 @@ root=$(ls -d "$tmp"/unpacked/pxflow-*)
 for lib in libOpenCL.so.1 libvulkan.so.1 libstdc++.so.6; do
   [[ -f $root/lib/$lib ]] || fail "the tarball does not bundle $lib"
 done
-readelf -d "$root/bin/pxflow" | grep -q 'RUNPATH.*\[\$ORIGIN/../lib\]' ||
+# Each tool's whole output first: `tool | grep -q` under pipefail fails when grep, done at its
+# first match, leaves the tool writing to a closed pipe (SIGPIPE), a race.
+dynamic=$(readelf -d "$root/bin/pxflow")
+grep -q 'RUNPATH.*\[\$ORIGIN/../lib\]' <<<"$dynamic" ||
   fail "bin/pxflow does not look in \$ORIGIN/../lib"
-ldd "$root/bin/pxflow" | grep -q "libOpenCL.so.1 => $root/bin/../lib/libOpenCL.so.1" ||
-  fail "bin/pxflow does not load the bundled OpenCL loader: $(ldd "$root/bin/pxflow")"
+loads=$(ldd "$root/bin/pxflow")
+grep -q "libOpenCL.so.1 => $root/bin/../lib/libOpenCL.so.1" <<<"$loads" ||
+  fail "bin/pxflow does not load the bundled OpenCL loader: $loads"
 for program in ld qemu-system-arm; do
   ln -s "$(command -v "$program")" "$tmp/tools/$program"
 done
