@@ -2,6 +2,7 @@
 
 #include "json_document.hpp"
 #include "path_options.hpp"
+#include "sample_data.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -32,7 +33,9 @@ Json options_json(const CLI::App& app) {
 }  // namespace
 
 std::string list_options_json(const CLI::App& app, const std::vector<Command>& commands) {
-  Json j{{"global", options_json(app)}, {"commands", Json::array()}};
+  Json j{{"sample_data", kSampleDataDir},  // --data's default, read only by the tests too
+         {"global", options_json(app)},
+         {"commands", Json::array()}};
   for (const Command& c : commands) {
     Json subcommands = Json::array();
     for (const CLI::App* sub : c.app->get_subcommands([](const CLI::App*) { return true; }))

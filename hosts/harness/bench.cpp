@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <csignal>
 #include <cstring>
 #include <map>
 #include <optional>
@@ -503,8 +502,8 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
     }
   } catch (const Interrupted& e) {  // the rows measured so far stay: each one is whole
     report.complete = false;
-    report.stop = Interrupted(e.signal, std::string(e.signal == SIGINT ? "SIGINT" : "SIGTERM") +
-                                            " after " + points_done(report));
+    report.stop =
+        Interrupted(e.signal, std::string(signal_name(e.signal)) + " after " + points_done(report));
   }
   progress("");
   for (const auto& s : report.skipped) out << "skipped " << s << "\n";

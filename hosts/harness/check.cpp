@@ -392,8 +392,8 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
     run_cases(o, campaign, contenders, report, reference_failures, out);
   } catch (const Interrupted& e) {
     report.complete = false;
-    report.stop = Interrupted(e.signal, std::string(e.signal == SIGINT ? "SIGINT" : "SIGTERM") +
-                                            " after " + cases_done(report));
+    report.stop =
+        Interrupted(e.signal, std::string(signal_name(e.signal)) + " after " + cases_done(report));
   }
   progress("");  // clears the live line
   tally(report, contenders, reference_failures);

@@ -34,16 +34,6 @@ Slot g_slots[kSlots];
 
 static_assert(std::atomic<int>::is_always_lock_free);
 
-bool write_all(int fd, const char* bytes, std::size_t n) {
-  while (n > 0) {
-    const ssize_t w = ::write(fd, bytes, n);
-    if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) return false;
-    bytes += w, n -= static_cast<std::size_t>(w);
-  }
-  return true;
-}
-
 // Decimal digits of `v` into `out`; their count.
 std::size_t put_number(char* out, std::size_t v) {
   char digits[24];
@@ -87,9 +77,19 @@ void flush_in_flight(const char* stopped_by) {
 
 }  // namespace
 
+bool write_all(int fd, const char* bytes, std::size_t n) {
+  while (n > 0) {
+    const ssize_t w = ::write(fd, bytes, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    bytes += w, n -= static_cast<std::size_t>(w);
+  }
+  return true;
+}
+
 int begin(const std::string& tmp, const std::string& target, int fd, Kind kind, Marker marker) {
-  set_last_resort(
-      flush_in_flight);  // the second signal's handler keeps or removes these (interrupt.hpp)
+  // The second signal's handler keeps or removes these (interrupt.hpp).
+  set_last_resort(flush_in_flight);
   if (tmp.size() >= PATH_MAX || target.size() >= PATH_MAX) return -1;
   for (int i = 0; i < kSlots; ++i) {
     Slot& s = g_slots[i];

@@ -16,6 +16,10 @@ enum class Kind : int {
 };
 enum class Marker : int { json_lines, csv };
 
+// Writes all of `bytes` to `fd` (EINTR retried); false, errno set, on any failure.
+// Async-signal-safe: the handler's last resort and io/output_plan write through it.
+bool write_all(int fd, const char* bytes, std::size_t n);
+
 // A slot for the temporary `tmp` (open as `fd`) of `target`; -1 when the table is full or a
 // path too long (that temporary is then left to the next run's clean-up of dead temporaries).
 int begin(const std::string& tmp, const std::string& target, int fd, Kind kind, Marker marker);

@@ -62,15 +62,8 @@ bool matches(const std::string& name, const std::string& pattern) {
   return true;
 }
 
-// Writes all of `bytes` to `fd`; false (errno set) on any failure.
 bool write_all(int fd, std::string_view bytes) {
-  while (!bytes.empty()) {
-    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    bytes.remove_prefix(static_cast<std::size_t>(n));
-  }
-  return true;
+  return in_flight::write_all(fd, bytes.data(), bytes.size());
 }
 
 // The path a write to `path` reaches: its chain of symbolic links followed (a dangling link:

@@ -28,6 +28,7 @@ import hashlib
 import json
 import os
 import re
+import resource
 import shutil
 import signal
 import stat
@@ -39,7 +40,6 @@ import threading
 import time
 import zlib
 
-SAMPLE_DATA = "/usr/share/doc/opencv-doc/examples/data"  # read only: never written, not even here
 ACCURACY_IMAGES = ["rubberwhale1.png", "basketball1.png", "baboon.jpg", "fruits.jpg",
                    "building.jpg", "home.jpg"]
 HANG_GUARD = 300  # seconds one pxflow run may take before it is called hung (not a speed bound)
@@ -68,8 +68,9 @@ def texture(x, y, shift=0):
 class Fixtures:
     """The inputs the placeholders of the runs name, made once in `root` (never an output)."""
 
-    def __init__(self, pxflow, root):
-        self.pxflow, self.root = pxflow, root
+    def __init__(self, pxflow, root, sample_data):
+        # The sample data (pxflow's --data default) is read only: never written, not even here.
+        self.pxflow, self.root, self.sample_data = pxflow, root, sample_data
         self.paths = {}
         self.problems = []
 
@@ -98,9 +99,9 @@ class Fixtures:
         self.paths["{PAIRS}"] = self.path("pairs.txt")
         os.mkdir(self.path("data"))
         for name in ACCURACY_IMAGES:
-            shutil.copyfile(os.path.join(SAMPLE_DATA, name), self.path("data/" + name))
+            shutil.copyfile(os.path.join(self.sample_data, name), self.path("data/" + name))
         self.paths["{DATA}"] = self.path("data")
-        self.paths["{VIDEO}"] = os.path.join(SAMPLE_DATA, "vtest.avi")
+        self.paths["{VIDEO}"] = os.path.join(self.sample_data, "vtest.avi")
         for k, name in ((1, "{CHECK}"), (2, "{CHECK2}")):
             self.paths[name] = self.produce(
                 "shard%d.json" % k,
@@ -658,7 +659,7 @@ class Matrix:
             time.sleep(0.01)
         proc.stdout.close()
         code, err = self.finish(command, proc, 2.0)  # a write soon after: the stop, 141
-        expect, note = 141, []
+        expect = 141
         if code is None:  # it writes nothing to standard output while it works: stop it
             os.kill(proc.pid, signal.SIGINT)
             code, err = self.finish(command, proc, STOP_WITHIN)
@@ -670,7 +671,7 @@ class Matrix:
         p = self.stop_verdict(code, expect, err, d)
         for out, _ in outs:
             p += kept_output(out, must_keep=False)
-        return p + note + self.fixtures_intact()
+        return p + self.fixtures_intact()
 
     def size_limit(self, command, run_args):
         """A disk that fills during the work, as `ulimit -f 32` has it (any file system): the
@@ -679,7 +680,6 @@ class Matrix:
         args, outs = self.long_outputs(self.substitute(run_args), d)
 
         def limit():
-            import resource
             resource.setrlimit(resource.RLIMIT_FSIZE, (32 << 10, 32 << 10))
 
         r = subprocess.run([self.pxflow, command.name] + args, capture_output=True, text=True,
@@ -827,7 +827,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="pxflow-matrix-") as root:
         fixtures_dir = os.path.join(root, "fixtures")
         os.mkdir(fixtures_dir)
-        fx = Fixtures(pxflow, fixtures_dir).make()
+        fx = Fixtures(pxflow, fixtures_dir, listing["sample_data"]).make()
         for problem in fx.problems:
             print("FAIL fixtures: " + problem)
         if fx.problems:
