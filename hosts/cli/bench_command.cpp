@@ -1,8 +1,11 @@
 // pxflow bench: throughput sweeps over the backends that pass their check.
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 
 #include "bench.hpp"
+#include "bench_processes.hpp"
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "counted.hpp"
@@ -11,8 +14,11 @@
 #include "interrupt.hpp"
 #include "json_document.hpp"
 #include "list_option.hpp"
+#include "machine_state.hpp"
 #include "output_plan.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
+#include "real_options.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -23,9 +29,11 @@ struct BenchArgs {
   std::string command;  // the command line as run (command_line.hpp)
   double min_time = 0.25;
   int max_samples = 0;
+  int processes = kDefaultProcesses;
   bool quick = false;
   // --threads: the host threads of every point but the thread sweep's (0 = all cores).
   CLI::Option *min_time_opt = nullptr, *threads_opt = nullptr;
+  CLI::App* sub = nullptr;
   BackendOptions backend_options;
 };
 
@@ -98,6 +106,90 @@ int bench_verdict(const BenchReport& r, std::ostream& out) {
   return differ > 0 || timed == 0 ? 1 : 0;
 }
 
+// The options of every process but the ones each gets its own value of (bench_in_processes).
+constexpr const char* kPerProcess[] = {"--processes", "--json",     "--min-time",
+                                       "--backends",  "--backend",  "--progress"};
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ",") + n;
+  return s;
+}
+
+// `bench --processes R`: this binary's bench R times, each a process of its own with 1/R of
+// --min-time; rows of an exact clock (a deterministic count) and rows not timed are taken from the
+// first process alone. A signal, or a process that fails, keeps the processes finished so far.
+BenchReport bench_in_processes(const BenchArgs& a, const BenchOptions& o, std::ostream& out) {
+  std::vector<std::string> argv = {own_executable()};
+  for (const auto& [name, value] : given_option_list(*a.sub->get_parent()))
+    argv.push_back(name), value ? argv.push_back(*value) : void();
+  argv.push_back("bench");
+  for (const auto& [name, value] : given_option_list(*a.sub)) {
+    if (std::ranges::find(kPerProcess, name) != std::end(kPerProcess)) continue;
+    argv.push_back(name);
+    if (value) argv.push_back(*value);
+  }
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.6g", o.min_seconds / a.processes);
+  argv.insert(argv.end(), {"--processes", "1", "--min-time", seconds, "--json", "-"});
+  out << "each point in " << a.processes << " processes of " << seconds
+      << " s of samples per backend; a row's median and 95% interval are its processes' "
+         "medians'\n";
+  std::vector<BenchReport> runs;
+  std::vector<std::string> backends = o.backends;
+  std::optional<Interrupted> stop;
+  std::string failed;
+  for (int k = 1; k <= a.processes; ++k) {
+    std::vector<std::string> args = argv;
+    if (!backends.empty()) args.insert(args.end(), {"--backends", joined(backends)});
+    progress("bench: process " + std::to_string(k) + " of " + std::to_string(a.processes));
+    BenchProcess p;
+    try {
+      p = run_bench_process(args);
+    } catch (const Interrupted& e) {
+      stop = Interrupted(e.signal, std::string(signal_name(e.signal)) + " after " +
+                                       counted(runs.size(), "process") + " of " +
+                                       std::to_string(a.processes));
+      break;
+    }
+    if (p.status == 2 && runs.empty()) throw InputError(p.last_error_line);
+    if (p.bench.is_null() || (p.status != 0 && p.status != 1)) {
+      failed = "bench process " + std::to_string(k) + " of " + std::to_string(a.processes) +
+               " failed (" + p.last_error_line + ")";
+      break;
+    }
+    runs.push_back(bench_report_from_json(p.bench));
+    out << "process " << k << " of " << a.processes << ": " << runs.back().rows.size()
+        << " rows\n";
+    if (k > 1) continue;
+    // Only the rows that vary from process to process are measured again.
+    backends.clear();
+    for (const BenchRow& r : runs.front().rows)
+      if (!r.samples_ns_per_frame.empty() && !r.exact_clock &&
+          std::ranges::find(backends, r.backend) == backends.end())
+        backends.push_back(r.backend);
+    if (backends.empty()) break;
+  }
+  progress("");
+  BenchReport r;
+  if (!runs.empty()) r = combine_processes(runs);
+  r.points_total = o.points.size();
+  if (runs.empty()) r.complete = false, r.points_done = 0;
+  if (stop || !failed.empty()) r.complete = false;
+  if (stop) r.stop = *stop;
+  if (!failed.empty()) r.failed = failed;
+  out << "backends (what runs, on which device):\n";
+  for (const Json& d : r.backends) {
+    const std::string line = description_line(d);
+    out << "  " << d.value("backend", "") << "  "
+        << (line.empty() ? "as named, on the host CPU" : line) << "\n";
+  }
+  print_bench_rows(r, out);
+  for (const auto& s : r.skipped) out << "skipped " << s << "\n";
+  out << machine_line(r.machine) << "\n";
+  return r;
+}
+
 int run_bench_command(const BenchArgs& a) {
   if (!a.backend.empty() && !a.backends.empty())
     throw InputError("--backend " + a.backend + ": given with --backends " + a.backends +
@@ -110,6 +202,7 @@ int run_bench_command(const BenchArgs& a) {
   o.max_samples = a.max_samples;
   o.backend_options = a.backend_options;
   o.backend_options.threads = 0;  // each point's own threads (bench_points)
+  o.planted_slowdown_percent = planted_slowdown_from_environment();
   // `--json -`: the JSON is standard output, so the table goes to standard error.
   const bool json_to_stdout = a.json_path == "-";
   OutputPlan plan;
@@ -120,7 +213,7 @@ int run_bench_command(const BenchArgs& a) {
       << "; each backend's records are checked "
       << "against ref-original before it is timed, then timed for at least --min-time seconds "
          "of samples; ns/frame is the median sample, with its 95% confidence interval\n";
-  BenchReport r = run_bench(o, out);
+  BenchReport r = a.processes > 1 ? bench_in_processes(a, o, out) : run_bench(o, out);
   r.command = a.command;
   const std::string json = json_document(bench_json(r));
   if (json_file) json_file->write(json);
@@ -130,6 +223,13 @@ int run_bench_command(const BenchArgs& a) {
         : json_to_stdout ? "the JSON on standard output holds its rows, \"complete\": false"
                          : a.json_path + " holds its rows, \"complete\": false";
     throw Interrupted(r.stop->signal, std::string(r.stop->what()) + "; " + where);
+  }
+  if (!r.failed.empty()) {
+    out << "pxflow bench: " << r.failed << "; "
+        << (json_file ? a.json_path + " holds the processes before it, \"complete\": false"
+                      : std::string("nothing written"))
+        << " (exit 1)\n";
+    return 1;
   }
   return bench_verdict(r, out);
 }
@@ -146,6 +246,7 @@ Command add_bench_command(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* sub = app.add_subcommand(
       "bench", "Time the backends over batch, frame-size, radius and thread sweeps");
+  a->sub = sub;
   a->problem.add_to(*sub);
   add_backends_option(*sub, a->backends);
   add_backend_option(*sub, a->backend);
@@ -159,12 +260,20 @@ Command add_bench_command(CLI::App& app) {
       ->check(non_empty_list());
   sub->add_option("--sizes", a->sizes, "Frame sizes, WxH[,WxH...]")->check(non_empty_list());
   sub->add_option("--radius", a->radii, "Search radii, S[,S...]")->check(non_empty_list());
-  a->min_time_opt =
+  a->min_time_opt = declare_real(
       sub->add_option("--min-time", a->min_time,
-                      "Seconds of measured samples per point and backend, at least (5 samples "
-                      "at least, however long)")
-          ->check(CLI::Range(0.0, 600.0))
-          ->capture_default_str();
+                      "Seconds of measured samples per point and backend, at least, split over "
+                      "the processes (5 samples in each at least, however long)")
+          ->capture_default_str(),
+      0, 600);
+  sub->add_option("--processes", a->processes,
+                  "Measure each point in R processes of this binary, each after its own warm-up: "
+                  "a row's median and interval are over the processes' medians, so that "
+                  "run-to-run variance is in them (1: one process, the samples' statistics; "
+                  "pxflow compare then calls a change inconclusive)")
+      ->type_name("R")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
   sub->add_option("--max-samples", a->max_samples,
                   "Stop a point after N samples even before --min-time (0 = no cap)")
       ->check(CLI::Range(0, 1000000))

@@ -9,6 +9,7 @@
 #include "check.hpp"
 #include "check_resume.hpp"
 #include "check_worker.hpp"
+#include "real_options.hpp"
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "counted.hpp"
@@ -299,17 +300,17 @@ Command add_check_command(CLI::App& app) {
       PathKind::OutputFolder);
   sub->add_flag("--no-repro", a->no_repro,
                 "Write no reproducers (the first differing stage is still named)");
-  sub->add_option("--repro-seconds", a->repro_seconds,
-                  "Time each backend's reproducer may spend shrinking its failing pair")
-      ->check(CLI::Range(0.0, 3600.0))
-      ->capture_default_str();
+  declare_real(sub->add_option("--repro-seconds", a->repro_seconds,
+                               "Time each backend's reproducer may spend shrinking its failing pair")
+                   ->capture_default_str(),
+               0, 3600);
   add_progress_flag(*sub);
   sub->add_option("--case-timeout", a->case_timeout,
                   "Seconds a backend may take for one case before it is called hung (default: "
                   "an allowance scaled to the case's work and the backend's measured speed; "
                   "docs/harness.md, Isolation)")
-      ->type_name("SECONDS")
-      ->check(CLI::Range(0.001, 1e6));
+      ->type_name("SECONDS");
+  declare_real(sub->get_option("--case-timeout"), 0.001, 1e6);
   // Hidden: the worker mode of the check's own worker processes (hosts/harness/check_worker.hpp).
   sub->add_option(worker::kWorkerOption, a->worker_row)->group("");
   add_threads_option(*sub, a->backend_options.threads);

@@ -2,6 +2,7 @@
 
 #include "json_document.hpp"
 #include "path_options.hpp"
+#include "real_options.hpp"
 #include "sample_data.hpp"
 
 namespace pxflow::cli {
@@ -16,6 +17,7 @@ Json option_json(const CLI::Option* o) {
          {"hidden", o->get_group().empty()},
          {"repeatable", o->get_items_expected_max() > 1 ||
                             o->get_multi_option_policy() == CLI::MultiOptionPolicy::TakeAll}};
+  if (const auto r = declared_real(o)) j["real"] = {r->first, r->second};
   if (const auto d = declared_path(o)) {
     j["path"] = path_kind_name(d->kind);
     if (!d->suffix.empty()) j["suffix"] = d->suffix;

@@ -122,8 +122,8 @@ void onto(int fd, int target) {
 // The device's side of the fork: its own process group, the parent-death signal (it dies with
 // pxflow even before the guardian could act), then it waits for the guardian to be watching
 // before it runs anything that could start processes of its own.
-[[noreturn]] void exec_child(char* const* argv, int in, int out, int gate, int exec_errno,
-                             pid_t pxflow) {
+[[noreturn]] void exec_child(char* const* argv, int in, int out, int err, int gate,
+                             int exec_errno, pid_t pxflow) {
   setpgid(0, 0);  // Ctrl-C goes to pxflow, which stops the device itself
 #ifdef __linux__
   prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -131,6 +131,7 @@ void onto(int fd, int target) {
   if (getppid() != pxflow || read_byte(gate) != 1) _exit(127);  // pxflow is already gone
   onto(in, 0);
   onto(out, 1);
+  if (err >= 0) onto(err, 2);
   signal(SIGPIPE, SIG_DFL);  // pxflow ignores it; the device gets the usual default
   sigset_t none;
   sigemptyset(&none);
@@ -143,7 +144,8 @@ void onto(int fd, int target) {
 
 }  // namespace
 
-GuardedChild::GuardedChild(const std::vector<std::string>& args, int stdin_fd, int stdout_fd) {
+GuardedChild::GuardedChild(const std::vector<std::string>& args, int stdin_fd, int stdout_fd,
+                           int stderr_fd) {
   if (args.empty()) throw SpawnError("cannot start a child: no program given");
   const std::string& name = args[0];
   std::vector<char*> argv;
@@ -165,7 +167,7 @@ GuardedChild::GuardedChild(const std::vector<std::string>& args, int stdin_fd, i
   if (pid_ < 0) fork_errno = errno;
   if (pid_ == 0) {
     ::close(gate[1]), ::close(lifeline[0]), ::close(lifeline[1]), ::close(exec_errno[0]);
-    exec_child(argv.data(), stdin_fd, stdout_fd, gate[0], exec_errno[1], self);
+    exec_child(argv.data(), stdin_fd, stdout_fd, stderr_fd, gate[0], exec_errno[1], self);
   }
   ::close(exec_errno[1]);  // the child's alone now: its end of file is a successful exec
   if (pid_ > 0) {
@@ -228,24 +230,27 @@ void GuardedChild::stop() {
   pid_ = guardian_ = lifeline_ = -1;
 }
 
-PipedChild start_piped_child(const std::vector<std::string>& argv) {
-  int to_child[2] = {-1, -1}, from_child[2] = {-1, -1};
-  if (pipe2(to_child, O_CLOEXEC) != 0 || pipe2(from_child, O_CLOEXEC) != 0) {
+PipedChild start_piped_child(const std::vector<std::string>& argv, bool capture_stderr) {
+  int to_child[2] = {-1, -1}, from_child[2] = {-1, -1}, errors[2] = {-1, -1};
+  if (pipe2(to_child, O_CLOEXEC) != 0 || pipe2(from_child, O_CLOEXEC) != 0 ||
+      (capture_stderr && pipe2(errors, O_CLOEXEC) != 0)) {
     const std::string why = os_error("cannot start " + (argv.empty() ? "" : argv[0]) + ": pipe");
-    close_pipe(to_child), close_pipe(from_child);
+    close_pipe(to_child), close_pipe(from_child), close_pipe(errors);
     throw SpawnError(why);
   }
   PipedChild c;
   try {
-    c.child = std::make_unique<GuardedChild>(argv, to_child[0], from_child[1]);
+    c.child = std::make_unique<GuardedChild>(argv, to_child[0], from_child[1], errors[1]);
   } catch (const SpawnError&) {
-    close_pipe(to_child), close_pipe(from_child);
+    close_pipe(to_child), close_pipe(from_child), close_pipe(errors);
     throw;
   }
   ::close(to_child[0]);
   ::close(from_child[1]);
+  if (errors[1] >= 0) ::close(errors[1]);
   c.to_child = to_child[1];
   c.from_child = from_child[0];
+  c.errors_from_child = errors[0];
   return c;
 }
 

@@ -22,10 +22,11 @@ struct SpawnError : std::runtime_error {
 class GuardedChild {
  public:
   // Starts argv (argv[0] searched in PATH, no shell) with `stdin_fd` as its standard input and
-  // `stdout_fd` as its standard output; its standard error is pxflow's. The caller keeps (and
-  // closes) both descriptors. pxflow ignores SIGPIPE from then on: writing to a child that ended
+  // `stdout_fd` as its standard output; its standard error is `stderr_fd`, or pxflow's when -1.
+  // The caller keeps (and closes) the descriptors. pxflow ignores SIGPIPE from then on: writing to a child that ended
   // is an error to report, not the end of pxflow.
-  GuardedChild(const std::vector<std::string>& argv, int stdin_fd, int stdout_fd);
+  GuardedChild(const std::vector<std::string>& argv, int stdin_fd, int stdout_fd,
+               int stderr_fd = -1);
   ~GuardedChild() { stop(); }
   GuardedChild(const GuardedChild&) = delete;
   GuardedChild& operator=(const GuardedChild&) = delete;
@@ -53,9 +54,11 @@ struct PipedChild {
   std::unique_ptr<GuardedChild> child;
   int to_child = -1;
   int from_child = -1;
+  int errors_from_child = -1;  // the child's stderr, when asked for; else -1
 };
-// Throws SpawnError ("cannot start PROGRAM: why").
-PipedChild start_piped_child(const std::vector<std::string>& argv);
+// Throws SpawnError ("cannot start PROGRAM: why"). `capture_stderr`: the child's standard error
+// is a pipe too (`errors_from_child`), not pxflow's.
+PipedChild start_piped_child(const std::vector<std::string>& argv, bool capture_stderr = false);
 
 // How a child ended, from its wait status: "exited with status 3", "killed by SIGSEGV".
 std::string ended_text(int wait_status);

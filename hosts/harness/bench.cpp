@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <cstdlib>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <thread>
 #if defined(__x86_64__) || defined(__i386__)
 #include <x86intrin.h>
@@ -13,6 +16,7 @@
 
 #include "bench_stats.hpp"
 #include "counted.hpp"
+#include "errors.hpp"
 #include "exactness.hpp"
 #include "grid.hpp"
 #include "interrupt.hpp"
@@ -94,11 +98,15 @@ std::string fixed(const char* format, double v) {
   return b;
 }
 
+std::string pad_name(const std::string& name, std::size_t width) {
+  return name + std::string(name.size() < width ? width - name.size() : 0, ' ');
+}
+
 class Bench {
  public:
   Bench(const BenchOptions& o, std::ostream& out, std::size_t name_width,
         std::optional<BenchBound> bound)
-      : o_(o), out_(out), name_width_(static_cast<int>(name_width)), bound_(std::move(bound)) {}
+      : o_(o), out_(out), name_width_(name_width), bound_(std::move(bound)) {}
 
   // The bound's bytes per cycle on `threads` threads, measured the first time it is asked for.
   double bound_bytes_per_cycle(int threads, BenchReport& report) {
@@ -117,21 +125,15 @@ class Bench {
       if (!b) continue;
       Json d = describe_backend(row->name, *b);
       const std::string line = description_line(d);
+      described_[row->name] = line;
+      if (b->describe().device.empty()) on_host_.insert(row->name);
       out_ << "  " << pad(row->name) << "  " << (line.empty() ? "as named, on the host CPU" : line)
            << "\n";
       report.backends.push_back(std::move(d));
     }
   }
 
-  void print_header() {
-    std::string line = pad("backend");
-    for (const Column& c : kColumns) {
-      const std::string name = c.name;
-      line += "  " + (c.width == 22 ? name + std::string(c.width - name.size(), ' ')
-                                    : std::string(c.width - name.size(), ' ') + name);
-    }
-    out_ << "\n" << line << "  note\n";
-  }
+  void print_header() { out_ << "\n" << bench_header_line(name_width_) << "\n"; }
 
   // One backend at one point: checked first, then timed by its exact clock or by repeats.
   void measure(const BackendRow& row, const BenchPoint& pt, const Inputs& in,
@@ -139,6 +141,7 @@ class Bench {
     Backend* b = backend_for(row, pt.threads, report);
     if (!b) return;
     BenchRow base = row_for(row.name, pt);
+    base.device = described_[row.name];
     if (std::string why = b->unsupported(pt.params); !why.empty())
       return note(base, "n/a: " + why, report);
     const SimulatedBatch sim = simulated_batch(row.name, pt);
@@ -245,6 +248,14 @@ class Bench {
     Samples s;
     s.runs = static_cast<int>(
         std::clamp(o_.min_seconds / kTargetSamples / std::max(first, 1e-9), 1.0, 1e6));
+    // A planted slowdown of P % runs P % more batches than it counts: the runs of a sample are
+    // rounded up to a multiple of 100 / gcd(P, 100), so that every sample has exactly P % more.
+    int extra = 0;
+    if (const int p = o_.planted_slowdown_percent; p > 0) {
+      const int unit = 100 / std::gcd(p, 100);
+      s.runs = (s.runs + unit - 1) / unit * unit;
+      extra = s.runs * p / 100;
+    }
     std::vector<PoiRecord> got(poi_count(pt.params) * static_cast<std::size_t>(pt.batch));
     OpCounts counts;
     const double frames = static_cast<double>(s.runs) * pt.batch;
@@ -256,7 +267,7 @@ class Bench {
       bool cycles = false;
       const std::uint64_t c0 = tsc_now();
       const auto t0 = std::chrono::steady_clock::now();
-      for (int k = 0; k < s.runs; ++k, ++rep) {
+      for (int k = 0; k < s.runs + extra; ++k, ++rep) {
         b.run(in.batch_for(rep), pt.params, got, counts);
         if (auto d = b.last_device_time()) {
           s.device_source = d->source;
@@ -276,8 +287,11 @@ class Bench {
 
   void emit_samples(const Samples& s, const BenchRow& base, BenchReport& report) {
     BenchRow host = base;
-    host.source = kHasTsc ? "host-steady-clock+tsc" : "host-steady-clock";
-    fill(host, s.host_ns, s.runs, kHasTsc ? median_of(s.tsc) : 0);
+    // The TSC counts the host's cycles: a figure of code on the host CPU. A device's row has its
+    // own clock beside the host's end-to-end time, never host cycles (nor a host bound).
+    const bool tsc = kHasTsc && on_host_.contains(base.backend);
+    host.source = tsc ? "host-steady-clock+tsc" : "host-steady-clock";
+    fill(host, s.host_ns, s.runs, tsc ? median_of(s.tsc) : 0);
     host.measured_s = s.measured_s;
     emit(host, report);
     if (s.device_ns.empty()) return;
@@ -310,12 +324,16 @@ class Bench {
     r.search_radius = pt.params.search_radius;
     r.batch = pt.batch,
     r.threads = pt.threads ? pt.threads : static_cast<int>(std::thread::hardware_concurrency());
+    r.threads_requested = pt.threads;
+    r.params = params_json(pt.params);
     r.pois_per_frame = static_cast<long>(poi_count(pt.params));
     return r;
   }
 
   static void fill(BenchRow& r, const std::vector<double>& ns, int runs, double cycles) {
     r.repeats = static_cast<int>(ns.size());
+    r.processes = 1;
+    r.samples_per_process = {r.repeats};
     r.runs_per_sample = runs;
     r.samples_ns_per_frame = ns;
     r.median_ns_per_frame = median_of(ns);
@@ -327,18 +345,14 @@ class Bench {
     r.frames_per_s = 1e9 / r.median_ns_per_frame;
     r.ns_per_poi = r.median_ns_per_frame / static_cast<double>(r.pois_per_frame);
     r.cycles_per_frame = cycles;
+    r.process_medians_ns_per_frame = {r.median_ns_per_frame};
   }
 
-  std::string pad(const std::string& name) const {
-    return name + std::string(name.size() < static_cast<std::size_t>(name_width_)
-                                  ? name_width_ - name.size()
-                                  : 0,
-                              ' ');
-  }
+  std::string pad(const std::string& name) const { return pad_name(name, name_width_); }
 
   void note(BenchRow r, const std::string& why, BenchReport& report) {
     r.note = why;
-    out_ << pad(r.backend) << "  " << why << "\n";
+    out_ << pad_name(r.backend, name_width_) << "  " << why << "\n";
     report.rows.push_back(r);
   }
 
@@ -369,29 +383,8 @@ class Bench {
 
   void emit(BenchRow r, BenchReport& report) {
     derive(r, report);
-    if (r.noisy) add_note(r, "noisy: rerun on a quiet machine");
-    // A clock that counts instructions (QEMU's -icount) has no time of its own: its virtual
-    // nanoseconds and the rates made of them (kept in the JSON) are no speed of anything.
-    const bool instructions = r.cycles_per_frame == 0 && r.instructions_per_frame > 0;
-    auto timing = [&](std::string cell) { return instructions ? std::string("-") : cell; };
-    const std::string cells[] = {
-        r.source, timing(fixed("%.0f", r.median_ns_per_frame)),
-        timing(fixed("%.0f", r.median_ci_low_ns) + ".." + fixed("%.0f", r.median_ci_high_ns)),
-        timing(fixed("%.1f", r.frames_per_s)), timing(fixed("%.1f", r.ns_per_poi)),
-        // A clock that counts instructions (QEMU's -icount) says so in its cell, never "cycles".
-        r.cycles_per_frame > 0         ? fixed("%.0f", r.cycles_per_frame)
-        : r.instructions_per_frame > 0 ? fixed("%.0f instr", r.instructions_per_frame)
-                                       : "-",
-        r.bound_ratio > 0 ? fixed("%.2fx", r.bound_ratio) : "-",
-        r.speedup_vs_reference > 0 ? fixed("%.2fx", r.speedup_vs_reference) : "-"};
-    std::string line = pad(r.backend);
-    for (std::size_t i = 0; i < std::size(kColumns); ++i) {
-      const auto w = static_cast<std::size_t>(kColumns[i].width);
-      const std::string gap(cells[i].size() < w ? w - cells[i].size() : 0, ' ');
-      line += "  " + (i == 0 ? cells[i] + gap : gap + cells[i]);
-    }
-    if (!r.note.empty()) line += "  " + r.note;
-    out_ << line << "\n" << std::flush;
+    if (r.noisy) add_note(r, kNoisyNote);
+    out_ << bench_row_line(r, name_width_) << "\n" << std::flush;
     report.rows.push_back(r);
   }
 
@@ -399,7 +392,9 @@ class Bench {
   std::ostream& out_;
   std::map<std::pair<std::string, int>, std::unique_ptr<Backend>> cache_;
   std::map<std::string, double> sim_pairs_per_s_;  // exact-clock backends: host simulation speed
-  int name_width_;
+  std::map<std::string, std::string> described_;   // each backend's description_line()
+  std::set<std::string> on_host_;                  // the backends whose code runs on the host CPU
+  std::size_t name_width_;
   std::optional<BenchBound> bound_;
 };
 
@@ -437,6 +432,54 @@ std::string points_done(const BenchReport& r) {
 
 }  // namespace
 
+std::string bench_header_line(std::size_t name_width) {
+  std::string line = pad_name("backend", name_width);
+  for (const Column& c : kColumns) {
+    const std::string name = c.name;
+    line += "  " + (c.width == 22 ? name + std::string(c.width - name.size(), ' ')
+                                  : std::string(c.width - name.size(), ' ') + name);
+  }
+  return line + "  note";
+}
+
+std::string bench_row_line(const BenchRow& r, std::size_t name_width) {
+  if (r.samples_ns_per_frame.empty()) return pad_name(r.backend, name_width) + "  " + r.note;
+  // A clock that counts instructions (QEMU's -icount) has no time of its own: its virtual
+  // nanoseconds and the rates made of them (kept in the JSON) are no speed of anything.
+  const bool instructions = r.cycles_per_frame == 0 && r.instructions_per_frame > 0;
+  auto timing = [&](std::string cell) { return instructions ? std::string("-") : cell; };
+  const std::string cells[] = {
+      r.source, timing(fixed("%.0f", r.median_ns_per_frame)),
+      timing(fixed("%.0f", r.median_ci_low_ns) + ".." + fixed("%.0f", r.median_ci_high_ns)),
+      timing(fixed("%.1f", r.frames_per_s)), timing(fixed("%.1f", r.ns_per_poi)),
+      // A clock that counts instructions (QEMU's -icount) says so in its cell, never "cycles".
+      r.cycles_per_frame > 0         ? fixed("%.0f", r.cycles_per_frame)
+      : r.instructions_per_frame > 0 ? fixed("%.0f instr", r.instructions_per_frame)
+                                     : "-",
+      r.bound_ratio > 0 ? fixed("%.2fx", r.bound_ratio) : "-",
+      r.speedup_vs_reference > 0 ? fixed("%.2fx", r.speedup_vs_reference) : "-"};
+  std::string line = pad_name(r.backend, name_width);
+  for (std::size_t i = 0; i < std::size(kColumns); ++i) {
+    const auto w = static_cast<std::size_t>(kColumns[i].width);
+    const std::string gap(cells[i].size() < w ? w - cells[i].size() : 0, ' ');
+    line += "  " + (i == 0 ? cells[i] + gap : gap + cells[i]);
+  }
+  if (!r.note.empty()) line += "  " + r.note;
+  return line;
+}
+
+int planted_slowdown_from_environment() {
+  const char* v = std::getenv("PXFLOW_BENCH_PLANTED_SLOWDOWN");
+  if (!v || !*v) return 0;
+  char* end = nullptr;
+  const long p = std::strtol(v, &end, 10);
+  if (*end != '\0' || p < 1 || p > 100)
+    throw InputError("PXFLOW_BENCH_PLANTED_SLOWDOWN=" + std::string(v) +
+                     ": expected a whole percent in 1..100 (the extra runs the gate's A/B "
+                     "experiment plants; docs/harness.md)");
+  return static_cast<int>(p);
+}
+
 std::vector<BenchPoint> default_bench_points(const Params& base, const std::string& name) {
   std::vector<BenchPoint> pts;
   for (int batch : {1, 16, 256, 4096}) pts.push_back({"batch", name, base, batch, 0});
@@ -469,6 +512,9 @@ void set_sweep_threads(std::vector<BenchPoint>& points, int threads) {
 
 BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   BenchReport report;
+  if (o.planted_slowdown_percent > 0)
+    out << "planted slowdown: every sample runs " << o.planted_slowdown_percent
+        << " % more batches than it counts (PXFLOW_BENCH_PLANTED_SLOWDOWN)\n";
   const MachineState before = read_machine_state();
   const CpuTimes t0 = read_cpu_times();
   const std::vector<const BackendRow*> rows = rows_to_run(o.backends);

@@ -50,11 +50,32 @@ struct BenchOptions {
 
   double max_run_seconds = 3.0;  // skip a point whose single run would take longer
   BackendOptions backend_options;
+  // Extra runs of each sample's batch, in percent of its runs, timed but not counted as frames:
+  // the planted slowdown of the gate's A/B experiment (PXFLOW_BENCH_PLANTED_SLOWDOWN, docs/
+  // harness.md "The gate's error rates"). Known work per frame, never a sleep.
+  int planted_slowdown_percent = 0;
 };
+
+// PXFLOW_BENCH_PLANTED_SLOWDOWN's value (0 when unset); throws InputError when it is not a whole
+// percent in 1..100.
+int planted_slowdown_from_environment();
 
 struct BenchRow {
   std::string backend, sweep, setting, source, note;
   int width = 0, height = 0, search_radius = 0, batch = 0, threads = 0, repeats = 0;
+  // What else makes a row's work what it is (pxflow compare pairs rows only where all of it is
+  // equal): every parameter (params_json, --set included), the threads asked for (0 = all
+  // cores; `threads` is what that was here), and what the backend ran on (describe_backend's
+  // line: implementation, device, driver).
+  Json params = Json::object();
+  int threads_requested = 0;
+  std::string device;
+  // The unit of replication is a process (docs/harness.md, "Statistics"): the row's samples come
+  // from `processes` processes, `samples_per_process` of them each, and its median and interval
+  // are those of the processes' own medians. One process: the samples' median and interval.
+  int processes = 1;
+  std::vector<double> process_medians_ns_per_frame;
+  std::vector<int> samples_per_process;
   long pois_per_frame = 0;
   double median_ns_per_frame = 0, min_ns_per_frame = 0, max_ns_per_frame = 0;
   // The 95 % confidence interval of the median (order statistics: distribution-free), and
@@ -88,13 +109,23 @@ struct BenchReport {
   // What each opened backend ran (provenance.hpp: describe_backend), in registry order.
   Json backends = Json::array();
   std::string command;  // the command line that made this report, for its JSON
+  int processes = 1;     // the processes whose rows were combined (bench --processes)
+  // Which build and machine measured it: null for this process's own (bench_json writes
+  // build_provenance() and machine_provenance()); a combined report keeps its processes'.
+  Json provenance;
   // False when a signal stopped the bench: `rows` holds every row it measured, the points before
   // the stopped one whole, and `stop` says which signal (the command writes the file, then
   // throws it).
   bool complete = true;
   std::size_t points_done = 0, points_total = 0;
   std::optional<Interrupted> stop;
+  std::string failed;  // bench --processes: why a process failed (the report holds those before)
 };
+
+// `bench --processes`'s default (docs/harness.md, "Statistics"): with 5 processes on each side,
+// pxflow compare's 95 % interval of a ratio is bounded (4 and 4 is the least), and the default
+// bench takes about as long as one process did, --min-time being split over them.
+inline constexpr int kDefaultProcesses = 5;
 
 // The default sweeps around `base` (the profile with any --set applied).
 std::vector<BenchPoint> default_bench_points(const Params& base, const std::string& profile_name);
@@ -112,6 +143,12 @@ void set_sweep_threads(std::vector<BenchPoint>& points, int threads);
 // rows per point, the bound's ratio and the speed-up over ref-original as columns). A signal
 // stops it between samples: the report then holds what was measured, marked incomplete.
 BenchReport run_bench(const BenchOptions& o, std::ostream& out);
+
+// The table's header and one row's line (a row not timed: its note), as the bench prints them
+// point by point and `bench --processes` prints the rows it combined.
+std::string bench_header_line(std::size_t name_width);
+std::string bench_row_line(const BenchRow& r, std::size_t name_width);
+inline constexpr const char* kNoisyNote = "noisy: rerun on a quiet machine";
 
 // A row's fields as the bench's JSON and CSV carry them (bench_json.cpp): the only list of them.
 std::span<const ResultField<BenchRow>> bench_row_fields();

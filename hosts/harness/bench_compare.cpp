@@ -20,16 +20,48 @@ std::string str(const Json& j, const char* key) {
   return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : "";
 }
 
-// The point a row measured: rows of two files are compared when their keys are equal. The
-// thread count belongs to the key only in the thread sweep; elsewhere a row ran on all of its
-// machine's cores, which differ from machine to machine.
-using PointKey = std::tuple<std::string, std::string, std::string, int, int, int, int, int>;
-PointKey point_key(const Json& r) {
-  const std::string sweep = str(r, "sweep");
-  return {str(r, "backend"),    sweep,
-          str(r, "profile"),    r.value("width", 0),
-          r.value("height", 0), r.value("search_radius", 0),
-          r.value("batch", 0),  sweep == "threads" ? r.value("threads", 0) : 0};
+// Everything that makes a row's work what it is, as (name, value): rows of two files are
+// compared only where every value is equal. Files of different machines (--across-machines)
+// compare the threads asked for (all cores is all cores) and not the device, which differs.
+using RowKey = std::vector<std::pair<std::string, std::string>>;
+RowKey row_key(const Json& r, bool across_machines) {
+  auto text = [](const Json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); };
+  RowKey k{{"backend", str(r, "backend")},
+           {"clock", str(r, "source")},
+           {"sweep", str(r, "sweep")},
+           {"profile", str(r, "profile")}};
+  if (r.contains("params") && r["params"].is_object())
+    for (const auto& [name, value] : r["params"].items()) k.push_back({name, text(value)});
+  else  // a file older than "params": what it has
+    for (const char* name : {"width", "height", "search_radius"})
+      k.push_back({name, text(r.value(name, Json()))});
+  k.push_back({"batch", text(r.value("batch", Json()))});
+  if (across_machines) {
+    const int asked = r.value("threads_requested", -1);
+    k.push_back({"threads", asked == 0 ? "all" : asked > 0 ? std::to_string(asked) : "?"});
+  } else {
+    k.push_back({"threads", text(r.value("threads", Json()))});
+    k.push_back({"device", str(r, "device")});
+  }
+  return k;
+}
+
+// "blocks 8 in A, 2 in B; threads 2 in A, 1 in B": how two keys differ.
+std::string key_difference(const RowKey& a, const RowKey& b, const std::string& la,
+                           const std::string& lb) {
+  std::string d;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+    if (a[i] != b[i])
+      d += (d.empty() ? "" : "; ") + a[i].first + " " + a[i].second + " in " + la + ", " +
+           b[i].second + " in " + lb;
+  return d.empty() ? "their parameters differ" : d;
+}
+
+std::size_t differences(const RowKey& a, const RowKey& b) {
+  if (a.size() != b.size()) return a.size() + b.size();
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
+  return n;
 }
 
 bool measured(const Json& r) {
@@ -37,45 +69,18 @@ bool measured(const Json& r) {
          r["median_ns_per_frame"].get<double>() > 0;
 }
 
-std::vector<double> samples(const Json& r) {
+// The values the statistics are over: each process's median; one process: its samples (a file
+// older than the processes, or bench --processes 1).
+std::vector<double> process_medians(const Json& r) {
+  if (r.contains("process_medians_ns_per_frame") && r["process_medians_ns_per_frame"].is_array())
+    return r["process_medians_ns_per_frame"].get<std::vector<double>>();
+  return {r["median_ns_per_frame"].get<double>()};
+}
+
+int sample_count(const Json& r) {
   if (r.contains("samples_ns_per_frame") && r["samples_ns_per_frame"].is_array())
-    return r["samples_ns_per_frame"].get<std::vector<double>>();
-  return {r["median_ns_per_frame"].get<double>()};  // a file older than the samples
-}
-
-// A row's median interval, the median itself where the file has none.
-std::pair<double, double> median_interval(const Json& r) {
-  const double m = r["median_ns_per_frame"].get<double>();
-  return {r.value("median_ci_low_ns", m), r.value("median_ci_high_ns", m)};
-}
-
-CompareRow compare_rows(const std::string& label, const Json& base, const Json& row) {
-  CompareRow c;
-  c.file = label;
-  c.backend = str(row, "backend"), c.sweep = str(row, "sweep"), c.setting = str(row, "profile");
-  c.source = str(row, "source");
-  c.width = row.value("width", 0), c.height = row.value("height", 0);
-  c.search_radius = row.value("search_radius", 0), c.batch = row.value("batch", 0);
-  c.threads = row.value("threads", 0), c.base_threads = base.value("threads", 0);
-  const std::vector<double> a = samples(base), b = samples(row);
-  c.base_samples = static_cast<int>(a.size()), c.samples = static_cast<int>(b.size());
-  c.base_median_ns = base["median_ns_per_frame"].get<double>();
-  c.median_ns = row["median_ns_per_frame"].get<double>();
-  c.ratio = c.median_ns / c.base_median_ns;
-  // Both medians inside their 95 % intervals (each 95 %, so both at least 90 %): the ratio
-  // inside the quotient of the intervals' far ends.
-  const auto [a_low, a_high] = median_interval(base);
-  const auto [b_low, b_high] = median_interval(row);
-  c.ratio_ci_low = b_low / a_high, c.ratio_ci_high = b_high / a_low;
-  // An exact clock counts the same cycles every run: any difference is the change itself.
-  const bool exact = row.value("exact_clock", false) && base.value("exact_clock", false);
-  bool significant = c.ratio != 1.0;
-  if (!exact) {
-    c.p_value = mann_whitney_p(a, b);
-    significant = c.p_value < kSignificanceLevel;
-  }
-  c.verdict = !significant ? "same" : c.ratio > 1 ? "slower" : "faster";
-  return c;
+    return static_cast<int>(r["samples_ns_per_frame"].size());
+  return 1;
 }
 
 // Why the bench that wrote `f` called its machine disturbed, or empty.
@@ -83,6 +88,71 @@ std::string disturbance(const BenchFile& f) {
   return f.bench.contains("machine") && f.bench["machine"].is_object()
              ? str(f.bench["machine"], "disturbed")
              : "";
+}
+
+std::string fixed(const char* format, double v);
+
+// The row's verdict and, with a gate, its outcome (bench_compare.hpp).
+void judge(CompareRow& c, const std::string& inconclusive, double fail_above) {
+  const double limit = 1 + fail_above / 100;
+  if (!inconclusive.empty()) {
+    c.verdict = "inconclusive", c.why = inconclusive;
+    if (fail_above >= 0) c.gate = "inconclusive";
+    return;
+  }
+  const bool exact = c.p_value < 0;
+  const bool significant = exact ? c.ratio != 1.0 : c.p_value < kSignificanceLevel;
+  c.verdict = significant && c.ratio_ci_low > 1    ? "slower"
+              : significant && c.ratio_ci_high < 1 ? "faster"
+                                                   : "not significant";
+  if (fail_above < 0) return;
+  if (significant && c.ratio_ci_low > limit)
+    c.gate = "fail";
+  else if (c.ratio_ci_high <= limit)
+    c.gate = "pass";
+  else {
+    c.gate = "inconclusive";
+    c.why = "its interval [" + fixed("%.3f", c.ratio_ci_low) + ", " +
+            fixed("%.3f", c.ratio_ci_high) + "] holds " + fixed("%.3f", limit) +
+            ": more processes (bench --processes, compare --rounds) or a quieter machine";
+  }
+}
+
+CompareRow compare_rows(const BenchFile& base_file, const BenchFile& file, const Json& base,
+                        const Json& row, double fail_above) {
+  CompareRow c;
+  c.file = file.label;
+  c.backend = str(row, "backend"), c.sweep = str(row, "sweep"), c.setting = str(row, "profile");
+  c.source = str(row, "source");
+  c.width = row.value("width", 0), c.height = row.value("height", 0);
+  c.search_radius = row.value("search_radius", 0), c.batch = row.value("batch", 0);
+  c.threads = row.value("threads", 0), c.base_threads = base.value("threads", 0);
+  const std::vector<double> a = process_medians(base), b = process_medians(row);
+  c.base_samples = sample_count(base), c.samples = sample_count(row);
+  c.base_processes = static_cast<int>(a.size()), c.processes = static_cast<int>(b.size());
+  c.base_median_ns = base["median_ns_per_frame"].get<double>();
+  c.median_ns = row["median_ns_per_frame"].get<double>();
+  std::string inconclusive;
+  // An exact clock counts the same cycles every run: any difference is the change itself.
+  if (row.value("exact_clock", false) && base.value("exact_clock", false)) {
+    c.ratio = c.ratio_ci_low = c.ratio_ci_high = c.median_ns / c.base_median_ns;
+  } else {
+    const RatioInterval r = ratio_interval95(a, b);
+    c.ratio = r.ratio, c.ratio_ci_low = r.low, c.ratio_ci_high = r.high;
+    c.p_value = mann_whitney_p(a, b);
+    if (a.size() < 2 || b.size() < 2)
+      inconclusive = (a.size() < 2 ? base_file.label : file.label) +
+                     "'s row is one process (bench --processes 1, or a file older than them): "
+                     "no run-to-run variance to judge by";
+    else if (!r.bounded)
+      inconclusive = "too few processes for a 95 % interval (" + std::to_string(a.size()) +
+                     " and " + std::to_string(b.size()) + "; 4 and 4 at least)";
+    for (const BenchFile* f : {&base_file, &file})
+      if (inconclusive.empty() && !disturbance(*f).empty())
+        inconclusive = f->label + " was measured on a disturbed machine (" + disturbance(*f) + ")";
+  }
+  judge(c, inconclusive, fail_above);
+  return c;
 }
 
 std::string row_name(const std::string& label, const Json& r) {
@@ -94,17 +164,19 @@ std::string row_name(const std::string& label, const Json& r) {
   return b;
 }
 
-// The baseline's measured points that `f` did not measure (a row that failed or was not run
-// there, or a backend it lacks): listed, so that a row missing from a gated run is seen (the
-// gate judges the rows compared; a failed row is the check's to fail).
-void list_missing(const BenchFile& base, const BenchFile& f, std::vector<std::string>& out) {
-  std::map<PointKey, std::string> in_f;  // every point of f: its note when not measured
+// The baseline's measured rows that `f` did not measure (a row that failed or was not run there,
+// or a backend it lacks): listed, so that a row missing from a gated run is seen (the gate
+// judges the rows compared; a failed row is the check's to fail).
+void list_missing(const BenchFile& base, const BenchFile& f, bool across,
+                  std::vector<std::string>& out) {
+  std::map<RowKey, std::string> in_f;  // every row of f: its note when not measured
   for (const Json& r : f.bench["rows"])
-    if (!in_f.contains(point_key(r)) || measured(r))
-      in_f[point_key(r)] = measured(r) ? "" : str(r, "note").empty() ? "none" : str(r, "note");
-  std::set<PointKey> listed;
+    if (!in_f.contains(row_key(r, across)) || measured(r))
+      in_f[row_key(r, across)] =
+          measured(r) ? "" : str(r, "note").empty() ? "none" : str(r, "note");
+  std::set<RowKey> listed;
   for (const Json& r : base.bench["rows"]) {
-    const PointKey key = point_key(r);
+    const RowKey key = row_key(r, across);
     if (!measured(r) || listed.contains(key)) continue;
     const auto it = in_f.find(key);
     if (it != in_f.end() && it->second.empty()) continue;
@@ -145,6 +217,8 @@ constexpr std::array kCompareRowFields{
     member_field<&CompareRow::source>("source"),
     member_field<&CompareRow::base_samples>("baseline_samples"),
     member_field<&CompareRow::samples>("samples"),
+    member_field<&CompareRow::base_processes>("baseline_processes"),
+    member_field<&CompareRow::processes>("processes"),
     member_field<&CompareRow::base_median_ns>("baseline_median_ns_per_frame"),
     member_field<&CompareRow::median_ns>("median_ns_per_frame"),
     member_field<&CompareRow::ratio>("ratio"),
@@ -152,6 +226,8 @@ constexpr std::array kCompareRowFields{
     member_field<&CompareRow::ratio_ci_high>("ratio_ci_high"),
     tested_field<&CompareRow::p_value>("p_value"),
     member_field<&CompareRow::verdict>("verdict"),
+    member_field<&CompareRow::gate>("gate"),
+    member_field<&CompareRow::why>("why"),
 };
 
 }  // namespace
@@ -169,7 +245,14 @@ void check_bench_file(const std::string& path, const Json& j) {
       (void)r.at("source").get<std::string>(), (void)r.at("batch").get<int>();
       if (measured(r) && r.contains("samples_ns_per_frame"))
         (void)r["samples_ns_per_frame"].get<std::vector<double>>();
+      if (measured(r))
+        for (double m : process_medians(r))
+          if (!(m > 0 && std::isfinite(m)))
+            throw InputError(path + ": a row's process median is not a positive time (" +
+                             row_name("row", r) + ")");
     }
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     throw InputError(path + ": a malformed bench file (" + e.what() + ")");
   }
@@ -197,50 +280,71 @@ std::string file_identity(const BenchFile& f) {
   return s;
 }
 
-BenchComparison compare_bench_files(std::span<const BenchFile> files) {
+// "h (AMD EPYC ...)" of every file: the machine a file's numbers are of.
+std::string machine_key(const BenchFile& f) { return file_machine(f); }
+
+BenchComparison compare_bench_files(std::span<const BenchFile> files,
+                                    const CompareOptions& options) {
   BenchComparison c;
+  c.fail_above = options.fail_above;
+  const bool across = options.across_machines;
+  for (const BenchFile& f : files.subspan(1))
+    if (machine_key(f) != machine_key(files.front())) {
+      const std::string what = files.front().label + " (" + files.front().path + ") and " +
+                               f.label + " (" + f.path + ") were measured on different machines, " +
+                               machine_key(files.front()) + " and " + machine_key(f);
+      if (!across)
+        throw InputError(what + ": compare them with --across-machines (rows are then paired by "
+                                "the threads asked for, not by device)");
+      if (c.across_machines.empty()) c.across_machines = what;
+    }
   for (const BenchFile& f : files) {
     c.files.push_back(file_identity(f));
     if (const std::string why = disturbance(f); !why.empty())
       c.warnings.push_back(f.label + " was measured on a disturbed machine (" + why +
-                           "): a significant change may be that load, not the build; rerun "
-                           "both on a quiet machine");
+                           "): its host-clock rows are inconclusive; rerun on a quiet machine");
     if (!f.bench.value("complete", true))
       c.warnings.push_back(f.label + " is incomplete: a signal stopped its bench after " +
                            std::to_string(f.bench.value("points_done", 0L)) + " of " +
                            std::to_string(f.bench.value("points_total", 0L)) +
                            " points; only the points it measured are compared");
   }
-  // The baseline's measured rows by point, each point's clocks in its file's order.
-  std::map<PointKey, std::vector<const Json*>> base;
+  std::vector<std::pair<RowKey, const Json*>> base;  // the baseline's measured rows
   for (const Json& r : files.front().bench["rows"])
-    if (measured(r)) base[point_key(r)].push_back(&r);
+    if (measured(r)) base.push_back({row_key(r, across), &r});
   for (const BenchFile& f : files.subspan(1))
     for (const Json& r : f.bench["rows"]) {
       if (!measured(r)) continue;
-      const auto it = base.find(point_key(r));
-      if (it == base.end()) {
-        c.not_compared.push_back(row_name(f.label, r) + ": not measured in " + files.front().label);
+      const RowKey key = row_key(r, across);
+      const auto same = std::find_if(base.begin(), base.end(), [&](auto& b) { return b.first == key; });
+      if (same != base.end()) {
+        c.rows.push_back(compare_rows(files.front(), f, *same->second, r, options.fail_above));
         continue;
       }
-      const auto same_clock = std::find_if(it->second.begin(), it->second.end(), [&](auto* b) {
-        return str(*b, "source") == str(r, "source");
-      });
-      if (same_clock != it->second.end()) {
-        c.rows.push_back(compare_rows(f.label, **same_clock, r));
-        continue;
-      }
-      std::string clocks;
-      for (const Json* b : it->second) clocks += (clocks.empty() ? "" : ", ") + str(*b, "source");
-      c.not_compared.push_back(row_name(f.label, r) + ": not comparable: " + files.front().label +
-                               " timed this point by another clock (" + clocks + ")");
+      // The nearest row of the same backend says what differs.
+      const std::pair<RowKey, const Json*>* nearest = nullptr;
+      for (const auto& b : base)
+        if (b.first.front() == key.front() &&
+            (!nearest || differences(b.first, key) < differences(nearest->first, key)))
+          nearest = &b;
+      c.not_compared.push_back(
+          row_name(f.label, r) +
+          (nearest ? ": not comparable: " +
+                         key_difference(nearest->first, key, files.front().label, f.label)
+                   : ": not measured in " + files.front().label));
     }
-  for (const BenchFile& f : files.subspan(1)) list_missing(files.front(), f, c.not_compared);
+  for (const BenchFile& f : files.subspan(1)) list_missing(files.front(), f, across, c.not_compared);
   return c;
 }
 
-bool slower_beyond(const CompareRow& r, double percent) {
-  return r.verdict == "slower" && (r.ratio - 1) * 100 > percent;
+int comparison_exit(const BenchComparison& c) {
+  if (c.rows.empty()) return 1;
+  bool inconclusive = false;
+  for (const CompareRow& r : c.rows) {
+    if (r.gate == "fail") return 1;
+    inconclusive = inconclusive || r.gate == "inconclusive";
+  }
+  return inconclusive ? kInconclusiveExit : 0;
 }
 
 std::span<const ResultField<CompareRow>> compare_row_fields() { return kCompareRowFields; }
@@ -251,6 +355,9 @@ Json comparison_json(const BenchComparison& c) {
   return {{"files", c.files},
           {"baseline", "A"},
           {"significance_level", kSignificanceLevel},
+          {"fail_above_percent", c.fail_above >= 0 ? Json(c.fail_above) : Json()},
+          {"across_machines", c.across_machines.empty() ? Json() : Json(c.across_machines)},
+          {"exit", comparison_exit(c)},
           {"rows", rows},
           {"not_compared", c.not_compared},
           {"warnings", c.warnings}};
@@ -264,7 +371,7 @@ std::string comparison_csv(const BenchComparison& c) {
 
 std::string ratio_text(const CompareRow& r) {
   return fixed("%.3f", r.ratio) + " [" + fixed("%.3f", r.ratio_ci_low) + ", " +
-         fixed("%.3f", r.ratio_ci_high) + "]";
+         (std::isfinite(r.ratio_ci_high) ? fixed("%.3f", r.ratio_ci_high) : "inf") + "]";
 }
 
 std::string point_text(const CompareRow& r) {
@@ -276,16 +383,19 @@ std::string point_text(const CompareRow& r) {
 void print_comparison(const BenchComparison& c, std::ostream& out) {
   for (std::size_t i = 0; i < c.files.size(); ++i)
     out << file_label(i) << ": " << c.files[i] << "\n";
-  char line[400];
-  const char* format = "%-4s %-16s %-44s %-22s %13s %13s  %-26s %8s  %s\n";
+  if (!c.across_machines.empty()) out << "across machines: " << c.across_machines << "\n";
+  char line[600];
+  const char* format = "%-4s %-16s %-44s %-22s %13s %13s  %-26s %8s  %-15s %s\n";
   std::snprintf(line, sizeof line, format, "file", "backend", "point", "clock", "A ns/frame",
-                "ns/frame", "ratio [95% CI]", "p", "verdict");
+                "ns/frame", "ratio [95% CI]", "p", "verdict", c.fail_above >= 0 ? "gate" : "");
   out << "\n" << line;
   for (const CompareRow& r : c.rows) {
+    const std::string gate = r.gate + (r.why.empty() ? "" : ": " + r.why);
     std::snprintf(line, sizeof line, format, r.file.c_str(), r.backend.c_str(),
                   point_text(r).c_str(), r.source.c_str(), fixed("%.1f", r.base_median_ns).c_str(),
                   fixed("%.1f", r.median_ns).c_str(), ratio_text(r).c_str(),
-                  r.p_value < 0 ? "exact" : fixed("%.4f", r.p_value).c_str(), r.verdict.c_str());
+                  r.p_value < 0 ? "exact" : fixed("%.4f", r.p_value).c_str(), r.verdict.c_str(),
+                  c.fail_above >= 0 ? gate.c_str() : r.why.c_str());
     out << line;
   }
   for (const std::string& n : c.not_compared) out << "not compared: " << n << "\n";

@@ -19,6 +19,12 @@ constexpr ResultField<BenchRow> positive_field(const char* key) {
   return {key, &when_positive<M>, &member_set<M>, true, true};
 }
 
+// A field of this round's files that an older file lacks (pxflow compare reads both).
+template <auto M>
+constexpr ResultField<BenchRow> newer_field(const char* key, bool csv = true) {
+  return {key, &member_get<M>, &member_set<M>, csv, true};
+}
+
 // In the CSV's column order (results.csv); the JSON objects have the same order.
 constexpr std::array kBenchRowFields{
     member_field<&BenchRow::backend>("backend"),
@@ -29,9 +35,13 @@ constexpr std::array kBenchRowFields{
     member_field<&BenchRow::search_radius>("search_radius"),
     member_field<&BenchRow::batch>("batch"),
     member_field<&BenchRow::threads>("threads"),
+    newer_field<&BenchRow::threads_requested>("threads_requested"),
+    newer_field<&BenchRow::device>("device"),
+    newer_field<&BenchRow::params>("params", false),
     member_field<&BenchRow::source>("source"),
     member_field<&BenchRow::exact_clock>("exact_clock"),
     member_field<&BenchRow::repeats>("repeats"),
+    newer_field<&BenchRow::processes>("processes"),
     member_field<&BenchRow::pois_per_frame>("pois_per_frame"),
     member_field<&BenchRow::runs_per_sample>("runs_per_sample"),
     member_field<&BenchRow::measured_s>("measured_s"),
@@ -48,8 +58,11 @@ constexpr std::array kBenchRowFields{
     positive_field<&BenchRow::bound_ratio>("bound_ratio"),
     positive_field<&BenchRow::speedup_vs_reference>("speedup_vs_ref_original"),
     member_field<&BenchRow::note>("note"),
-    // Every sample, in the JSON only (compare's test reads them).
+    // Every sample, in the JSON only, process after process (`samples_per_process` of each),
+    // and each process's median: what pxflow compare's test and interval read.
     member_field<&BenchRow::samples_ns_per_frame>("samples_ns_per_frame", false),
+    newer_field<&BenchRow::samples_per_process>("samples_per_process", false),
+    newer_field<&BenchRow::process_medians_ns_per_frame>("process_medians_ns_per_frame", false),
 };
 
 }  // namespace
@@ -63,12 +76,22 @@ Json bench_json(const BenchReport& r) {
   // `points_total`; every row measured is kept (the stopped point's finished backends too).
   Json j{{"command", r.command},
          {"complete", r.complete},
+         // The unit of replication (docs/harness.md, "Statistics"): a row's median and interval
+         // are over its processes' medians; with one process, over its samples.
+         {"replication",
+          {{"unit", "process"},
+           {"processes", r.processes},
+           {"statistic", r.processes > 1 ? "median and 95% interval of the processes' medians"
+                                         : "median and 95% interval of one process's samples"}}},
          {"points_done", r.points_done},
          {"points_total", r.points_total},
          {"backends", r.backends},
          {"machine", machine_json(r.machine)},
          // Which machine and build: what pxflow compare names each file by.
-         {"provenance", {{"build", build_provenance()}, {"machine", machine_provenance()}}},
+         {"provenance",
+          r.provenance.is_null()
+              ? Json{{"build", build_provenance()}, {"machine", machine_provenance()}}
+              : r.provenance},
          {"rows", rows},
          {"skipped", r.skipped}};
   if (r.bound_bytes_per_cycle > 0) {

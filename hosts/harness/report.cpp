@@ -212,7 +212,7 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
   }
   Json comparison;
   if (in.compared.size() >= 2) {
-    const BenchComparison c = compare_bench_files(in.compared);
+    const BenchComparison c = compare_bench_files(in.compared, {.across_machines = true});
     for (Section& s : report::comparison_sections(in.compared, c)) secs.push_back(std::move(s));
     comparison = comparison_json(c);
   }
