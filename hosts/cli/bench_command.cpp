@@ -30,7 +30,7 @@ struct BenchArgs {
   double min_time = 0.25;
   int max_samples = 0;
   int processes = kDefaultProcesses;
-  bool quick = false;
+  bool quick = false, no_bound = false;
   // --threads: the host threads of every point but the thread sweep's (0 = all cores).
   CLI::Option *min_time_opt = nullptr, *threads_opt = nullptr;
   CLI::App* sub = nullptr;
@@ -162,6 +162,7 @@ BenchReport bench_in_processes(const BenchArgs& a, const BenchOptions& o, std::o
     out << "process " << k << " of " << a.processes << ": " << runs.back().rows.size()
         << " rows\n";
     if (k > 1) continue;
+    if (!a.no_bound) argv.push_back("--no-bound");  // the first process measured it
     // Only the rows that vary from process to process are measured again.
     backends.clear();
     for (const BenchRow& r : runs.front().rows)
@@ -203,6 +204,7 @@ int run_bench_command(const BenchArgs& a) {
   o.backend_options = a.backend_options;
   o.backend_options.threads = 0;  // each point's own threads (bench_points)
   o.planted_slowdown_percent = planted_slowdown_from_environment();
+  o.measure_bound = !a.no_bound;
   // `--json -`: the JSON is standard output, so the table goes to standard error.
   const bool json_to_stdout = a.json_path == "-";
   OutputPlan plan;
@@ -281,6 +283,9 @@ Command add_bench_command(CLI::App& app) {
   sub->add_flag("--quick", a->quick,
                 "The default sweeps' quick subset: batch <= 256 and the frame sizes, no radius or "
                 "thread sweep, --min-time 0.05 unless given (what report --quick runs)");
+  sub->add_flag("--no-bound", a->no_bound,
+                "Do not measure the bound (about half a second per process; no x bound column): "
+                "for gates that compare builds, not kernels with their bound");
   add_device_option(*sub, a->backend_options.device);
   add_json_option(*sub, a->json_path,
                   "the table then goes to stderr; a bench a signal stops writes the rows it "

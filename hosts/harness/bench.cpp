@@ -521,7 +521,8 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   check_device_option(rows, o.backend_options.device);
   std::size_t name_width = 7;
   for (const BackendRow* row : rows) name_width = std::max(name_width, row->name.size());
-  std::optional<BenchBound> bound = measure_bound(report);
+  std::optional<BenchBound> bound =
+      o.measure_bound ? measure_bound(report) : std::optional<BenchBound>{};
   Bench bench(o, out, name_width, bound);
   out << "backends (what runs, on which device):\n";
   bench.open_all(rows, report);

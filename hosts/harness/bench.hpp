@@ -54,6 +54,7 @@ struct BenchOptions {
   // the planted slowdown of the gate's A/B experiment (PXFLOW_BENCH_PLANTED_SLOWDOWN, docs/
   // harness.md "The gate's error rates"). Known work per frame, never a sleep.
   int planted_slowdown_percent = 0;
+  bool measure_bound = true;  // false: no bound, no "x bound" (bench --no-bound)
 };
 
 // PXFLOW_BENCH_PLANTED_SLOWDOWN's value (0 when unset); throws InputError when it is not a whole

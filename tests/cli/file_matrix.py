@@ -6,7 +6,9 @@ path_options.hpp) and each command's cheap runs ("matrix runs") and long runs. F
 this script makes its cases, so a new option or command is covered without a new test:
 
   declarations  every option with a value says what it is (a path kind or a type name of its own,
-                never CLI11's TEXT); a command with a path option has a run.
+                never CLI11's TEXT); a command with a path option has a run; every real-valued
+                option (real_options.hpp) refuses nan, inf, -inf, both sides of its range and
+                "1x" with one line, exit 2.
   outputs       each output option, in the first run that accepts it, written: onto each input of
                 every run that accepts it (the same path, a symlink, a hard link, a ../ spelling),
                 inside an input folder, as a symlink (written at its target), onto a 0600 file
@@ -318,10 +320,30 @@ class Matrix:
 
                 self.case(name, check)
         for c in listing["commands"]:
+            self.reals(Command(c))
+        for c in listing["commands"]:
             command = Command(c)
             self.case("declarations %s has matrix runs" % command.name,
                       lambda command=command: [] if command.runs or not command.has_paths()
                       else ["it has path options but no matrix_runs"])
+
+    def reals(self, command):
+        """Every real-valued option (declare_real) refuses nan, infinities and values outside its
+        range with one line and exit 2, on the command's first matrix run."""
+        for o in command.options:
+            if "real" not in o or not command.runs:
+                continue
+            lo, hi = o["real"]
+            for value in ("nan", "inf", "-inf", "%g" % (lo - 1), "%g" % (hi * 2 + 1), "1x"):
+                def body(o=o, value=value):
+                    d = self.workdir()
+                    r = self.pxflow_run(command, self.substitute(command.runs[0]) +
+                                        [o["name"], value], cwd=d)
+                    problems = self.common_checks(r, d, 2, o["name"])
+                    if len(r.stderr.strip().splitlines()) != 1:
+                        problems.append("stderr is not one line: " + r.stderr.strip()[-300:])
+                    return problems
+                self.case("declarations %s %s %s" % (command.name, o["name"], value), body)
 
     # ---- outputs
     def outputs(self, command):
