@@ -15,6 +15,10 @@ const std::vector<EnvironmentVariable> kCoreEnvironment = {
     {"PXFLOW_OPENCV_MODULE",
      "The OpenCV module to load (libpxflow_opencv.so, needed to decode images and video) "
      "instead of the one beside pxflow or in ../lib/pxflow"},
+    {"PXFLOW_BENCH_PLANTED_SLOWDOWN",
+     "A whole percent P in 1..100: bench runs P % more batches than it counts (known work per "
+     "frame, never a sleep): the planted slowdown of the gate's A/B experiment "
+     "(ci/gate_error_rates.py)"},
     {"PXFLOW_STOP_GRACE_MS",
      "Milliseconds after a first SIGINT, SIGTERM or SIGHUP in which another is the same stop "
      "(default 1000); a later one ends the run at once, keeping the streams' whole records; 0: "
@@ -73,11 +77,15 @@ std::string help_sections(const std::vector<std::string>& examples) {
       term_paragraph("1", 3,
                      "A check failed (or compared nothing but the reference), a backend or a "
                      "device failed, a bench timed nothing or found records that differ, compare "
-                     "--fail-above found a slowdown, or a result could not be written") +
+                     "compared nothing or --fail-above found a slowdown, or a result could not be "
+                     "written") +
       term_paragraph("2", 3,
                      "Bad input: one line on stderr names the file, option, key or backend; "
                      "found before any work, nothing is written (a bad frame in the middle of a "
                      "sequence stops it as below)") +
+      term_paragraph("3", 3,
+                     "compare --fail-above could not decide: no row failed, and a row's interval "
+                     "held the threshold, or its files had one process or a disturbed machine") +
       term_paragraph("129", 3, "Stopped by SIGHUP (the terminal closed)") +
       term_paragraph("130", 3, "Stopped by SIGINT (Ctrl-C)") +
       term_paragraph("141", 3,

@@ -201,6 +201,15 @@ template <auto M>
 constexpr ResultField<CompareRow> tested_field(const char* key) {
   return {key, &when_tested<M>, nullptr, true, true};
 }
+// The interval's ends, left out when too few processes bound it (0..infinity).
+template <auto M>
+Json when_bounded(const CompareRow& r) {
+  return std::isfinite(r.ratio_ci_high) ? Json(r.*M) : Json();
+}
+template <auto M>
+constexpr ResultField<CompareRow> bounded_field(const char* key) {
+  return {key, &when_bounded<M>, nullptr, true, true};
+}
 
 // In compare.csv's column order; compare.json's row objects have the same keys.
 constexpr std::array kCompareRowFields{
@@ -222,8 +231,8 @@ constexpr std::array kCompareRowFields{
     member_field<&CompareRow::base_median_ns>("baseline_median_ns_per_frame"),
     member_field<&CompareRow::median_ns>("median_ns_per_frame"),
     member_field<&CompareRow::ratio>("ratio"),
-    member_field<&CompareRow::ratio_ci_low>("ratio_ci_low"),
-    member_field<&CompareRow::ratio_ci_high>("ratio_ci_high"),
+    bounded_field<&CompareRow::ratio_ci_low>("ratio_ci_low"),
+    bounded_field<&CompareRow::ratio_ci_high>("ratio_ci_high"),
     tested_field<&CompareRow::p_value>("p_value"),
     member_field<&CompareRow::verdict>("verdict"),
     member_field<&CompareRow::gate>("gate"),

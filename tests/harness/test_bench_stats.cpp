@@ -43,6 +43,31 @@ TEST_CASE("Mann-Whitney U: the normal approximation with ties and continuity", "
   CHECK(mann_whitney_p(std::vector<double>{1}, b) == 1.0);
 }
 
+TEST_CASE("ratio_interval95: the Hodges-Lehmann ratio and the interval that inverts the U test",
+          "[bench]") {
+  const std::vector<double> a{100, 101, 102, 103, 104};
+  std::vector<double> slower;
+  for (double x : a) slower.push_back(x * 1.1);
+  const RatioInterval r = ratio_interval95(a, slower);
+  REQUIRE(r.bounded);
+  CHECK(r.ratio == Approx(1.1));
+  // 5 and 5: the third smallest and third largest of the 25 log-differences (the exact table's).
+  CHECK(r.low == Approx(111.1 / 104).epsilon(1e-12));
+  CHECK(r.high == Approx(114.4 / 101).epsilon(1e-12));
+  CHECK(mann_whitney_p(a, slower) < 0.05);
+  // 3 and 3 cannot reach 95 %: unbounded, whatever the data.
+  const RatioInterval few = ratio_interval95(std::vector<double>{1, 1, 1},
+                                             std::vector<double>{2, 2, 2});
+  CHECK_FALSE(few.bounded);
+  CHECK(few.ratio == Approx(2.0));
+  // 4 and 4 is the least that can: the smallest and largest difference.
+  const RatioInterval four = ratio_interval95(std::vector<double>{1, 1.1, 1.2, 1.3},
+                                              std::vector<double>{2, 2.1, 2.2, 2.3});
+  REQUIRE(four.bounded);
+  CHECK(four.low == Approx(2.0 / 1.3));
+  CHECK(four.high == Approx(2.3 / 1.0));
+}
+
 TEST_CASE("bench --min-time is a minimum of measured samples, each kept in the JSON", "[bench]") {
   const RunResult r = run_pxflow({"bench", "--backends", "ref-original,ref-local", "--batch", "1",
                                   "--min-time", "0.3", "--json", "-"});
@@ -58,16 +83,29 @@ TEST_CASE("bench --min-time is a minimum of measured samples, each kept in the J
     CHECK(row["median_ci_low_ns"] <= row["median_ns_per_frame"]);
     CHECK(row["median_ns_per_frame"] <= row["median_ci_high_ns"]);
     CHECK(row["min_ns_per_frame"] <= row["median_ci_low_ns"]);
+    // The unit of replication is a process: five by default, each one's median kept, the
+    // row's median theirs.
+    REQUIRE(row["processes"] == 5);
+    const auto medians = row["process_medians_ns_per_frame"].get<std::vector<double>>();
+    REQUIRE(medians.size() == 5);
+    CHECK(row["median_ns_per_frame"].get<double>() == median_of(medians));
+    int samples = 0;
+    for (int n : row["samples_per_process"].get<std::vector<int>>()) samples += n;
+    CHECK(samples == row["repeats"].get<int>());
   }
+  CHECK(j["replication"]["unit"] == "process");
+  CHECK(j["replication"]["processes"] == 5);
   // The machine around the run, and the verdict on it, on the last line of the table.
   CHECK(j["machine"]["before"]["cpus"].get<int>() > 0);
   CHECK(j["machine"]["others_cpu_share"].get<double>() >= 0);
   CHECK(r.err.find("\nmachine: ") != std::string::npos);
 
   const RunResult capped = run_pxflow({"bench", "--backends", "ref-local", "--batch", "1",
-                                       "--min-time", "2", "--max-samples", "6", "--json", "-"});
+                                       "--min-time", "2", "--max-samples", "6", "--processes",
+                                       "3", "--json", "-"});
   REQUIRE(capped.exit_code == 0);
-  CHECK(json::parse(capped.out)["rows"][0]["repeats"] == 6);
+  CHECK(json::parse(capped.out)["rows"][0]["repeats"] == 18);
+  CHECK(json::parse(capped.out)["rows"][0]["samples_per_process"] == json{6, 6, 6});
 }
 
 }  // namespace
