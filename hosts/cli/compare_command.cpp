@@ -82,6 +82,7 @@ std::vector<BenchFile> run_two_builds(const CompareArgs& a) {
   for (const auto& [name, value] : given_option_list(*a.sub->get_parent()))
     globals.push_back(name), value ? globals.push_back(*value) : void();
   std::vector<BenchReport> runs[2];
+  Json built[2];  // each binary's "pxflow" (version, commit), from its first process
   for (int round = 1; round <= a.rounds; ++round)
     for (int turn = 0; turn < 2; ++turn) {
       const int side = round % 2 == 1 ? turn : 1 - turn;
@@ -107,6 +108,7 @@ std::vector<BenchFile> run_two_builds(const CompareArgs& a) {
       try {
         check_bench_file(who, p.bench);
         runs[side].push_back(bench_report_from_json(p.bench));
+        if (built[side].is_null() && p.bench.contains("pxflow")) built[side] = p.bench["pxflow"];
       } catch (const std::exception& e) {
         throw InputError(who + ": its --json is not a bench file of this pxflow (" + e.what() +
                          ")");
@@ -118,8 +120,10 @@ std::vector<BenchFile> run_two_builds(const CompareArgs& a) {
     BenchReport r = combine_processes(runs[side]);
     r.command = a.run[static_cast<std::size_t>(side)] + " bench " + a.bench_args +
                 " (compare --run, " + counted(runs[side].size(), "process") + ")";
+    Json bench = bench_json(r);
+    if (!built[side].is_null()) bench["pxflow"] = built[side];
     files.push_back({a.run[static_cast<std::size_t>(side)],
-                     file_label(static_cast<std::size_t>(side)), bench_json(r)});
+                     file_label(static_cast<std::size_t>(side)), std::move(bench)});
   }
   std::cout << "compare --run: " << a.rounds << " rounds, A and B alternately (A B, B A, ...), "
             << "each a bench process of its own\n";

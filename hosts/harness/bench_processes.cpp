@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <map>
 #include <ostream>
 
@@ -178,15 +179,31 @@ BenchReport combine_processes(std::span<const BenchReport> runs) {
           ref.median_ns_per_frame > 0)
         r.speedup_vs_reference = ref.median_ns_per_frame / r.median_ns_per_frame;
   }
-  // The machine: as disturbed as its most disturbed process.
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const MachineLoad& m = runs[i].machine;
-    c.machine.others_cpu_share = std::max(c.machine.others_cpu_share, m.others_cpu_share);
-    c.machine.steal_share = std::max(c.machine.steal_share, m.steal_share);
-    if (c.machine.disturbed.empty() && !m.disturbed.empty())
-      c.machine.disturbed = "process " + std::to_string(i + 1) + " of " +
-                            std::to_string(runs.size()) + ": " + m.disturbed;
-    c.complete = c.complete && runs[i].complete;
+  // The machine: the shares of other processes and of the hypervisor over all the processes'
+  // measuring, each weighted by the seconds it measured (a process of a few milliseconds sees a
+  // few clock ticks of /proc/stat: alone, one tick of another process is 25 %).
+  double weight = 0, others = 0, steal = 0;
+  bool known = true;
+  for (const BenchReport& run : runs) {
+    double seconds = 0;
+    for (const BenchRow& row : run.rows) seconds += row.measured_s;
+    seconds = std::max(seconds, 1e-3);
+    known = known && run.machine.others_cpu_share >= 0 && run.machine.steal_share >= 0;
+    weight += seconds;
+    others += seconds * std::max(0.0, run.machine.others_cpu_share);
+    steal += seconds * std::max(0.0, run.machine.steal_share);
+    c.complete = c.complete && run.complete;
+  }
+  c.machine.disturbed.clear();
+  c.machine.others_cpu_share = known ? others / weight : -1;
+  c.machine.steal_share = known ? steal / weight : -1;
+  if (known && c.machine.others_cpu_share + c.machine.steal_share > kDisturbedShare) {
+    char why[240];
+    std::snprintf(why, sizeof why,
+                  "other processes took %.0f %% and the hypervisor %.0f %% of the CPUs' time while "
+                  "its %zu processes measured (weighted by their seconds)",
+                  100 * c.machine.others_cpu_share, 100 * c.machine.steal_share, runs.size());
+    c.machine.disturbed = why;
   }
   c.machine.after = runs.back().machine.after;
   return c;

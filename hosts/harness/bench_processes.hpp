@@ -34,8 +34,8 @@ BenchReport bench_report_from_json(const Json& j);
 // The reports of one bench's processes, each the same points, as one: every timed row's samples
 // of every process, `samples_per_process` of each, its median the median of the processes'
 // medians and its interval theirs (median_ci95); a row of an exact clock (a deterministic
-// count) from the first process alone. The machine is disturbed when any process's was; the
-// provenance is the first process's.
+// count) from the first process alone. The machine's shares are the processes', weighted by the
+// seconds each measured; the provenance is the first process's.
 BenchReport combine_processes(std::span<const BenchReport> runs);
 
 // The rows of `r`, point by point, as the bench prints them.
