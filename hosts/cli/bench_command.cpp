@@ -107,8 +107,8 @@ int bench_verdict(const BenchReport& r, std::ostream& out) {
 }
 
 // The options of every process but the ones each gets its own value of (bench_in_processes).
-constexpr const char* kPerProcess[] = {"--processes", "--json",     "--min-time",
-                                       "--backends",  "--backend",  "--progress"};
+constexpr const char* kPerProcess[] = {"--processes", "--json",    "--min-time",
+                                       "--backends",  "--backend", "--progress"};
 
 std::string joined(const std::vector<std::string>& names) {
   std::string s;
@@ -159,8 +159,7 @@ BenchReport bench_in_processes(const BenchArgs& a, const BenchOptions& o, std::o
       break;
     }
     runs.push_back(bench_report_from_json(p.bench));
-    out << "process " << k << " of " << a.processes << ": " << runs.back().rows.size()
-        << " rows\n";
+    out << "process " << k << " of " << a.processes << ": " << runs.back().rows.size() << " rows\n";
     if (k > 1) continue;
     if (!a.no_bound) argv.push_back("--no-bound");  // the first process measured it
     // Only the rows that vary from process to process are measured again.

@@ -9,7 +9,6 @@
 #include "check.hpp"
 #include "check_resume.hpp"
 #include "check_worker.hpp"
-#include "real_options.hpp"
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "counted.hpp"
@@ -21,6 +20,7 @@
 #include "output_plan.hpp"
 #include "path_options.hpp"
 #include "progress.hpp"
+#include "real_options.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -300,10 +300,11 @@ Command add_check_command(CLI::App& app) {
       PathKind::OutputFolder);
   sub->add_flag("--no-repro", a->no_repro,
                 "Write no reproducers (the first differing stage is still named)");
-  declare_real(sub->add_option("--repro-seconds", a->repro_seconds,
-                               "Time each backend's reproducer may spend shrinking its failing pair")
-                   ->capture_default_str(),
-               0, 3600);
+  declare_real(
+      sub->add_option("--repro-seconds", a->repro_seconds,
+                      "Time each backend's reproducer may spend shrinking its failing pair")
+          ->capture_default_str(),
+      0, 3600);
   add_progress_flag(*sub);
   sub->add_option("--case-timeout", a->case_timeout,
                   "Seconds a backend may take for one case before it is called hung (default: "

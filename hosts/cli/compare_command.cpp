@@ -2,7 +2,6 @@
 // (docs/harness.md, "Comparing bench files"); a CI regression gate with --fail-above.
 #include <filesystem>
 #include <iostream>
-
 #include <sstream>
 
 #include "bench_compare.hpp"
@@ -66,8 +65,8 @@ std::vector<std::string> bench_words(const std::string& text) {
                        "as --dut before the command: pxflow --dut ... compare --run ...");
     for (const char* own : {"--processes", "--json", "--progress"})
       if (w == own || w.rfind(std::string(own) + "=", 0) == 0)
-        throw InputError("--bench-args: " + w + ": compare --run gives each bench process " +
-                         own + " itself; leave it out");
+        throw InputError("--bench-args: " + w + ": compare --run gives each bench process " + own +
+                         " itself; leave it out");
     words.push_back(w);
   }
   return words;
@@ -92,8 +91,8 @@ std::vector<BenchFile> run_two_builds(const CompareArgs& a) {
       argv.push_back("bench");
       argv.insert(argv.end(), words.begin(), words.end());
       argv.insert(argv.end(), {"--processes", "1", "--json", "-"});
-      progress("compare --run: round " + std::to_string(round) + " of " +
-               std::to_string(a.rounds) + ": " + label);
+      progress("compare --run: round " + std::to_string(round) + " of " + std::to_string(a.rounds) +
+               ": " + label);
       BenchProcess p;
       try {
         p = run_bench_process(argv);
@@ -135,8 +134,9 @@ constexpr const char* kCompareManifest = ".pxflow-compare";
 
 int run_compare(const CompareArgs& a) {
   if (!a.run.empty() && !a.files.empty())
-    throw InputError("--run OLD NEW: given with bench files; give one of them (see pxflow "
-                     "compare --help)");
+    throw InputError(
+        "--run OLD NEW: given with bench files; give one of them (see pxflow "
+        "compare --help)");
   if (a.run.empty() && (a.sub->get_option("--rounds")->count() > 0 || !a.bench_args.empty()))
     throw InputError("--rounds and --bench-args go with --run OLD NEW (see pxflow compare --help)");
   OutputPlan plan;
@@ -154,12 +154,12 @@ int run_compare(const CompareArgs& a) {
     for (std::size_t i = 2; i < names.size(); ++i)
       bench_out.push_back(&plan.file("--out", (fs::path(a.out_dir) / names[i]).string()));
   }
-  const std::vector<BenchFile> files = a.run.empty() ? read_bench_files(a.files) : std::vector<BenchFile>{};
+  const std::vector<BenchFile> files =
+      a.run.empty() ? read_bench_files(a.files) : std::vector<BenchFile>{};
   plan.prepare();
   const std::vector<BenchFile> ran = a.run.empty() ? std::vector<BenchFile>{} : run_two_builds(a);
   const std::vector<BenchFile>& compared = a.run.empty() ? files : ran;
-  const BenchComparison c =
-      compare_bench_files(compared, {a.across_machines, a.fail_above});
+  const BenchComparison c = compare_bench_files(compared, {a.across_machines, a.fail_above});
   print_comparison(c, std::cout);
   if (json_out) {
     json_out->write(json_document(comparison_json(c)));
@@ -173,15 +173,15 @@ int run_compare(const CompareArgs& a) {
   }
   const int exit = comparison_exit(c);
   int failed = 0, inconclusive = 0;
-  for (const CompareRow& r : c.rows) failed += r.gate == "fail", inconclusive += r.gate == "inconclusive";
+  for (const CompareRow& r : c.rows)
+    failed += r.gate == "fail", inconclusive += r.gate == "inconclusive";
   if (c.rows.empty())
     std::cout << "pxflow compare: no row was compared (exit 1): the files measured no point "
                  "alike (see 'not compared' above)\n";
   else if (a.fail_above >= 0)
-    std::cout << "pxflow compare: " << counted(c.rows.size(), "row") << " gated at "
-              << a.fail_above << " %: " << failed << " failed, " << inconclusive
-              << " inconclusive, " << c.rows.size() - failed - inconclusive << " passed (exit "
-              << exit << ")\n";
+    std::cout << "pxflow compare: " << counted(c.rows.size(), "row") << " gated at " << a.fail_above
+              << " %: " << failed << " failed, " << inconclusive << " inconclusive, "
+              << c.rows.size() - failed - inconclusive << " passed (exit " << exit << ")\n";
   return a.fail_above >= 0 || c.rows.empty() ? exit : 0;
 }
 

@@ -122,8 +122,8 @@ void onto(int fd, int target) {
 // The device's side of the fork: its own process group, the parent-death signal (it dies with
 // pxflow even before the guardian could act), then it waits for the guardian to be watching
 // before it runs anything that could start processes of its own.
-[[noreturn]] void exec_child(char* const* argv, int in, int out, int err, int gate,
-                             int exec_errno, pid_t pxflow) {
+[[noreturn]] void exec_child(char* const* argv, int in, int out, int err, int gate, int exec_errno,
+                             pid_t pxflow) {
   setpgid(0, 0);  // Ctrl-C goes to pxflow, which stops the device itself
 #ifdef __linux__
   prctl(PR_SET_PDEATHSIG, SIGKILL);

@@ -23,8 +23,8 @@ class GuardedChild {
  public:
   // Starts argv (argv[0] searched in PATH, no shell) with `stdin_fd` as its standard input and
   // `stdout_fd` as its standard output; its standard error is `stderr_fd`, or pxflow's when -1.
-  // The caller keeps (and closes) the descriptors. pxflow ignores SIGPIPE from then on: writing to a child that ended
-  // is an error to report, not the end of pxflow.
+  // The caller keeps (and closes) the descriptors. pxflow ignores SIGPIPE from then on: writing to
+  // a child that ended is an error to report, not the end of pxflow.
   GuardedChild(const std::vector<std::string>& argv, int stdin_fd, int stdout_fd,
                int stderr_fd = -1);
   ~GuardedChild() { stop(); }

@@ -110,7 +110,7 @@ struct BenchReport {
   // What each opened backend ran (provenance.hpp: describe_backend), in registry order.
   Json backends = Json::array();
   std::string command;  // the command line that made this report, for its JSON
-  int processes = 1;     // the processes whose rows were combined (bench --processes)
+  int processes = 1;    // the processes whose rows were combined (bench --processes)
   // Which build and machine measured it: null for this process's own (bench_json writes
   // build_provenance() and machine_provenance()); a combined report keeps its processes'.
   Json provenance;

@@ -172,8 +172,9 @@ void list_missing(const BenchFile& base, const BenchFile& f, bool across,
   std::map<RowKey, std::string> in_f;  // every row of f: its note when not measured
   for (const Json& r : f.bench["rows"])
     if (!in_f.contains(row_key(r, across)) || measured(r))
-      in_f[row_key(r, across)] =
-          measured(r) ? "" : str(r, "note").empty() ? "none" : str(r, "note");
+      in_f[row_key(r, across)] = measured(r)              ? ""
+                                 : str(r, "note").empty() ? "none"
+                                                          : str(r, "note");
   std::set<RowKey> listed;
   for (const Json& r : base.bench["rows"]) {
     const RowKey key = row_key(r, across);
@@ -303,8 +304,9 @@ BenchComparison compare_bench_files(std::span<const BenchFile> files,
                                f.label + " (" + f.path + ") were measured on different machines, " +
                                machine_key(files.front()) + " and " + machine_key(f);
       if (!across)
-        throw InputError(what + ": compare them with --across-machines (rows are then paired by "
-                                "the threads asked for, not by device)");
+        throw InputError(what +
+                         ": compare them with --across-machines (rows are then paired by "
+                         "the threads asked for, not by device)");
       if (c.across_machines.empty()) c.across_machines = what;
     }
   for (const BenchFile& f : files) {
@@ -325,7 +327,8 @@ BenchComparison compare_bench_files(std::span<const BenchFile> files,
     for (const Json& r : f.bench["rows"]) {
       if (!measured(r)) continue;
       const RowKey key = row_key(r, across);
-      const auto same = std::find_if(base.begin(), base.end(), [&](auto& b) { return b.first == key; });
+      const auto same =
+          std::find_if(base.begin(), base.end(), [&](auto& b) { return b.first == key; });
       if (same != base.end()) {
         c.rows.push_back(compare_rows(files.front(), f, *same->second, r, options.fail_above));
         continue;
@@ -342,7 +345,8 @@ BenchComparison compare_bench_files(std::span<const BenchFile> files,
                          key_difference(nearest->first, key, files.front().label, f.label)
                    : ": not measured in " + files.front().label));
     }
-  for (const BenchFile& f : files.subspan(1)) list_missing(files.front(), f, across, c.not_compared);
+  for (const BenchFile& f : files.subspan(1))
+    list_missing(files.front(), f, across, c.not_compared);
   return c;
 }
 

@@ -88,10 +88,9 @@ Json bench_json(const BenchReport& r) {
          {"backends", r.backends},
          {"machine", machine_json(r.machine)},
          // Which machine and build: what pxflow compare names each file by.
-         {"provenance",
-          r.provenance.is_null()
-              ? Json{{"build", build_provenance()}, {"machine", machine_provenance()}}
-              : r.provenance},
+         {"provenance", r.provenance.is_null()
+                            ? Json{{"build", build_provenance()}, {"machine", machine_provenance()}}
+                            : r.provenance},
          {"rows", rows},
          {"skipped", r.skipped}};
   if (r.bound_bytes_per_cycle > 0) {

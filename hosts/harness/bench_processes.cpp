@@ -76,8 +76,10 @@ BenchRow combined_row(const std::vector<const BenchRow*>& rows, std::size_t proc
   c.repeats = static_cast<int>(c.samples_ns_per_frame.size());
   c.median_ns_per_frame = median_of(medians);
   std::tie(c.median_ci_low_ns, c.median_ci_high_ns) = median_ci95(medians);
-  c.min_ns_per_frame = *std::min_element(c.samples_ns_per_frame.begin(), c.samples_ns_per_frame.end());
-  c.max_ns_per_frame = *std::max_element(c.samples_ns_per_frame.begin(), c.samples_ns_per_frame.end());
+  c.min_ns_per_frame =
+      *std::min_element(c.samples_ns_per_frame.begin(), c.samples_ns_per_frame.end());
+  c.max_ns_per_frame =
+      *std::max_element(c.samples_ns_per_frame.begin(), c.samples_ns_per_frame.end());
   c.noisy = is_noisy(c.median_ns_per_frame, c.median_ci_low_ns, c.median_ci_high_ns,
                      *std::min_element(medians.begin(), medians.end()));
   c.frames_per_s = 1e9 / c.median_ns_per_frame;
@@ -215,11 +217,10 @@ void print_bench_rows(const BenchReport& r, std::ostream& out) {
   out << bench_header_line(width) << "\n";
   std::string point;
   for (const BenchRow& row : r.rows) {
-    const std::string here = row.setting + " " + std::to_string(row.width) + "x" +
-                             std::to_string(row.height) + " S=" +
-                             std::to_string(row.search_radius) +
-                             " batch=" + std::to_string(row.batch) + " threads=" +
-                             (row.threads_requested ? std::to_string(row.threads) : "all");
+    const std::string here =
+        row.setting + " " + std::to_string(row.width) + "x" + std::to_string(row.height) +
+        " S=" + std::to_string(row.search_radius) + " batch=" + std::to_string(row.batch) +
+        " threads=" + (row.threads_requested ? std::to_string(row.threads) : "all");
     if (here != point) out << "-- " << (point = here) << "\n";
     out << bench_row_line(row, width) << "\n";
   }

@@ -63,8 +63,7 @@ RatioInterval ratio_interval95(std::span<const double> a, std::span<const double
   const double n1 = static_cast<double>(a.size()), n2 = static_cast<double>(b.size());
   // The rank of the lower end: N/2 - z sqrt(n1 n2 (n1 + n2 + 1) / 12), rounded down (the
   // normal approximation; at 5 and 5 it gives the exact table's 3).
-  const double c =
-      std::floor(n1 * n2 / 2 - 1.959964 * std::sqrt(n1 * n2 * (n1 + n2 + 1) / 12));
+  const double c = std::floor(n1 * n2 / 2 - 1.959964 * std::sqrt(n1 * n2 * (n1 + n2 + 1) / 12));
   r.high = std::numeric_limits<double>::infinity();
   if (c < 1) return r;
   const auto k = static_cast<std::size_t>(c);

@@ -56,8 +56,8 @@ TEST_CASE("ratio_interval95: the Hodges-Lehmann ratio and the interval that inve
   CHECK(r.high == Approx(114.4 / 101).epsilon(1e-12));
   CHECK(mann_whitney_p(a, slower) < 0.05);
   // 3 and 3 cannot reach 95 %: unbounded, whatever the data.
-  const RatioInterval few = ratio_interval95(std::vector<double>{1, 1, 1},
-                                             std::vector<double>{2, 2, 2});
+  const RatioInterval few =
+      ratio_interval95(std::vector<double>{1, 1, 1}, std::vector<double>{2, 2, 2});
   CHECK_FALSE(few.bounded);
   CHECK(few.ratio == Approx(2.0));
   // 4 and 4 is the least that can: the smallest and largest difference.
@@ -100,9 +100,9 @@ TEST_CASE("bench --min-time is a minimum of measured samples, each kept in the J
   CHECK(j["machine"]["others_cpu_share"].get<double>() >= 0);
   CHECK(r.err.find("\nmachine: ") != std::string::npos);
 
-  const RunResult capped = run_pxflow({"bench", "--backends", "ref-local", "--batch", "1",
-                                       "--min-time", "2", "--max-samples", "6", "--processes",
-                                       "3", "--json", "-"});
+  const RunResult capped =
+      run_pxflow({"bench", "--backends", "ref-local", "--batch", "1", "--min-time", "2",
+                  "--max-samples", "6", "--processes", "3", "--json", "-"});
   REQUIRE(capped.exit_code == 0);
   CHECK(json::parse(capped.out)["rows"][0]["repeats"] == 18);
   CHECK(json::parse(capped.out)["rows"][0]["samples_per_process"] == json{6, 6, 6});

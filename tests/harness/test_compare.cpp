@@ -130,7 +130,8 @@ TEST_CASE("compare: rows of one process are inconclusive, never a failure", "[co
   dir.write("a.json", a.dump());
   for (json& row : a["rows"])
     for (auto& x : row["samples_ns_per_frame"]) x = x.get<double>() * 1.91;
-  for (json& row : a["rows"]) row["median_ns_per_frame"] = row["median_ns_per_frame"].get<double>() * 1.91;
+  for (json& row : a["rows"])
+    row["median_ns_per_frame"] = row["median_ns_per_frame"].get<double>() * 1.91;
   dir.write("b.json", a.dump());
   const RunResult r = compare(dir, "b.json", {"--fail-above", "5"});
   INFO(r.out);
@@ -139,7 +140,8 @@ TEST_CASE("compare: rows of one process are inconclusive, never a failure", "[co
   CHECK(r.out.find(" 0 failed, 2 inconclusive") != std::string::npos);
 }
 
-TEST_CASE("compare: a wide interval holding 1 never fails, whatever the median ratio", "[compare]") {
+TEST_CASE("compare: a wide interval holding 1 never fails, whatever the median ratio",
+          "[compare]") {
   TempDir dir;
   json a = make_baseline(dir);
   json b = a;
@@ -276,7 +278,8 @@ TEST_CASE("report --bench-json A B: a section per compared file and one chart ac
   for (const auto& s : j["sections"]) {
     if (s["key"] == "comparison") chart = s["charts"].size() == 1;
     if (s["key"] == "comparison-b")
-      for (const auto& row : s["rows"]) flagged |= row[0] == "ref-original" && row[7] == "inconclusive";
+      for (const auto& row : s["rows"])
+        flagged |= row[0] == "ref-original" && row[7] == "inconclusive";
   }
   CHECK(chart);
   CHECK(flagged);
