@@ -8,9 +8,13 @@ Runs `pxflow compare --run A B` many times on this machine:
 Each trial's two bench files are judged again at every --gate threshold (pxflow compare FILES
 --fail-above PCT), so one run of the processes gives every threshold's verdict. --hog N runs N
 busy-looping processes for the whole experiment (a disturbed machine).
+The point is batch 1 at 64x64 with --min-time 0.2 per process: fast enough that every sample of
+both sides is the mean of many runs (the knob rounds B's runs per sample up to a multiple of 20
+at 5 %, of 10 at 10 %), so the two sides differ in the planted work alone.
 
 Usage: ci/gate_error_rates.py build/pxflow [--backends ref-local,cpu] [--trials 20]
-       [--rounds 6] [--gates 2,5] [--planted 5,10] [--hog 1] [--json out.json]
+       [--rounds 10] [--gates 0,2,5] [--planted 5,10] [--hog 1] [--extra "--threads 1"]
+       [--json out.json]     (under `taskset -c N`, every process runs on CPU N)
 Prints one Markdown table; exit 0 (the figures are the result, not a verdict).
 """
 import argparse
@@ -44,7 +48,7 @@ def trial(pxflow, a, b, backend, args, folder):
     """One compare --run: the outcome at every gate, from its two bench files."""
     out = os.path.join(folder, "cmp")
     bench = (f"--backends {backend} --batch {args.batch} --sizes {args.size} "
-             f"--min-time {args.min_time} --no-bound")
+             f"--min-time {args.min_time} --no-bound {args.extra}").strip()
     run = subprocess.run([pxflow, "compare", "--run", a, b, "--rounds", str(args.rounds),
                           "--bench-args", bench, "--fail-above", str(args.gates[0]), "--out", out],
                          capture_output=True, text=True)
@@ -68,13 +72,14 @@ def main():
     p.add_argument("pxflow")
     p.add_argument("--backends", default="ref-local,cpu")
     p.add_argument("--trials", type=int, default=20)
-    p.add_argument("--rounds", type=int, default=6)
-    p.add_argument("--gates", default="2,5")
+    p.add_argument("--rounds", type=int, default=10)
+    p.add_argument("--gates", default="0,2,5")
     p.add_argument("--planted", default="5,10")
-    p.add_argument("--batch", default="16")
+    p.add_argument("--batch", default="1")
     p.add_argument("--size", default="64x64")
-    p.add_argument("--min-time", default="0.1")
+    p.add_argument("--min-time", default="0.2")
     p.add_argument("--hog", type=int, default=0)
+    p.add_argument("--extra", default="", help="more bench options, e.g. \"--threads 1\"")
     p.add_argument("--json")
     args = p.parse_args()
     args.gates = [float(g) for g in args.gates.split(",")]
@@ -110,7 +115,7 @@ def main():
     condition = f"{args.hog} CPU hog(s)" if args.hog else "quiet"
     print(f"machine: {condition}; each trial: compare --run with {args.rounds} rounds "
           f"(--bench-args \"--batch {args.batch} --sizes {args.size} --min-time {args.min_time} "
-          f"--no-bound\")\n")
+          f"--no-bound {args.extra}\"); affinity: CPUs {sorted(os.sched_getaffinity(0))}\n")
     print("| backend | experiment | --fail-above | trials | fail | pass | inconclusive | median ratio |")
     print("|---|---|---|---|---|---|---|---|")
     for r in results:

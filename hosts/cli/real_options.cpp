@@ -23,14 +23,13 @@ std::string real_text(double v) {
 
 CLI::Option* declare_real(CLI::Option* option, double lo, double hi) {
   declared_reals()[option] = {lo, hi};
-  const std::string range = real_text(lo) + " to " + real_text(hi);
   option->check(CLI::Validator(
-      [lo, hi, range](std::string& text) -> std::string {
+      [lo, hi](std::string& text) -> std::string {
         char* end = nullptr;
         const double v = std::strtod(text.c_str(), &end);
-        if (text.empty() || *end != '\0' || !std::isfinite(v))
-          return "'" + text + "' is not a number (allowed: " + range + ")";
-        if (v < lo || v > hi) return "'" + text + "' is outside " + range;
+        // CLI11's Range wording, which parse_errors.cpp turns into pxflow's one line.
+        if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
+          return "Value " + text + " not in range " + real_text(lo) + " to " + real_text(hi);
         return "";
       },
       "FLOAT in [" + real_text(lo) + " - " + real_text(hi) + "]"));
