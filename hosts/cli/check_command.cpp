@@ -21,6 +21,7 @@
 #include "path_options.hpp"
 #include "progress.hpp"
 #include "real_options.hpp"
+#include "shard_auto.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -64,15 +65,16 @@ std::vector<std::string> chosen_backends(const CheckArgs& a) {
   return split_list(a.backends);
 }
 
-// The command that reproduces this run, for the results file.
-std::string command_line(const CheckArgs& a) {
+// The command that reproduces this run, for the results file: with the shard it ran (`--shard
+// auto` resolved), so that pxflow merge and a rerun see K/M.
+std::string command_line(const CheckArgs& a, const Shard& shard) {
   std::string c = "pxflow" + a.globals + " check";
   if (a.backend_opt->count() > 0) c += " --backend " + a.backend;
   if (a.backends_opt->count() > 0) c += " --backends " + a.backends;
   if (!a.require.empty()) c += " --require " + a.require;
   if (a.cases > 0) c += " --cases " + std::to_string(a.cases);
   c += " --seed " + std::to_string(a.seed);
-  if (a.shard_opt->count() > 0) c += " --shard " + a.shard;
+  if (a.shard_opt->count() > 0) c += " --shard " + shard.text();
   if (a.generated_only) c += " --generated-only";
   if (a.limits_only) c += " --limits-only";
   if (a.data_opt->count() > 0) c += " --data " + shell_word(a.data_dir);
@@ -107,7 +109,14 @@ CheckOptions options_from_args(const CheckArgs& a) {
   o.backends = chosen_backends(a);
   o.require = split_list(a.require);
   o.fuzz_pairs = a.cases;
-  if (a.shard_opt->count() > 0) o.shard = parse_shard("--shard", a.shard);
+  std::string shard_source;  // with --shard auto: the engine and variables K/M came from
+  if (a.shard_opt->count() > 0 && a.shard == "auto") {
+    const AutoShard found = shard_from_environment();
+    o.shard = found.shard;
+    shard_source = " (--shard auto: " + found.source + ")";
+  } else if (a.shard_opt->count() > 0) {
+    o.shard = parse_shard("--shard", a.shard);
+  }
   o.backend_options = a.backend_options;
   o.isolation = {a.worker_command, a.case_timeout};
   o.corpus.seed = a.seed;
@@ -119,11 +128,12 @@ CheckOptions options_from_args(const CheckArgs& a) {
         std::string(kHelp));
   o.corpus.limits_only = a.limits_only;
   o.corpus.real = !a.generated_only && !a.limits_only;
-  o.command = command_line(a);
+  o.command = command_line(a, o.shard);
   o.banner = "pxflow check: seed " + std::to_string(a.seed) +
              (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
                           : ", fixed corpus") +
-             (o.shard.count > 1 ? ", shard " + o.shard.text() : "");
+             (o.shard.count > 1 || !shard_source.empty() ? ", shard " + o.shard.text() : "") +
+             shard_source;
   return o;
 }
 
@@ -255,6 +265,7 @@ const std::vector<std::string> kCheckExamples = {
     "check --dut ref=exec:pxflow-dut-ref --require ref  # a kernel outside pxflow",
     "check --backends m4-qemu --require m4-qemu  # the Cortex-M4 firmware under QEMU",
     "check --cases 10000 --seed 7 --shard 2/4 --json s2.json  # one quarter of a campaign",
+    "check --cases 10000 --shard auto --json s.json  # a GitLab, Kubernetes or Slurm matrix's part",
     "check --resume ci.json  # finish a check a signal stopped (Ctrl-C: its --json file kept it)",
 };
 
@@ -273,8 +284,13 @@ Command add_check_command(CLI::App& app) {
       ->check(CLI::Range(1L, 100000000L));
   a->shard_opt = sub->add_option("--shard", a->shard,
                                  "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
-                                 "`pxflow merge` combines the parts' --json files)")
-                     ->type_name("K/M");
+                                 "`pxflow merge` combines the parts' --json files). auto: K and M "
+                                 "from the CI engine's variables, the first set of GitLab "
+                                 "parallel: (CI_NODE_INDEX/CI_NODE_TOTAL), a Kubernetes Indexed "
+                                 "Job (JOB_COMPLETION_INDEX/PXFLOW_SHARD_TOTAL), a Slurm array "
+                                 "(SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT); the --json file "
+                                 "records the K/M found")
+                     ->type_name("K/M|auto");
   add_json_option(*sub, a->json_path,
                   "also written when a signal stops the check: what it checked, \"complete\": "
                   "false; --resume goes on from it");

@@ -5,12 +5,14 @@
 #include <utility>
 
 #include "registry.hpp"
+#include "shard_auto.hpp"
 
 namespace pxflow::cli {
 
 namespace {
 
-// The variables read outside any family (hosts/io/opencv_module.cpp).
+// The variables read outside any family (hosts/io/opencv_module.cpp, hosts/core/interrupt.cpp;
+// check --shard auto's are shard_auto.cpp's).
 const std::vector<EnvironmentVariable> kCoreEnvironment = {
     {"PXFLOW_OPENCV_MODULE",
      "The OpenCV module to load (libpxflow_opencv.so, needed to decode images and video) "
@@ -55,6 +57,7 @@ std::string term_paragraph(const std::string& term, std::size_t term_width,
 // Every variable once, in name order; a variable read by several families gets every use.
 std::vector<EnvironmentVariable> environment() {
   std::vector<EnvironmentVariable> all = kCoreEnvironment;
+  for (EnvironmentVariable& v : shard_environment()) all.push_back(std::move(v));
   for (const BackendFamily& f : backend_families())
     for (const EnvironmentVariable& v : f.environment) {
       auto same =
