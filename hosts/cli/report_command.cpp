@@ -90,6 +90,7 @@ void add_accuracy(ReportInputs& in, const ReportArgs& a) {
                         (a.device.empty() ? "" : " --device " + shell_word(a.device)) +
                         (a.data_dir == kSampleDataDir ? "" : " --data " + shell_word(a.data_dir));
   std::cout << "== " << in.accuracy_command << "\n";
+  in.measured_here.push_back("accuracy");
   const auto report = accuracy::run_accuracy(o);
   in.accuracy.push_back({"pairs", "pxflow setting", "against", "method", "frames", "with flow",
                          "mean error px", "p95 error px", "median us/frame"});
@@ -185,13 +186,19 @@ std::string recorded_command(const Json& j, const char* kind, const std::string&
 // What each backend of the report runs: the bench's own descriptions (what it opened), else the
 // rows of the check opened here for their description.
 void describe_opened_backends(ReportInputs& in, const ReportArgs& a) {
+  // The bench file's (A's) machine, never this one's, when the bench was read from a file.
+  const std::string bench_from = in.bench_files.empty()
+                                     ? std::string("this report's bench, on this machine")
+                                     : "bench file " + in.bench_files.front().label + " (" +
+                                           in.bench_files.front().path + "), on " +
+                                           file_machine(in.bench_files.front());
   if (!in.bench.is_null() && in.bench.contains("backends") && in.bench["backends"].is_array() &&
       !in.bench["backends"].empty()) {
     in.backends = in.bench["backends"];
-    in.backends_source =
-        "As the bench opened each backend (all threads). Device and driver "
-        "strings come from the backends themselves (OpenCL platform and driver "
-        "versions, Vulkan driver properties, the GAP8 model's source trees).";
+    in.backends_source = "As " + bench_from +
+                         ", opened each backend (all threads). Device and driver strings come "
+                         "from the backends themselves (OpenCL platform and driver versions, "
+                         "Vulkan driver properties, the GAP8 model's source trees).";
     return;
   }
   std::vector<std::string> names = split_list(a.backends);
@@ -203,8 +210,12 @@ void describe_opened_backends(ReportInputs& in, const ReportArgs& a) {
     if (opened.backend) in.backends.push_back(describe_backend(row.name, *opened.backend));
   }
   in.backends_source =
-      "The bench results do not describe the backends, so this report opened "
-      "the rows it knows on this machine to describe them.";
+      in.bench_files.empty()
+          ? "The bench results do not describe the backends, so this report opened the rows it "
+            "knows on this machine to describe them."
+          : "The bench file does not describe its backends, so this report opened the rows it "
+            "knows on this machine to describe them; what " +
+                bench_from + ", ran may differ.";
 }
 
 // What the descriptions above leave out of the check's backends that ran (a --dut row the bench
@@ -280,9 +291,8 @@ void read_given_results(ReportInputs& in, const ReportArgs& a) {
     Json j = read_json("--bench-json", path, "bench");
     check_bench_file("--bench-json " + path, j);
     if (in.bench.is_null()) in.bench = j;
-    in.compared.push_back({path, file_label(in.compared.size()), std::move(j)});
+    in.bench_files.push_back({path, file_label(in.bench_files.size()), std::move(j)});
   }
-  if (in.compared.size() < 2) in.compared.clear();
   // The accuracy table's and the pictures' backend runs last: one it cannot run is refused now.
   if (!a.no_accuracy) accuracy::require_backend_runs(accuracy_options(a));
 }
@@ -356,6 +366,7 @@ void add_check(ReportInputs& in, const ReportArgs& a) {
                      a.shared_flags() +
                      (a.data_dir == kSampleDataDir ? "" : " --data " + shell_word(a.data_dir));
   o.command = in.check_command;
+  in.measured_here.push_back("check");
   const std::optional<CheckReport> kept = kept_check(a, o.command);
   const std::string kept_path = (std::filesystem::path(a.out_dir) / kKeptCheck).string();
   if (kept && kept->complete) {
@@ -396,6 +407,7 @@ void add_bench(ReportInputs& in, const ReportArgs& a) {
                      (a.threads ? " --threads " + std::to_string(a.threads) : "") +
                      (a.quick ? " --quick" : "");
   std::cout << "== " << in.bench_command << "\n";
+  in.measured_here.push_back("bench");
   BenchReport r = run_bench(o, std::cout);
   if (r.stop) throw *r.stop;  // the report's bench is not kept: it reruns whole
   r.command = in.bench_command;
@@ -447,6 +459,7 @@ int run_report(const ReportArgs& a) {
     describe_backends(in, a);
     if (!a.no_accuracy) add_accuracy(in, a);
     add_family_sections(in, a);
+    for (const auto& s : in.sections) in.measured_here.push_back(s.key);
     stop_if_interrupted("the report's measurements, before any report file was written");
   } catch (const Interrupted& e) {
     throw keep_check(out, in, a, e);

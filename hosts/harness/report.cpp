@@ -132,7 +132,7 @@ std::string render_html(const std::vector<Section>& secs, const std::filesystem:
        "</style></head><body><h1>pxflow report</h1>";
   bool first_screen = true;
   for (const auto& s : secs) {
-    const bool first = s.key == "provenance" || s.key == "backends";
+    const bool first = s.key.starts_with("provenance") || s.key == "backends";
     if (first_screen && !first) {
       o << "</div>";
       first_screen = false;
@@ -203,17 +203,32 @@ ReportOutputs plan_report(OutputPlan& plan, const std::string& out_dir,
 void write_report(ReportOutputs& out, const ReportInputs& in) {
   const Json build = build_provenance();
   const Json machine = machine_provenance();
-  std::vector<Section> secs{report::provenance(in, build, machine), report::backends_section(in)};
+  std::vector<Section> secs{report::provenance(in, build, machine)};
+  for (const BenchFile& f : in.bench_files)  // the first file's backends: the backends section's
+    secs.push_back(report::bench_file_provenance(f, &f == &in.bench_files.front()));
+  secs.push_back(report::backends_section(in));
   if (!in.check.is_null()) secs.push_back(report::conformance(in.check, in.check_command));
+  const bool several = report::several_machines(in, machine);
   if (!in.bench.is_null()) {
-    secs.push_back(report::throughput(in.bench, in.bench_command));
+    report::MachineTag tag;  // a report of one machine stays uncluttered
+    if (several && !in.bench_files.empty())
+      tag = {" — " + in.bench_files.front().label + ": " + file_machine(in.bench_files.front()),
+             " — " + file_machine(in.bench_files.front())};
+    secs.push_back(report::throughput(in.bench, in.bench_command, tag));
+    // A bench of its own points (custom) ran none of the default sweeps: its points are shown
+    // whole, and no sweep is said to be left out.
+    const bool custom = report::has_sweep(in.bench, "custom");
     for (const char* sweep : {"batch", "size", "radius", "threads"})
-      secs.push_back(report::scaling(in.bench, sweep));
+      if (!custom || report::has_sweep(in.bench, sweep))
+        secs.push_back(report::scaling(in.bench, sweep, tag));
+    for (Section& s : report::custom_points(in.bench, tag)) secs.push_back(std::move(s));
   }
   Json comparison;
-  if (in.compared.size() >= 2) {
-    const BenchComparison c = compare_bench_files(in.compared, {.across_machines = true});
-    for (Section& s : report::comparison_sections(in.compared, c)) secs.push_back(std::move(s));
+  if (in.bench_files.size() >= 2) {
+    // A report is where hardware is compared: files of other machines are what it is for.
+    const BenchComparison c = compare_bench_files(in.bench_files, {.across_machines = true});
+    for (Section& s : report::comparison_sections(in.bench_files, c, several))
+      secs.push_back(std::move(s));
     comparison = comparison_json(c);
   }
   if (!in.accuracy.empty()) secs.push_back(report::accuracy(in));
@@ -229,7 +244,9 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
                 {{"build", build},
                  {"machine", machine},
                  {"backends", in.backends},
-                 {"backends_source", in.backends_source}}},
+                 {"backends_source", in.backends_source},
+                 {"measured_here", in.measured_here},
+                 {"bench_files", report::bench_files_json(in.bench_files)}}},
                {"commands", nullptr},
                {"check", in.check},
                {"bench", in.bench},

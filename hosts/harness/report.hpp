@@ -16,8 +16,12 @@ namespace pxflow {
 struct ReportInputs {
   Json check;  // check_json(), or null
   Json bench;  // bench_json(), or null
-  // Bench files to compare (report --bench-json A B ...), A (= bench) first; fewer than two: none.
-  std::vector<BenchFile> compared;
+  // Every bench file given (report --bench-json A B ...), A (= bench) first: each has its own
+  // provenance block; two or more are also compared with A. Empty when the report ran the bench.
+  std::vector<BenchFile> bench_files;
+  // What this run measured itself, on this machine ("check", "bench", "accuracy", a family
+  // section's key): the only parts the local machine's provenance is shown for.
+  std::vector<std::string> measured_here;
   std::string check_command, bench_command, report_command;
   // What each backend runs (provenance.hpp: describe_backend), in registry order, and where the
   // descriptions come from (the bench's run, or this report opening the rows).

@@ -12,8 +12,9 @@ constexpr const char* kFileMarkers[] = {"circle", "square", "triangle", "diamond
                                         "down",   "cross",  "plus"};
 
 // frames/s by batch of every file's batch sweep (or --batch list), host-clock and device-clock
-// rows alike but never a deterministic model's: a series per file, backend and clock.
-Chart batch_chart(std::span<const BenchFile> files) {
+// rows alike but never a deterministic model's: a series per file, backend and clock, named by
+// its file's machine when the files come from several (`several_machines`).
+Chart batch_chart(std::span<const BenchFile> files, bool several_machines) {
   Chart chart;
   chart.title = "Frames per second by batch, every bench file (marker: file; colour: backend)";
   chart.x = {"batch (pairs per call, log scale)", true};
@@ -30,7 +31,8 @@ Chart batch_chart(std::span<const BenchFile> files) {
       Series& s = by_backend[{rank, backend + " " + source}];
       if (s.name.empty()) {
         s.name = files[i].label + " " + backend +
-                 (source.rfind("host", 0) == 0 ? "" : " (" + source + ")");
+                 (source.rfind("host", 0) == 0 ? "" : " (" + source + ")") +
+                 (several_machines ? " — " + file_machine(files[i]) : "");
         s.style = backend_style(rank);
         s.style.marker = kFileMarkers[i % std::size(kFileMarkers)];
         s.style.dashed = i > 0;
@@ -44,8 +46,8 @@ Chart batch_chart(std::span<const BenchFile> files) {
 
 }  // namespace
 
-std::vector<Section> comparison_sections(std::span<const BenchFile> files,
-                                         const BenchComparison& c) {
+std::vector<Section> comparison_sections(std::span<const BenchFile> files, const BenchComparison& c,
+                                         bool several_machines) {
   Section all{
       "comparison", "Comparison of bench files", "", {"file", "machine and build"}, {}, {}, {}};
   all.text =
@@ -56,13 +58,15 @@ std::vector<Section> comparison_sections(std::span<const BenchFile> files,
       "on the two rows' samples gives p < 0.05 (docs/harness.md, \"Comparing bench files\").";
   for (std::size_t i = 0; i < files.size(); ++i) all.rows.push_back({files[i].label, c.files[i]});
   for (const std::string& w : c.warnings) all.text += "\nWarning: " + w + ".";
-  if (Chart chart = batch_chart(files); !chart.empty()) all.charts.push_back(std::move(chart));
+  if (Chart chart = batch_chart(files, several_machines); !chart.empty())
+    all.charts.push_back(std::move(chart));
   std::vector<Section> out{all};
   for (const BenchFile& f : files.subspan(1)) {
     std::string key = "comparison-" + f.label;  // section keys are lower case
     key.back() = static_cast<char>(key.back() - 'A' + 'a');
     Section s{key,
-              "Comparison: " + f.label + ", " + file_machine(f) + ", against A",
+              "Comparison: " + f.label + ", " + file_machine(f) + ", against A, " +
+                  file_machine(files.front()),
               "",
               {"backend", "point", "clock", "A ns/frame", f.label + " ns/frame", "ratio [95% CI]",
                "p", "verdict"},

@@ -38,6 +38,28 @@ const char* const kInstructionNote =
 
 std::string threads_text(int n) { return counted(n, "thread"); }
 
+std::string stopped_after(const Json& bench) {
+  if (bench.value("complete", true)) return "";
+  return "a signal stopped this bench after " + std::to_string(bench.value("points_done", 0L)) +
+         " of " + std::to_string(bench.value("points_total", 0L)) + " points";
+}
+
+std::string point_name(const Json& r) {
+  return str(r, "profile") + ", " + std::to_string(r.value("width", 0)) + "x" +
+         std::to_string(r.value("height", 0)) +
+         ", S=" + std::to_string(r.value("search_radius", 0)) + ", batch " +
+         std::to_string(r.value("batch", 0)) + ", " + threads_text(r.value("threads", 0));
+}
+
+std::vector<const Json*> in_registry_order(const Json& rows) {
+  std::vector<const Json*> out;
+  for (const auto& r : rows) out.push_back(&r);
+  std::stable_sort(out.begin(), out.end(), [](const Json* a, const Json* b) {
+    return registry_rank(str(*a, "backend")) < registry_rank(str(*b, "backend"));
+  });
+  return out;
+}
+
 ChartStyle style_of(const std::string& backend) { return backend_style(registry_rank(backend)); }
 
 }  // namespace pxflow::report

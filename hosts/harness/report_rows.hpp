@@ -2,6 +2,7 @@
 // whether it was timed, and the cells every table writes the same way.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "result_json.hpp"
 #include "svg_chart.hpp"
@@ -28,6 +29,14 @@ std::string instructions_cell(const Json& row);
 extern const char* const kInstructionNote;
 
 std::string threads_text(int n);  // "1 thread", "4 threads"
+// "a signal stopped this bench after N of M points" for a bench a signal stopped ("complete":
+// false), "" for a whole one.
+std::string stopped_after(const Json& bench);
+// "px4flow-64, 64x64, S=4, batch 256, 2 threads": a row's point.
+std::string point_name(const Json& row);
+// The elements of `rows` (bench rows, described backends) sorted by their backend's registry
+// position, stable within a backend (the file's order).
+std::vector<const Json*> in_registry_order(const Json& rows);
 // A backend's style in every chart: its registry position's.
 ChartStyle style_of(const std::string& backend);
 

@@ -70,6 +70,43 @@ std::string fixed_part(const SweepInfo& s, const Json& r) {
   return out;
 }
 
+// The parameters that take more than one value among `rows`.
+std::vector<const SweepInfo*> varied(const std::vector<const Json*>& rows) {
+  std::vector<const SweepInfo*> out;
+  for (const SweepInfo& s : kSweeps) {
+    std::set<std::string> values;
+    for (const Json* r : rows) values.insert(sweep_column(s, *r));
+    if (values.size() > 1) out.push_back(&s);
+  }
+  return out;
+}
+
+// Whether each value of the parameter has an x of its own (two frame sizes of one area do not).
+bool distinct_x(const SweepInfo& s, const std::vector<const Json*>& rows) {
+  std::set<double> xs;
+  std::set<std::string> values;
+  for (const Json* r : rows) xs.insert(sweep_x(s, *r)), values.insert(sweep_column(s, *r));
+  return xs.size() == values.size();
+}
+
+// A row per point and backend, in the bench's order (point by point, registry order within).
+void points_table(Section& s, const Json& bench, const std::vector<const Json*>& rows) {
+  s.header = {"backend", "point", "clock", "ns/frame (median)", "frames/s", "ns/POI", "note"};
+  for (const Json* r : rows) {
+    std::vector<std::string> row{str(*r, "backend"), point_name(*r), str(*r, "source")};
+    if (!timed(*r))
+      row.insert(row.end(), {"-", "-", "-"});
+    else if (counts_instructions(bench, str(*r, "backend")))
+      row.insert(row.end(), {instructions_cell(*r), "-", "-"});
+    else
+      row.insert(row.end(), {num((*r)["median_ns_per_frame"], "%.0f") +
+                                 ((*r).value("noisy", false) ? " (noisy)" : ""),
+                             num((*r)["frames_per_s"]), num((*r)["ns_per_poi"])});
+    row.push_back(str(*r, "note"));
+    s.rows.push_back(std::move(row));
+  }
+}
+
 const SweepInfo* find_sweep(const std::string& name) {
   for (const SweepInfo& s : kSweeps)
     if (name == s.name) return &s;
@@ -174,17 +211,21 @@ void put_table(Section& s, const SweepTable& t) {
 }
 
 // The host clock's chart and the exact model clock's, apart; a chart without series is left out.
-void put_charts(Section& s, const SweepInfo& info, const SweepTable& t) {
+void put_charts(Section& s, const SweepInfo& info, const SweepTable& t, const MachineTag& tag) {
   const std::string y_label = info.per_poi ? "ns per POI (log scale)" : "frames/s (log scale)";
   Chart host, model;
-  host.title = std::string(info.title) + ", host clock";
-  model.title = std::string(info.title) + ", exact model clock (not the host)";
+  host.title = std::string(info.title) + ", host clock" + tag.title;
+  model.title = std::string(info.title) + ", exact model clock (not the host)" + tag.title;
   for (Chart* c : {&host, &model}) {
     c->x = {info.x_label, info.x_log, !info.x_log};  // S and threads are whole numbers
     c->y = {y_label, true};
   }
-  for (const auto& [_, l] : t.lines)
-    if (l.charted && !l.series.points.empty()) (l.model ? model : host).series.push_back(l.series);
+  for (const auto& [_, l] : t.lines) {
+    if (!l.charted || l.series.points.empty()) continue;
+    Series series = l.series;
+    series.name += tag.series;
+    (l.model ? model : host).series.push_back(std::move(series));
+  }
   if (!host.series.empty()) s.charts.push_back(host);
   if (!model.series.empty()) s.charts.push_back(model);
 }
@@ -220,9 +261,10 @@ std::string scaling_text(const SweepInfo& info, const Json& first, const SweepTa
 
 }  // namespace
 
-Section scaling(const Json& bench, const std::string& sweep) {
+Section scaling(const Json& bench, const std::string& sweep, const MachineTag& tag) {
   const SweepInfo* info = find_sweep(sweep);
-  Section s{"scaling-" + sweep, info ? info->title : sweep, "", {"backend"}, {}, {}, {}};
+  Section s{
+      "scaling-" + sweep, (info ? info->title : sweep) + tag.title, "", {"backend"}, {}, {}, {}};
   if (!info) return s;
   std::vector<const Json*> rows;
   for (const auto& r : bench["rows"])
@@ -238,8 +280,48 @@ Section scaling(const Json& bench, const std::string& sweep) {
   for (const Json* r : rows) add_row(table, *info, bench, *r, models.count(str(*r, "backend")) > 0);
   put_table(s, table);
   s.text = scaling_text(*info, first, table);
-  put_charts(s, *info, table);
+  put_charts(s, *info, table, tag);
   return s;
+}
+
+bool has_sweep(const Json& bench, const std::string& sweep) {
+  return std::any_of(bench["rows"].begin(), bench["rows"].end(),
+                     [&](const Json& r) { return r["sweep"] == sweep; });
+}
+
+std::vector<Section> custom_points(const Json& bench, const MachineTag& tag) {
+  std::vector<const Json*> rows;
+  for (const auto& r : bench["rows"])
+    if (r["sweep"] == "custom") rows.push_back(&r);
+  const std::vector<const SweepInfo*> vary = varied(rows);
+  std::set<std::string> points;
+  for (const Json* r : rows) points.insert(point_name(*r));
+  if (points.size() < 2) return {};  // one point: the throughput section shows it whole
+  Section s{"scaling-custom", "The bench's points" + tag.title, "", {}, {}, {}, {}};
+  const std::string intro =
+      "Every point this bench measured, as its own command asked (bench --batch, --sizes, "
+      "--radius, --thread-sweep; see Provenance): ";
+  if (vary.size() != 1 || !distinct_x(*vary.front(), rows)) {
+    points_table(s, bench, rows);
+    std::string names;
+    for (const SweepInfo* v : vary) names += (names.empty() ? "" : ", ") + std::string(v->name);
+    s.text = intro + std::to_string(points.size()) + " points, over " + names +
+             ": a row per point and backend, as a chart shows one varying parameter." +
+             (std::any_of(rows.begin(), rows.end(),
+                          [](const Json* r) { return counts_instructions(*r); })
+                  ? kInstructionNote
+                  : "");
+    return {s};
+  }
+  const SweepInfo& info = *vary.front();
+  const std::set<std::string> models = model_backends(bench);
+  SweepTable table;
+  for (const Json* r : rows) add_row(table, info, bench, *r, models.count(str(*r, "backend")) > 0);
+  s.header = {"backend"};
+  put_table(s, table);
+  s.text = intro + scaling_text(info, *rows.front(), table);
+  put_charts(s, info, table, tag);
+  return {s};
 }
 
 }  // namespace pxflow::report

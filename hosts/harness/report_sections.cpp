@@ -7,28 +7,10 @@
 
 #include "check.hpp"
 #include "counted.hpp"
-#include "machine_state.hpp"
 #include "report_rows.hpp"
 
 namespace pxflow::report {
 namespace {
-
-// The rows of `rows` sorted by registry order, stable within a backend (the bench's order).
-std::vector<const Json*> in_registry_order(const Json& rows) {
-  std::vector<const Json*> out;
-  for (const auto& r : rows) out.push_back(&r);
-  std::stable_sort(out.begin(), out.end(), [](const Json* a, const Json* b) {
-    return registry_rank(str(*a, "backend")) < registry_rank(str(*b, "backend"));
-  });
-  return out;
-}
-
-std::string point_name(const Json& r) {
-  return str(r, "profile") + ", " + std::to_string(r.value("width", 0)) + "x" +
-         std::to_string(r.value("height", 0)) +
-         ", S=" + std::to_string(r.value("search_radius", 0)) + ", batch " +
-         std::to_string(r.value("batch", 0)) + ", " + threads_text(r.value("threads", 0));
-}
 
 bool same_problem(const Json& a, const Json& b) {
   return a["width"] == b["width"] && a["height"] == b["height"] &&
@@ -77,50 +59,6 @@ std::string bound_text(const Json& bench) {
 }
 
 }  // namespace
-
-Section provenance(const ReportInputs& in, const Json& build, const Json& machine) {
-  Section s{"provenance",
-            "Provenance",
-            "Where these results come from. Raw data: results.json (schema: docs/report-schema.md) "
-            "and the CSV files beside this page.",
-            {"what", "value"},
-            {},
-            {},
-            {}};
-  s.rows.push_back(
-      {"pxflow", str(build, "version") + ", commit " + str(build, "commit") +
-                     (build.value("dirty", false) ? " (dirty: uncommitted changes)" : " (clean)")});
-  s.rows.push_back({"compiler", str(build, "compiler") + ", " + str(build, "build_type") + ": " +
-                                    str(build, "cxx_flags")});
-  s.rows.push_back(
-      {"CPU", str(machine, "cpu") + ", " + counted(machine.value("cores", 0), "core")});
-  s.rows.push_back({"system", str(machine, "os") + ", " + str(machine, "kernel") + ", host " +
-                                  str(machine, "host") + ", " + str(machine, "date")});
-  s.rows.push_back({"report", in.report_command});
-  if (!in.check_command.empty()) s.rows.push_back({"check", in.check_command});
-  if (!in.bench_command.empty()) s.rows.push_back({"bench", in.bench_command});
-  if (!in.accuracy_command.empty()) s.rows.push_back({"accuracy", in.accuracy_command});
-  for (const auto& sec : in.sections) s.rows.push_back({sec.key, sec.command});
-  if (in.bench.is_object() && in.bench.contains("machine")) {
-    const MachineLoad m = machine_from_json(in.bench["machine"]);
-    s.rows.push_back({"bench machine", machine_line(m)});
-    long noisy = 0, timed_rows = 0;
-    for (const auto& r : in.bench["rows"])
-      if (timed(r)) ++timed_rows, noisy += r.value("noisy", false) ? 1 : 0;
-    if (!m.disturbed.empty() || noisy > 0)
-      s.text =
-          "**Warning: " +
-          (m.disturbed.empty() ? std::string()
-                               : "the bench ran on a disturbed machine (" + m.disturbed + "). ") +
-          (noisy > 0
-               ? counted(noisy, "timed row") + " of " + std::to_string(timed_rows) + " are noisy. "
-               : "") +
-          "Its figures may be slower and more scattered than the machine is: rerun the "
-          "bench command on a quiet machine.** " +
-          s.text;
-  }
-  return s;
-}
 
 Section backends_section(const ReportInputs& in) {
   Section s{"backends",
@@ -193,16 +131,25 @@ Section conformance(const Json& check, const std::string& cmd) {
   return s;
 }
 
-// A bench a signal stopped ("complete": false) is shown with what it measured, and says so.
-std::string stopped_bench_note(const Json& bench) {
-  if (bench.value("complete", true)) return "";
-  return " **Incomplete: a signal stopped this bench after " +
-         std::to_string(bench.value("points_done", 0L)) + " of " +
-         std::to_string(bench.value("points_total", 0L)) +
-         " points; the rows are those it measured.**";
+namespace {
+
+// How many points (problem, batch, threads) the bench's custom rows cover.
+std::size_t bench_points(const Json& bench) {
+  std::set<std::string> points;
+  for (const auto& r : bench["rows"])
+    if (r["sweep"] == "custom") points.insert(point_name(r));
+  return points.size();
 }
 
-Section throughput(const Json& bench, const std::string& cmd) {
+// A bench a signal stopped ("complete": false) is shown with what it measured, and says so.
+std::string stopped_bench_note(const Json& bench) {
+  const std::string stopped = stopped_after(bench);
+  return stopped.empty() ? "" : " **Incomplete: " + stopped + "; the rows are those it measured.**";
+}
+
+}  // namespace
+
+Section throughput(const Json& bench, const std::string& cmd, const MachineTag& tag) {
   Section s{"throughput",
             "Throughput",
             "",
@@ -223,8 +170,8 @@ Section throughput(const Json& bench, const std::string& cmd) {
     return s;
   }
   const std::string point = point_name(*pick);
-  s.title += " (" + point + ")";
-  Chart host{"Frames per second by the host clock (" + point + ")",
+  s.title += " (" + point + ")" + tag.title;
+  Chart host{"Frames per second by the host clock (" + point + ")" + tag.title,
              {"frames per second (log scale)", true},
              {"", false},
              {},
@@ -237,8 +184,8 @@ Section throughput(const Json& bench, const std::string& cmd) {
     if (same_point(*r, *pick)) {
       s.rows.push_back(bench_cells(*r));
       if (timed(*r) && host_clock(*r))
-        host.bars.push_back(
-            {str(*r, "backend"), (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
+        host.bars.push_back({str(*r, "backend") + tag.series, (*r)["frames_per_s"].get<double>(),
+                             style_of(str(*r, "backend"))});
     }
     if (exact_clock(*r) && timed(*r) && same_problem(*r, *pick) &&
         (*r)["sweep"] == (*pick)["sweep"]) {
@@ -248,7 +195,7 @@ Section throughput(const Json& bench, const std::string& cmd) {
   }
   Chart sim{"Frames per second by the exact model clock, not the host (" + str(*pick, "profile") +
                 ", " + std::to_string(pick->value("width", 0)) + "x" +
-                std::to_string(pick->value("height", 0)) + ")",
+                std::to_string(pick->value("height", 0)) + ")" + tag.title,
             {"frames per second at the model's clock (log scale)", true},
             {"", false},
             {},
@@ -262,9 +209,9 @@ Section throughput(const Json& bench, const std::string& cmd) {
   for (const Json* r : model_rows) {
     if (!same_point(*r, *pick)) s.rows.push_back(bench_cells(*r));
     if (counts_instructions(*r)) continue;
-    sim.bars.push_back(
-        {str(*r, "backend") + " (batch " + std::to_string((*r)["batch"].get<int>()) + ")",
-         (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
+    sim.bars.push_back({str(*r, "backend") + " (batch " + std::to_string((*r)["batch"].get<int>()) +
+                            ")" + tag.series,
+                        (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
   }
   s.text =
       "Median of repeated runs after a warm-up run whose records matched ref-original; a backend "
@@ -276,6 +223,10 @@ Section throughput(const Json& bench, const std::string& cmd) {
   if (std::any_of(model_rows.begin(), model_rows.end(),
                   [](const Json* r) { return counts_instructions(*r); }))
     s.text += kInstructionNote;
+  if (bench_points(bench) > 1 && (*pick)["sweep"] == "custom")
+    s.text += " This bench measured " + std::to_string(bench_points(bench)) +
+              " points of its own (bench --batch, --sizes, --radius, --thread-sweep): every one "
+              "is in \"The bench's points\" below.";
   s.text += bound_text(bench) + stopped_bench_note(bench);
   if (!host.bars.empty()) s.charts.push_back(host);
   if (!sim.bars.empty()) s.charts.push_back(sim);

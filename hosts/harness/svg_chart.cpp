@@ -82,9 +82,29 @@ std::string text(double x, double y, const std::string& s, const char* extra = "
          ">" + html_escape(s) + "</text>";
 }
 
+// About how many pixels `s` takes at `font_px` (sans-serif): code points, not UTF-8 bytes.
+int text_px(const std::string& s, double font_px) {
+  int chars = 0;
+  for (char ch : s) chars += (static_cast<unsigned char>(ch) & 0xc0) != 0x80;
+  return static_cast<int>(chars * font_px * 0.56) + 1;
+}
+
+// Room for the longest of `names` at 12 px, at least `least` pixels.
+template <class Items, class Name>
+int room_for(const Items& items, Name name, int least) {
+  int px = least;
+  for (const auto& item : items) px = std::max(px, text_px(name(item), 12) + 46);
+  return px;
+}
+
+// The chart's SVG element, at least as wide as its title; it scales down to the page's width
+// (viewBox), so that a long legend (a series per machine) never runs off the page.
 std::string open_svg(const Chart& c, int width, int height) {
-  return "<svg xmlns='http://www.w3.org/2000/svg' width='" + std::to_string(width) + "' height='" +
-         std::to_string(height) + "' role='img'><title>" + html_escape(c.title) +
+  width = std::max(width, text_px(c.title, 14) + 20);
+  const std::string w = std::to_string(width), h = std::to_string(height);
+  return "<svg xmlns='http://www.w3.org/2000/svg' width='" + w + "' height='" + h +
+         "' viewBox='0 0 " + w + " " + h +
+         "' style='max-width:100%;height:auto' role='img'><title>" + html_escape(c.title) +
          "</title><text x='10' y='20' font-weight='bold' font-size='14'>" + html_escape(c.title) +
          "</text>";
 }
@@ -101,7 +121,10 @@ struct Scale {
 };
 
 std::string bar_chart(const Chart& c) {
-  const int left = 150, width = 620, bar_h = 22, top = 40;
+  const int left = room_for(
+                       c.bars, [](const Bar& b) { return b.label; }, 184) -
+                   34;
+  const int width = 620, bar_h = 22, top = 40;
   const int height = top + static_cast<int>(c.bars.size()) * bar_h + 45;
   std::string s = open_svg(c, left + width + 120, height);
   double lo = 1e300, hi = 0;
@@ -128,7 +151,9 @@ std::string bar_chart(const Chart& c) {
 }
 
 std::string line_chart(const Chart& c) {
-  const int left = 70, top = 40, w = 540, h = 300, legend = 190;
+  const int left = 70, top = 40, w = 540, h = 300;
+  const int legend = room_for(
+      c.series, [](const Series& se) { return se.name; }, 190);
   std::string s = open_svg(c, left + w + legend, top + h + 50);
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (const auto& se : c.series)

@@ -69,6 +69,10 @@ MUTATIONS = [
      lambda j: j["comparison"]["rows"][0].__setitem__("verdict", "better")),
     ("bench.provenance.machine.host removed",
      lambda j: j["bench"]["provenance"]["machine"].pop("host")),
+    ("provenance.bench_files[1].machine.host removed",
+     lambda j: j["provenance"]["bench_files"][1]["machine"].pop("host")),
+    ("provenance.bench_files[0].complete a string",
+     lambda j: j["provenance"]["bench_files"][0].__setitem__("complete", "yes")),
     ("gap8 cycles a fraction",
      lambda j: next(iter(next(iter(j["gap8"]["variants"].values())).values())).__setitem__(
          "cycles", 0.5)),
