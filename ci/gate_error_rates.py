@@ -8,9 +8,11 @@ Runs `pxflow compare --run A B` many times on this machine:
 Each trial's two bench files are judged again at every --gate threshold (pxflow compare FILES
 --fail-above PCT), so one run of the processes gives every threshold's verdict. --hog N runs N
 busy-looping processes for the whole experiment (a disturbed machine).
-The point is batch 1 at 64x64 with --min-time 0.2 per process: fast enough that every sample of
-both sides is the mean of many runs (the knob rounds B's runs per sample up to a multiple of 20
-at 5 %, of 10 at 10 %), so the two sides differ in the planted work alone.
+The point is batch 1 at 320x240 on one thread with --min-time 0.2 per process: fast enough that
+every sample of both sides is the mean of many runs (the knob rounds B's runs per sample up to a
+multiple of 20 at 5 %, of 10 at 10 %), so the two sides differ in the planted work alone. (At
+64x64, where a frame is one 4 KiB page, this machine's processes fall into two clusters 1.5x
+apart, with or without ASLR or CPU pinning: docs/harness.md, "The gate's error rates".)
 
 Usage: ci/gate_error_rates.py build/pxflow [--backends ref-local,cpu] [--trials 20]
        [--rounds 10] [--gates 0,2,5] [--planted 5,10] [--hog 1] [--extra "--threads 1"]
@@ -76,10 +78,10 @@ def main():
     p.add_argument("--gates", default="0,2,5")
     p.add_argument("--planted", default="5,10")
     p.add_argument("--batch", default="1")
-    p.add_argument("--size", default="64x64")
+    p.add_argument("--size", default="320x240")
     p.add_argument("--min-time", default="0.2")
     p.add_argument("--hog", type=int, default=0)
-    p.add_argument("--extra", default="", help="more bench options, e.g. \"--threads 1\"")
+    p.add_argument("--extra", default="--threads 1", help="more bench options, e.g. \"--threads 1\"")
     p.add_argument("--json")
     args = p.parse_args()
     args.gates = [float(g) for g in args.gates.split(",")]
