@@ -144,7 +144,7 @@ def engine_case(r, engine, jobs, whole):
         got = json.load(open(out))
         if (got["shard"]["index"], got["shard"]["count"]) != (k, m):
             problems.append("%s holds shard %s, not %d/%d" % (out, got["shard"], k, m))
-        if "--shard %d/%d " % (k, m) not in got["command"] or "auto" in got["command"]:
+        if "--shard %d/%d " % (k, m) not in got["command"] or "--shard auto" in got["command"]:
             problems.append("%s: command %r does not say --shard %d/%d" % (out, got["command"], k, m))
         files.append(out)
     merged_path = r.path("%s-merged.json" % engine)

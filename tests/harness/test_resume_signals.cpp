@@ -71,9 +71,10 @@ TEST_CASE("resume: SIGINT to a running bench --json keeps its rows, report and c
           "[resume][signal]") {
   TempDir dir;
   const std::string bench = dir.path("b.json"), out = dir.path("out.txt");
-  // Signalled once the second point begins: the first is measured whole.
+  // Signalled once the second point begins: the first is measured whole (one process, whose
+  // table shows the points as they come; file_matrix stops bench --processes R too).
   const RunResult r = interrupted_when(
-      "bench --backends ref-original,ref-local --batch 1,4,16,64 "
+      "bench --backends ref-original,ref-local --batch 1,4,16,64 --processes 1 "
       "--min-time 0.3 --json '" +
           bench + "'",
       out, dir.path("err.txt"), out, "batch=4 threads");
