@@ -213,5 +213,9 @@ TEST_CASE("progress goes to stderr when asked for, and only then off a terminal"
   with.push_back("--progress");
   const auto loud = run_pxflow(with);
   CHECK(loud.exit_code == 0);
-  CHECK(loud.err.find("bench: point 1 of 1") != std::string::npos);
+  CHECK(loud.err.find("bench: process 1 of 5") != std::string::npos);
+  with.insert(with.end(), {"--processes", "1"});
+  const auto one = run_pxflow(with);
+  CHECK(one.exit_code == 0);
+  CHECK(one.err.find("bench: point 1 of 1") != std::string::npos);
 }

@@ -90,8 +90,8 @@ TEST_CASE("results.csv: a column per bench row field, empty where a row lacks it
   CHECK(header == csv_columns(bench_row_fields()));
   // Every key but the lists and the parameters (the JSON's only: no CSV cell).
   std::set<std::string> keys = keys_of(bench_row_fields());
-  for (const char* list : {"samples_ns_per_frame", "samples_per_process",
-                           "process_medians_ns_per_frame", "params"})
+  for (const char* list :
+       {"samples_ns_per_frame", "samples_per_process", "process_medians_ns_per_frame", "params"})
     keys.erase(list);
   CHECK(std::set<std::string>(header.begin(), header.end()) == keys);
   const auto column = [&](const std::string& name) {
