@@ -135,7 +135,7 @@ TEST_CASE("report --bench-json A B of two machines names both, from the files, n
 }
 
 TEST_CASE(
-    "report of one file from another machine names that machine and no other; a check run here "
+    "report of one file from another machine names that machine and no other but a check run here "
     "makes two",
     "[report][machines]") {
   TempDir dir;
