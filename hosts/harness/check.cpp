@@ -130,7 +130,7 @@ class Checker {
       ++k.outcome.not_applicable;
       return true;
     }
-    if (is_limit_case(c)) k.outcome.limits.push_back(limit_entry(c));
+    if (is_limit_case(c)) k.outcome.limits.push_back(limit_entry(c, k.row->name));
     if (!run.failure.empty()) return fail(k, c, run.failure);
     if (run.not_run) return true;
     std::vector<std::string> names;
@@ -263,7 +263,7 @@ long check_case(Checker& checker, std::vector<Contender>& contenders, const Chec
                      e.records, c.params, c.pairs.size());
   if (!reference_counts.empty()) out << reference_counts << '\n' << std::flush;
   for (auto& k : contenders)
-    if (k.backend) checker.run_case(k, c, e, index, reference_seconds);
+    if (k.backend && c.for_row(k.row->name)) checker.run_case(k, c, e, index, reference_seconds);
   return reference_counts.empty() ? 0 : 1;
 }
 

@@ -23,6 +23,7 @@ class Fnv1a {
   void add(const std::string& s) { add(s.data(), s.size() + 1); }  // with its '\0'
   void add(const CheckCase& c) {
     add(c.name), add(c.setting), add(params_json(c.params).dump());
+    for (const std::string& row : c.rows) add(row);
     for (const OwnedPair& p : c.pairs) {
       add(p.name), add(std::to_string(p.width) + "x" + std::to_string(p.height));
       add(p.prev.data(), p.prev.size()), add(p.next.data(), p.next.size());

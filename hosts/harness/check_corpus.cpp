@@ -1,5 +1,6 @@
 #include "check_corpus.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -139,6 +140,10 @@ Params sized(Params p, int w, int h) {
 }
 
 }  // namespace
+
+bool CheckCase::for_row(const std::string& row) const {
+  return rows.empty() || std::find(rows.begin(), rows.end(), row) != rows.end();
+}
 
 std::vector<std::pair<std::string, Params>> check_settings() {
   auto big = [](int w, int h, int S, int B) {

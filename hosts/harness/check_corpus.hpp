@@ -18,12 +18,16 @@ struct CheckCase {
   std::string setting;  // the parameter set, e.g. "px4flow-64", "320x240 S=7 B=16"
   Params params;
   std::vector<OwnedPair> pairs;  // each pair's name says where it came from (and its seed)
+  // The rows whose case it is (a row's own limit cases); empty: every row's. A row runs only its
+  // cases, so that what it runs never depends on the other rows selected.
+  std::vector<std::string> rows = {};
+  bool for_row(const std::string& row) const;
 };
 
 // The version of what build_check_corpus() and a fuzz campaign's batches contain. Raise it with
 // every change to the cases, their order, their pairs or their parameters: check files record it
 // and `pxflow merge` refuses shards of different versions.
-inline constexpr int kCheckCorpusVersion = 2;  // 2: the limit cases (check_limits.hpp)
+inline constexpr int kCheckCorpusVersion = 3;  // 2: the limit cases; 3: a row's own, the sweep
 
 struct CorpusOptions {
   std::uint64_t seed = 1;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "check_radius_sweep.hpp"
 #include "errors.hpp"
+#include "grid.hpp"
 #include "result_json.hpp"
 #include "synthetic.hpp"
 
@@ -53,7 +55,7 @@ std::vector<LimitProbe> spec_corners() {
   };
   Params no_hf = d;
   no_hf.hist_filter = false;
-  return {
+  std::vector<LimitProbe> corners = {
       {"smallest-frame",
        {},
        at(min_side(kMinSearchRadius), min_side(kMinSearchRadius), kMinSearchRadius, B)},
@@ -80,6 +82,8 @@ std::vector<LimitProbe> spec_corners() {
       {"min-count-max", {}, thresholds(d.feature_threshold, d.sad_threshold, kMaxThreshold)},
       {"hist-filter-off", {}, no_hf},
   };
+  for (LimitProbe& c : corners) c.every_row = true;
+  return corners;
 }
 
 // The row's own edges at the default profile: the largest square frame, the widest and tallest
@@ -119,6 +123,8 @@ void row_probes(const LimitRow& r, std::vector<LimitProbe>& out) {
   if (auto b =
           largest_accepted(kMinBlocks, kMaxBlocks, [&](int b) { return ok(at(64, 64, S, b)); }))
     add("largest-blocks", at(64, 64, S, *b));
+  for (const SweepStep& step : radius_sweep(ok, kAffordableLimitPixels))
+    out.push_back({"radius-sweep", {r.name}, step.params, false, step.pairs});
 }
 
 }  // namespace
@@ -143,34 +149,62 @@ std::optional<int> largest_accepted(int lo, int hi, const std::function<bool(int
 std::vector<LimitProbe> limit_probes(std::span<const LimitRow> rows) {
   std::vector<LimitProbe> found = spec_corners();
   for (const LimitRow& r : rows) row_probes(r, found);
-  // One case per parameter set: a later probe of the same problem adds its name to the first's.
+  // One case per problem, named the same whatever rows are selected: a row's edge that is one of
+  // SPEC's corners is that corner (every row's case already); the same edge of several rows is
+  // one case for all of them.
   std::vector<LimitProbe> out;
-  std::vector<std::string> keys;
+  std::vector<std::string> corners, keys;
   for (LimitProbe& p : found) {
-    const std::string key = params_json(p.params).dump();
+    const std::string problem = params_json(p.params).dump() + (p.sweep_pairs ? " sweep" : "");
+    if (p.every_row) {
+      corners.push_back(problem);
+    } else if (std::find(corners.begin(), corners.end(), problem) != corners.end()) {
+      continue;
+    }
+    const std::string key = p.kind + " " + problem;
     const auto k = std::find(keys.begin(), keys.end(), key);
     if (k == keys.end()) {
       keys.push_back(key);
       out.push_back(std::move(p));
     } else {
       LimitProbe& first = out[static_cast<std::size_t>(k - keys.begin())];
-      if (first.kind != p.kind && !first.kind.ends_with("+" + p.kind)) first.kind += "+" + p.kind;
       first.rows.insert(first.rows.end(), p.rows.begin(), p.rows.end());
     }
   }
-  return out;
+  // SPEC's corners in their order, then the rows' edges in an order of their own (by kind and
+  // parameters): a row's cases come in the same order whatever rows precede it.
+  std::vector<std::size_t> order(out.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (out[a].every_row || out[b].every_row) return out[a].every_row && !out[b].every_row;
+    return keys[a] < keys[b];
+  });
+  std::vector<LimitProbe> sorted;
+  for (std::size_t i : order) sorted.push_back(std::move(out[i]));
+  return sorted;
 }
 
 std::vector<CheckCase> limit_cases(std::span<const LimitRow> rows, std::uint64_t seed) {
   std::vector<CheckCase> cases;
-  std::uint64_t s = seed * 1000003u + 7000000u;  // apart from the random cases' seeds
   for (const LimitProbe& probe : limit_probes(rows)) {
     const Params& p = probe.params;
-    CheckCase c{"limits/" + probe.what(), setting_text(p), p, {}};
-    // Two pairs where they are cheap; the large frames one.
-    const int pairs = std::int64_t{p.width} * p.height <= 128 * 128 ? 2 : 1;
-    for (int n = 0; n < pairs; ++n)
-      c.pairs.push_back(random_pair(p.width, p.height, p.search_radius, s++));
+    const std::string setting = setting_text(p);
+    CheckCase c{"limits/" + probe.kind, setting, p, {}, {}};
+    if (!probe.every_row) c.rows = probe.rows;
+    // Seeds from the case itself, apart from the random cases' seeds (seed * 1000003 + n).
+    std::uint64_t s = seed * 1000003u + 7000000u;
+    for (char ch : c.name + " " + setting)
+      s = (s ^ static_cast<unsigned char>(ch)) * 1099511628211u;
+    if (probe.sweep_pairs) {
+      const auto offsets = sweep_offsets(p.search_radius);
+      const std::size_t per_pair = poi_count(p);
+      for (int n = 0; n < probe.sweep_pairs; ++n)
+        c.pairs.push_back(planted_pair(p, offsets, n * per_pair, s + n));
+    } else {  // two random pairs where they are cheap; the large frames one
+      const int pairs = std::int64_t{p.width} * p.height <= 128 * 128 ? 2 : 1;
+      for (int n = 0; n < pairs; ++n)
+        c.pairs.push_back(random_pair(p.width, p.height, p.search_radius, s + n));
+    }
     cases.push_back(std::move(c));
   }
   return cases;
@@ -178,6 +212,8 @@ std::vector<CheckCase> limit_cases(std::span<const LimitRow> rows, std::uint64_t
 
 bool is_limit_case(const CheckCase& c) { return c.name.starts_with("limits/"); }
 
-std::string limit_entry(const CheckCase& c) { return c.name + " " + c.setting; }
+std::string limit_entry(const CheckCase& c, const std::string& row) {
+  return c.name + (c.rows.empty() ? "" : " of " + row) + " " + c.setting;
+}
 
 }  // namespace pxflow

@@ -1,5 +1,7 @@
 // The human summary of a check or a merge of check shards.
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <ostream>
 #include <string>
 
@@ -55,20 +57,28 @@ std::string scope(const CheckReport& r) {
   return ran + format(" in %.2f s", r.seconds) + stopped;
 }
 
-// "limits/KIND of ROW,ROW SETTING": the entries found from this row's own predicate, short.
+// "limits/KIND of ROW SETTING": the entries found from this row's own predicate, short; the radius
+// sweep as one entry, "radius-sweep S=1..31".
 std::string own_limits(const BackendOutcome& b) {
   std::string s;
+  const std::string of = " of " + b.name + " ";
+  int sweep_lo = 0, sweep_hi = 0;
   for (const std::string& e : b.limits) {
-    const auto of = e.find(" of ");
-    if (of == std::string::npos) continue;
-    const auto rows_end = e.find(' ', of + 4);
-    std::string rows(1, ',');  // ",a,b," holds ",NAME," when the row is one of them
-    rows.append(e, of + 4, rows_end - of - 4).push_back(',');
-    std::string name(1, ',');
-    name.append(b.name).push_back(',');
-    if (rows.find(name) == std::string::npos) continue;
-    s += (s.empty() ? "" : "; ") + e.substr(7, of - 7) + e.substr(rows_end);
+    const auto at = e.find(of);
+    if (at == std::string::npos) continue;
+    const std::string kind = e.substr(7, at - 7), setting = e.substr(at + of.size());
+    if (kind == "radius-sweep") {
+      const auto S = setting.find(" S=");
+      const int radius = S == std::string::npos ? 0 : std::atoi(setting.c_str() + S + 3);
+      sweep_lo = sweep_lo ? std::min(sweep_lo, radius) : radius;
+      sweep_hi = std::max(sweep_hi, radius);
+      continue;
+    }
+    s += (s.empty() ? "" : "; ") + kind + " " + setting;
   }
+  if (sweep_hi)
+    s += (s.empty() ? "" : "; ") + std::string("radius-sweep S=") + std::to_string(sweep_lo) +
+         ".." + std::to_string(sweep_hi);
   return s;
 }
 

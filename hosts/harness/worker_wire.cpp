@@ -1,5 +1,7 @@
 #include "worker_wire.hpp"
 
+#include <algorithm>
+
 #include "counted.hpp"
 
 namespace pxflow::worker {
@@ -8,7 +10,11 @@ std::vector<std::uint8_t> frame_message(Type type, std::span<const std::uint8_t>
   Writer w;
   w.pod(type).pod(static_cast<std::uint32_t>(payload.size()));
   std::vector<std::uint8_t> message = w.take();
-  message.insert(message.end(), payload.begin(), payload.end());
+  // resize and copy, not insert: GCC 12 sees a false out-of-bounds memcpy in the inlined insert
+  // of this 5-byte vector when the unity batch gives it more context (-Warray-bounds).
+  const std::size_t head = message.size();
+  message.resize(head + payload.size());
+  std::copy(payload.begin(), payload.end(), message.begin() + static_cast<std::ptrdiff_t>(head));
   return message;
 }
 

@@ -151,12 +151,12 @@ TEST_CASE("a count of one is singular: 1 pair, 1 point, 1 case", "[cli]") {
   const auto bench =
       run_pxflow({"bench", "--backend", "ref-local", "--batch", "1", "--min-time", "0"});
   CHECK(bench.out.rfind("pxflow bench: 1 point; ", 0) == 0);
-  // The generated corpus has 34 cases for ref-local (16 and 18 limit cases): its last shard of
-  // 34 has one.
+  // The generated corpus has 65 cases for ref-local (16 and 49 limit cases): its last shard of
+  // 65 has one.
   const auto check =
-      run_pxflow({"check", "--backends", "ref-local", "--generated-only", "--shard", "34/34"});
+      run_pxflow({"check", "--backends", "ref-local", "--generated-only", "--shard", "65/65"});
   INFO(check.out);
-  CHECK(check.out.find("shard 34/34: 1 case, ") != std::string::npos);
+  CHECK(check.out.find("shard 65/65: 1 case, ") != std::string::npos);
   for (const auto* r : {&flow, &bench, &check})
     for (const char* plural : {" 1 pairs", " 1 points", " 1 cases", " 1 threads", " 1 frames"})
       CHECK(r->out.find(plural) == std::string::npos);

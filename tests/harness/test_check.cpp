@@ -94,25 +94,38 @@ TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   const auto r = check({"--backends", "test-small-only", "--generated-only"});
   INFO(r.out);
   CHECK(r.exit_code == 0);
-  // The 8 generated cases at 64x64 and the 17 limit cases within 64x64 (its own edges among
-  // them: the largest square it accepts, 64x64, and the strips 64x19 and 19x64).
-  CHECK(last_line(r.out) == "25 passed, 0 failed, 0 skipped");
-  CHECK(r.out.find(" 272    11 ") != std::string::npos);  // pairs, then the n/a column
-  CHECK(r.out.find("test-small-only: 17, its own: ") != std::string::npos);
-  CHECK(r.out.find("largest-square 64x64 S=4 B=8; widest 64x19 S=4 B=8; tallest 19x64") !=
-        std::string::npos);
+  // The 8 generated cases at 64x64 and the 43 limit cases within 64x64: SPEC's corners that fit
+  // and its own edges (the largest square it accepts, 64x64, the strips 64x19 and 19x64, the
+  // largest radius, and the radius sweep S = 1..26 on frames of at most 4096 pixels).
+  CHECK(last_line(r.out) == "51 passed, 0 failed, 0 skipped");
+  CHECK(r.out.find(" 1126    11 ") != std::string::npos);  // pairs, then the n/a column
+  CHECK(r.out.find("test-small-only: 43, its own: ") != std::string::npos);
+  for (const char* own : {"largest-square 64x64 S=4 B=8", "widest 64x19 S=4 B=8",
+                          "tallest 19x64 S=4 B=8", "largest-radius 63x63 S=26 B=1"})
+    CHECK(r.out.find(own) != std::string::npos);
   // The check file lists them per backend; --limits-only runs them alone.
   pxflow::test::TempDir dir;
   const auto only =
       check({"--backends", "test-small-only", "--limits-only", "--json", dir.path("l.json")});
   CHECK(only.exit_code == 0);
-  CHECK(last_line(only.out) == "17 passed, 0 failed, 0 skipped");
+  CHECK(last_line(only.out) == "43 passed, 0 failed, 0 skipped");
   std::ifstream in(dir.path("l.json"));
   const auto j = nlohmann::json::parse(in);
   const auto limits = j["backends"][0]["limits"].get<std::vector<std::string>>();
-  CHECK(limits.size() == 17);
+  CHECK(limits.size() == 43);
   CHECK(std::find(limits.begin(), limits.end(),
                   "limits/largest-square of test-small-only 64x64 S=4 B=8") != limits.end());
+  CHECK(r.out.find("radius-sweep S=1..26") != std::string::npos);
+  // The same cases, pair for pair, with other rows selected: a row's corpus is its own.
+  const auto with_others =
+      check({"--backends", "test-small-only,ref-local,test-crash", "--limits-only", "--json",
+             dir.path("others.json"), "--case-timeout", "5"});
+  std::ifstream in2(dir.path("others.json"));
+  const auto j2 = nlohmann::json::parse(in2);
+  REQUIRE(j2["backends"][0]["backend"] == "test-small-only");
+  CHECK(j2["backends"][0]["limits"] == j["backends"][0]["limits"]);
+  CHECK(j2["backends"][0]["pairs"] == j["backends"][0]["pairs"]);
+  CHECK(j2["backends"][0]["not_applicable"] == j["backends"][0]["not_applicable"]);
   const auto fuzz = check({"--limits-only", "--cases", "5"});
   CHECK(fuzz.exit_code == 2);
   CHECK(fuzz.err.find("--limits-only: the limit cases are part of the fixed corpus") !=

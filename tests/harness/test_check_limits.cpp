@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <cstdlib>
+#include <span>
 #include <vector>
 
 #include "check_limits.hpp"
+#include "check_radius_sweep.hpp"
 #include "errors.hpp"
 #include "grid.hpp"
 #include "guard_zone.hpp"
+#include "kernel.hpp"
 
 namespace pxflow::test {
 
@@ -55,21 +59,23 @@ TEST_CASE("limits: a row's predicate gives its own edges, deduplicated with SPEC
   ++more.blocks;
   CHECK(poi_count(more) > 100);
   // The unlimited row reaches the side limit with cheap strips, never an 8192x8192 square, and
-  // its largest grid is SPEC's corner: one case naming it.
+  // its largest grid is SPEC's corner: that corner's case, none of its own.
   const LimitProbe* strip = find("widest of open");
   REQUIRE(strip);
   CHECK(strip->params.width == kMaxFrameSide);
   CHECK(find("largest-square of open") == nullptr);
-  CHECK(find("largest-blocks of open") != nullptr);
+  CHECK(find("largest-blocks of open") == nullptr);  // SPEC's B = 255 corner, every row's case
   for (const LimitProbe& p : probes) {
     INFO(p.what());
     CHECK(std::int64_t{p.params.width} * p.params.height <= kAffordableLimitPixels);
     CHECK_NOTHROW(validate(p.params));
   }
-  // Every probe once: the cases are each a distinct problem.
+  // Every probe once: the cases are each a distinct problem (a sweep step's planted pairs are
+  // another problem than random pairs of the same parameters).
   for (std::size_t i = 0; i < probes.size(); ++i)
     for (std::size_t j = i + 1; j < probes.size(); ++j)
-      CHECK_FALSE(probes[i].params == probes[j].params);
+      CHECK_FALSE((probes[i].params == probes[j].params &&
+                   (probes[i].sweep_pairs > 0) == (probes[j].sweep_pairs > 0)));
   // SPEC's corners are there whatever the rows: radius 1 and 31, B 1 and 255, FT 0 and 65535.
   const auto cases = limit_cases({}, 1);
   auto has = [&](auto pred) {
@@ -89,6 +95,75 @@ TEST_CASE("limits: a row's predicate gives its own edges, deduplicated with SPEC
     CHECK(is_limit_case(c));
     CHECK_FALSE(c.pairs.empty());
   }
+}
+
+TEST_CASE("limits: a row's cases are the same, pair for pair, whatever other rows are selected",
+          "[limits]") {
+  const LimitRow small{"small", [](const Params& p) -> std::string {
+                         return std::int64_t{p.width} * p.height > 5000 ? "too many pixels" : "";
+                       }};
+  const LimitRow open{"open", [](const Params&) { return std::string(); }};
+  const LimitRow tiny{"tiny", [](const Params& p) -> std::string {
+                        return std::int64_t{p.width} * p.height > 400 ? "too many pixels" : "";
+                      }};
+  auto of = [](std::span<const LimitRow> rows, const std::string& row) {
+    std::vector<CheckCase> mine;
+    for (CheckCase& c : limit_cases(rows, 3))
+      if (c.for_row(row)) mine.push_back(std::move(c));
+    return mine;
+  };
+  const LimitRow alone[] = {small}, together[] = {open, tiny, small};
+  const auto a = of(alone, "small"), b = of(together, "small");
+  REQUIRE(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    INFO(a[i].name << " " << a[i].setting);
+    CHECK(a[i].name == b[i].name);
+    CHECK(a[i].setting == b[i].setting);
+    CHECK(a[i].params == b[i].params);
+    REQUIRE(a[i].pairs.size() == b[i].pairs.size());
+    for (std::size_t k = 0; k < a[i].pairs.size(); ++k) {
+      CHECK(a[i].pairs[k].prev == b[i].pairs[k].prev);
+      CHECK(a[i].pairs[k].next == b[i].pairs[k].next);
+    }
+  }
+  // The other rows' own edges are not this row's cases.
+  CHECK(std::none_of(b.begin(), b.end(), [](const CheckCase& c) {
+    return std::find(c.rows.begin(), c.rows.end(), "small") == c.rows.end() && !c.rows.empty();
+  }));
+}
+
+TEST_CASE("limits: the radius sweep plants the best match at every dx and dy of every radius",
+          "[limits]") {
+  const LimitRow open{"open", [](const Params&) { return std::string(); }};
+  const LimitRow rows[] = {open};
+  int radii = 0;
+  for (const CheckCase& c : limit_cases(rows, 1)) {
+    if (c.name != "limits/radius-sweep") continue;
+    ++radii;
+    const int S = c.params.search_radius;
+    INFO(c.setting);
+    const auto offsets = sweep_offsets(S);
+    std::vector<bool> dx_seen(2 * S + 1), dy_seen(2 * S + 1);
+    std::size_t planted = 0;
+    for (const OwnedPair& pair : c.pairs) {
+      std::vector<PoiRecord> recs(poi_count(c.params));
+      OpCounts counts;
+      reference_flow(RefVariant::kOriginal, pair.view(), c.params, recs, counts);
+      for (const PoiRecord& r : recs) {
+        const Offset o = offsets[planted++ % offsets.size()];
+        if (std::abs(o.dx) > S || std::abs(o.dy) > S) {  // a decoy: the window holds noise only
+          CHECK(r.sad > 0);
+          continue;
+        }
+        CHECK((r.status == kAccepted && r.dx == o.dx && r.dy == o.dy && r.sad == 0));
+        dx_seen[o.dx + S] = dy_seen[o.dy + S] = true;
+      }
+    }
+    CHECK(planted >= offsets.size());  // every offset, in one pair or several
+    CHECK(std::count(dx_seen.begin(), dx_seen.end(), false) == 0);
+    CHECK(std::count(dy_seen.begin(), dy_seen.end(), false) == 0);
+  }
+  CHECK(radii == kMaxSearchRadius - kMinSearchRadius + 1);
 }
 
 TEST_CASE("guard zones: a changed byte says how far past the output it is", "[limits]") {

@@ -345,7 +345,7 @@ TEST_CASE("check --shard, --backend and --json -: the options and their errors",
   CHECK(j["backends"][0]["backend"] == "test-bitflip");
   CHECK(j["command"] ==
         "pxflow check --backend test-bitflip --seed 1 --generated-only --json - --no-repro");
-  CHECK(j["shard"] == json({{"index", 1}, {"count", 1}, {"first_case", 0}, {"end_case", 34}}));
+  CHECK(j["shard"] == json({{"index", 1}, {"count", 1}, {"first_case", 0}, {"end_case", 65}}));
   CHECK(r.err.find("FAIL test-bitflip case=") != std::string::npos);
   CHECK(last_line(r.err).find(" failed, 0 skipped") != std::string::npos);
 }
@@ -356,9 +356,10 @@ TEST_CASE("check: progress counts the fixed corpus against its total, the summar
       pxflow_run({"check", "--backend", "ref-local", "--generated-only", "--progress"});
   INFO(r.err);
   CHECK(r.exit_code == 0);
-  // 16 generated cases of 300 pairs, 18 limit cases of 34 (check_limits.hpp).
-  CHECK(r.err.find("check: 1 of 34 cases, 96 of 334 pairs") != std::string::npos);
-  CHECK(r.out.find("34 cases, 334 pairs in ") != std::string::npos);
+  // 16 generated cases of 300 pairs, 49 limit cases of 65 (check_limits.hpp: SPEC's corners,
+  // ref-local's strips and its radius sweep S = 1..31).
+  CHECK(r.err.find("check: 1 of 65 cases, 96 of 365 pairs") != std::string::npos);
+  CHECK(r.out.find("65 cases, 365 pairs in ") != std::string::npos);
   const RunResult s = pxflow_run(
       {"check", "--backend", "ref-local", "--cases", "600", "--shard", "2/2", "--progress"});
   CHECK(s.exit_code == 0);
