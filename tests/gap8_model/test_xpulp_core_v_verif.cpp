@@ -286,6 +286,114 @@ void RunMode(Mode mode) {
   CHECK(checked == running * static_cast<int>(ResultSlots()));
 }
 
+// ---- Hardware loops: pulp-platform/riscv-tests isa/rv32uxpulphwloop/hwloop.S ----
+// (commit 952183959caf3b680ee8368945dca4066c48243a): tests 2, 3 and 4, the documentation's nested
+// loop written with lp.counti/lp.endi/lp.starti, lp.setup and lp.setupi, each asserting a0 =
+// 300 and a1 = 40 afterwards; plus test 2 with the outer count from a register (lp.count), which
+// the RI5CY manual defines as lp.counti's count taken from rs1. The match of each lp.* comes from
+// GreenWaves' table; the operand fields from the RI5CY manual's hardware-loop encoding table: L
+// in bit 7, uimmL in bits 31..20 (lp.starti/endi/setup: an offset in half-words from the pc;
+// lp.counti/setupi: the count), lp.setupi's end offset uimmS in bits 19..15, rs1 in 19..15.
+uint32_t LoopMatch(std::string_view mnemonic) {
+  for (const xpulp_asm::OutsideRow& r : xpulp_asm::OutsideTable())
+    if (r.mnemonic == mnemonic) return r.match;
+  return 0;
+}
+uint32_t Loop(std::string_view mnemonic, uint32_t l, uint32_t uimm_l, uint32_t rs1_or_uimm_s = 0) {
+  return LoopMatch(mnemonic) | (uimm_l << 20) | (rs1_or_uimm_s << 15) | (l << 7);
+}
+
+enum class Outer { kCounti, kCount, kSetup, kSetupSetupi };
+constexpr uint32_t kA0 = 10, kA1 = 11, kA3 = 13;
+
+// One of hwloop.S's nested loops; leaves a0 and a1 in this core's next two result slots.
+void NestedLoop(Program& p, Outer outer) {
+  p.Li(kA0, 0);
+  p.Li(kA1, 0);
+  p.Li(kA3, 10);
+  // Layout from the first loop instruction: the outer set-up (3 words, or 1 with lp.setup), the
+  // inner set-up (3 words, or 1 with lp.setupi), 3 inner body words, 2 outer body words.
+  const uint32_t outer_words = outer == Outer::kCounti || outer == Outer::kCount ? 3 : 1;
+  const uint32_t inner_words = outer == Outer::kSetupSetupi ? 1 : 3;
+  const uint32_t end_inner = 4 * (outer_words + inner_words + 2);  // from the first instruction
+  const uint32_t end_outer = end_inner + 8;
+  const uint32_t top_outer = 4 * outer_words;
+  if (outer_words == 3) {
+    p.Word(outer == Outer::kCounti ? Loop("lp.counti", 1, 10) : Loop("lp.count", 1, 0, kA3));
+    p.Word(Loop("lp.endi", 1, (end_outer - 4) / 2));
+    p.Word(Loop("lp.starti", 1, (top_outer - 8) / 2));
+  } else {
+    p.Word(Loop("lp.setup", 1, end_outer / 2, kA3));
+  }
+  const uint32_t here = top_outer;  // the inner set-up's first word
+  if (inner_words == 3) {
+    p.Word(Loop("lp.counti", 0, 10));
+    p.Word(Loop("lp.endi", 0, (end_inner - here - 4) / 2));
+    p.Word(Loop("lp.starti", 0, (here + 12 - here - 8) / 2));
+  } else {
+    p.Word(Loop("lp.setupi", 0, 10, (end_inner - here) / 2));
+  }
+  p.Word(Addi(kA0, kA0, 1));
+  p.Word(Addi(kA0, kA0, 1));
+  p.Word(Addi(kA0, kA0, 1));  // the inner loop's last instruction
+  p.Word(Addi(kA1, kA1, 2));
+  p.Word(Addi(kA1, kA1, 2));  // the outer loop's last instruction
+  p.Result(kA0);
+  p.Result(kA1);
+}
+
+constexpr Outer kOuters[] = {Outer::kCounti, Outer::kSetup, Outer::kSetupSetupi, Outer::kCount};
+const char* const kLoopSources[] = {"hwloop.S test_2 (lp.counti, lp.endi, lp.starti)",
+                                    "hwloop.S test_3 (lp.setup)", "hwloop.S test_4 (lp.setupi)",
+                                    "hwloop.S test_2 with lp.count"};
+
+void RunLoops(Mode mode) {
+  const bool eight = mode == Mode::kCore0Of8 || mode == Mode::kAllOf8;
+  Program p(mode != Mode::kNoRvc);
+  p.Word(0xF1402473u);  // csrr x8, mhartid
+  if (mode == Mode::kCore0Of8) {
+    p.Word(Branch(0, 8, 0, 16));
+    p.Sleep();
+  }
+  p.Word(Addi(9, 0, 64));
+  p.Word(EncodeR(kOp, 0, 1, 9, 8, 9));  // x5: kResults + 64 * core
+  p.Li(5, kResults);
+  p.Word(EncodeR(kOp, 0, 0, 5, 5, 9));
+  for (const Outer o : kOuters) {
+    if (mode != Mode::kNoRvc) p.Word(0x00010001u);  // two c.nop: compressed code, loops aligned
+    NestedLoop(p, o);
+  }
+  if (mode == Mode::kAllOf8) {
+    p.Li(7, GAP8_EU_BARRIER_WAIT);
+    p.Word(Lw(9, 7, 0));
+    p.Word(Branch(0, 8, 0, 20));
+    p.Sleep();
+    p.Word(0x0000006Fu);
+  }
+  p.Li(7, GAP8_CTRL_EXIT);
+  p.Word(Sw(0, 7, 0));
+  p.Word(0x0000006Fu);
+
+  gap8::ClusterConfig config;
+  config.cores = eight ? 8 : 1;
+  config.max_cycles = 10'000'000;
+  gap8::Cluster cluster(config);
+  REQUIRE(cluster.memory().Write(GAP8_L2_BASE, p.bytes().data(), static_cast<uint32_t>(p.size())));
+  cluster.Start(GAP8_L2_BASE);
+  const gap8::RunResult run = cluster.Run();
+  INFO(Name(mode));
+  REQUIRE_FALSE(run.fault.has_value());
+  for (int c = 0; c < (mode == Mode::kAllOf8 ? 8 : 1); ++c) {
+    uint32_t got[8] = {};
+    REQUIRE(cluster.memory().Read(kResults + 64 * static_cast<uint32_t>(c), got, sizeof got));
+    for (int t = 0; t < 4; ++t) {
+      INFO("core " << c << ": " << kLoopSources[t]);
+      CHECK(got[2 * t] == 300u);
+      CHECK(got[2 * t + 1] == 40u);
+    }
+  }
+}
+
 }  // namespace
 
 TEST_CASE("core-v-verif vectors: the row counts the docs give") {
@@ -310,3 +418,8 @@ TEST_CASE("core-v-verif vectors: 1 core") { RunMode(Mode::kOneCore); }
 TEST_CASE("core-v-verif vectors: 8 cores, core 0 alone") { RunMode(Mode::kCore0Of8); }
 TEST_CASE("core-v-verif vectors: 8 cores, all") { RunMode(Mode::kAllOf8); }
 TEST_CASE("core-v-verif vectors: 1 core, no RVC") { RunMode(Mode::kNoRvc); }
+
+TEST_CASE("riscv-tests hwloop.S loops: 1 core") { RunLoops(Mode::kOneCore); }
+TEST_CASE("riscv-tests hwloop.S loops: 8 cores, core 0 alone") { RunLoops(Mode::kCore0Of8); }
+TEST_CASE("riscv-tests hwloop.S loops: 8 cores, all") { RunLoops(Mode::kAllOf8); }
+TEST_CASE("riscv-tests hwloop.S loops: 1 core, no RVC") { RunLoops(Mode::kNoRvc); }
