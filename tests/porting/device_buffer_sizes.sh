@@ -8,8 +8,13 @@
 set -eu
 guide=$1 src=$2 pxflow=$3 out=$4
 rm -rf "$out" && mkdir -p "$out"
-flags=$(tr '\n' ' ' < "$guide" | sed -n 's/.*-DPXDUT_MAX_PIXELS=\([0-9]*\)u -DPXDUT_MAX_POIS=\([0-9]*\)u.*/\1 \2/p')
-[ -n "$flags" ] || { echo "$guide: no '-DPXDUT_MAX_PIXELS=Pu -DPXDUT_MAX_POIS=Nu' found"; exit 1; }
+# Every place the guide names them (its prose and its build command) must say the same.
+flags=$(tr '\n' ' ' < "$guide" | grep -o -- '-DPXDUT_MAX_PIXELS=[0-9]*u -DPXDUT_MAX_POIS=[0-9]*u' |
+  sort -u | sed 's/-DPXDUT_MAX_PIXELS=\([0-9]*\)u -DPXDUT_MAX_POIS=\([0-9]*\)u/\1 \2/')
+if [ -z "$flags" ] || [ "$(echo "$flags" | wc -l)" -ne 1 ]; then
+  echo "$guide: want one '-DPXDUT_MAX_PIXELS=Pu -DPXDUT_MAX_POIS=Nu' (found: $(echo $flags))"
+  exit 1
+fi
 set -- $flags
 pixels=$1 pois=$2
 
