@@ -13,7 +13,7 @@ import tempfile
 
 # (page, pattern, pxflow arguments, row, fields of the row's outcome in the check file)
 FACTS = [
-    ("docs/cortex-m4.md", r"\*\*(\d+) cases, (\d+) pairs passed, (\d+) n/a",
+    ("docs/cortex-m4.md", r"\*\*(\d+)\s+cases,\s+(\d+)\s+pairs\s+passed,\s+(\d+)\s+n/a",
      ["check", "--backends", "ref-original,m4-qemu", "--require", "m4-qemu"], "m4-qemu",
      ["passed", "pairs", "not_applicable"]),
 ]
