@@ -4,12 +4,16 @@
 // arrays with a freestanding checker; `pxflow vectors verify DIR RECORDS` compares records made
 // elsewhere with check's mismatch lines and exit codes.
 #include <bit>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
+#include <string_view>
 
 #include "cli_extension.hpp"
 #include "counted.hpp"
@@ -130,6 +134,9 @@ void put32(std::string& s, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>(v >> (8 * i)));
 }
 
+// The file of --format c's arrays (pxv_frames, pxv_records, pxv_flow).
+constexpr const char* kCArrays = "pxflow_vectors.c";
+
 Json manifest(const Vectors& v, const VectorsArgs& a) {
   Json j;
   j["format"] = "pxflow-vectors";
@@ -143,7 +150,10 @@ Json manifest(const Vectors& v, const VectorsArgs& a) {
   j["params"] = params;
   j["pairs"] = v.pairs.size();
   j["pois_per_pair"] = poi_count(v.p);
-  j["files"] = {{"frames", "frames.bin"}, {"records", "records.bin"}, {"flow", "flow.bin"}};
+  if (a.format == "bin")
+    j["files"] = {{"frames", "frames.bin"}, {"records", "records.bin"}, {"flow", "flow.bin"}};
+  else  // the three parts are arrays of one C file: pxv_frames, pxv_records, pxv_flow
+    j["files"] = {{"frames", kCArrays}, {"records", kCArrays}, {"flow", kCArrays}};
   j["layout"] = {
       {"frames", "per pair: prev then next, W*H bytes each, rows packed"},
       {"records", "per pair: pois_per_pair records of 32 bytes, SPEC 4, little-endian"},
@@ -200,7 +210,7 @@ constexpr const char* kVectorsManifest = ".pxflow-vectors";
 // The files of each --format, in the order they are written.
 std::vector<std::string> vector_files(const std::string& format) {
   if (format == "bin") return {"manifest.json", "frames.bin", "records.bin", "flow.bin"};
-  return {"manifest.json", "pxflow_vectors.h", "pxflow_vectors.c", "pxflow_vectors_check.c"};
+  return {"manifest.json", "pxflow_vectors.h", kCArrays, "pxflow_vectors_check.c"};
 }
 
 int write_vectors(const VectorsArgs& a) {
@@ -246,17 +256,17 @@ int write_vectors(const VectorsArgs& a) {
       << "#define PXFLOW_VECTORS_H\n#include <stdint.h>\n#define PXV_PAIRS " << v.pairs.size()
       << "u\n#define PXV_WIDTH " << v.p.width << "u\n#define PXV_HEIGHT " << v.p.height
       << "u\n#define PXV_POIS " << poi_count(v.p) << "u\n#define PXV_S " << v.p.search_radius
-      << "u\n#define PXV_B " << v.p.blocks << "u\n#define PXV_FT " << v.p.feature_threshold
-      << "u\n#define PXV_VT " << v.p.sad_threshold << "u\n#define PXV_HF "
-      << (v.p.hist_filter ? 1 : 0) << "u\n#define PXV_MINCOUNT " << v.p.min_count << "u\n"
+      << "u\n#define PXV_T " << v.p.tile << "u\n#define PXV_B " << v.p.blocks
+      << "u\n#define PXV_FT " << v.p.feature_threshold << "u\n#define PXV_VT " << v.p.sad_threshold
+      << "u\n#define PXV_HF " << (v.p.hist_filter ? 1 : 0) << "u\n#define PXV_MINCOUNT "
+      << v.p.min_count << "u\n#define PXV_GC " << (v.p.gyro_comp ? 1 : 0) << "u\n"
       << "extern const uint8_t pxv_frames[], pxv_records[], pxv_flow[];\n"
       << "long pxv_check_records(uint32_t pair, const uint8_t *records);\n"
       << "int pxv_check_flow(uint32_t pair, uint32_t flow_x_bits, uint32_t flow_y_bits, "
          "int32_t quality);\n#endif\n";
     out["pxflow_vectors.h"]->write(h.str());
-    out["pxflow_vectors.c"]->write("#include \"pxflow_vectors.h\"\n" +
-                                   c_array("pxv_frames", frames) + c_array("pxv_records", records) +
-                                   c_array("pxv_flow", flow));
+    out[kCArrays]->write("#include \"pxflow_vectors.h\"\n" + c_array("pxv_frames", frames) +
+                         c_array("pxv_records", records) + c_array("pxv_flow", flow));
     out["pxflow_vectors_check.c"]->write(kCChecker);
   }
   // The other format's files of an earlier run go: the folder holds one set of vectors.
@@ -271,6 +281,62 @@ int write_vectors(const VectorsArgs& a) {
 
 std::string read_file(const std::string& path, const char* what) {
   return read_input_text(std::string(what) + ": " + path, path);
+}
+
+// A decimal number in `text` after leading blanks, up to `max`; `rest` is what follows it.
+std::optional<std::size_t> number_at(std::string_view text, std::size_t max,
+                                     std::string_view& rest) {
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return std::nullopt;
+  std::size_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data() + first, end, value);
+  if (ec != std::errc() || value > max) return std::nullopt;
+  rest = text.substr(static_cast<std::size_t>(ptr - text.data()));
+  return value;
+}
+
+// The bytes of `name` in --format c's arrays file (`const uint8_t name[N] = {b, b, ...};`).
+std::string c_array_bytes(const std::string& text, const std::string& name,
+                          const std::string& where) {
+  const std::string head = "const uint8_t " + name + "[";
+  const std::size_t at = text.find(head);
+  const std::size_t open = at == std::string::npos ? at : text.find('{', at);
+  const std::size_t close = open == std::string::npos ? open : text.find('}', open);
+  std::string_view rest;
+  const auto size = close == std::string::npos
+                        ? std::nullopt
+                        : number_at(std::string_view(text).substr(at + head.size()),
+                                    std::numeric_limits<std::uint32_t>::max(), rest);
+  if (!size)
+    throw InputError("vectors verify: " + where + ": no array " + name +
+                     " (not written by pxflow vectors --format c?)");
+  std::string bytes;
+  std::string_view body = std::string_view(text).substr(open + 1, close - open - 1);
+  while (body.find_first_not_of(" \t\r\n") != std::string_view::npos) {
+    const auto byte = number_at(body, 255, rest);
+    if (!byte || rest.empty() || rest[0] != ',')
+      throw InputError("vectors verify: " + where + ": array " + name + ": element " +
+                       std::to_string(bytes.size()) + " is not a byte followed by ','");
+    bytes.push_back(static_cast<char>(*byte));
+    body = rest.substr(1);
+  }
+  if (bytes.size() != *size)
+    throw InputError("vectors verify: " + where + ": array " + name + " has " +
+                     std::to_string(bytes.size()) + " bytes, it declares " + std::to_string(*size));
+  return bytes;
+}
+
+// The expected records of a vectors folder of either --format: records.bin, or the pxv_records
+// array of pxflow_vectors.c.
+std::string expected_records(const std::string& dir) {
+  if (std::filesystem::exists(dir + "records.bin"))
+    return read_file(dir + "records.bin", "vectors verify");
+  if (std::filesystem::exists(dir + kCArrays))
+    return c_array_bytes(read_file(dir + kCArrays, "vectors verify"), "pxv_records",
+                         dir + kCArrays);
+  throw InputError("vectors verify: " + dir + ": neither records.bin (--format bin) nor " +
+                   kCArrays + " (--format c): not a pxflow vectors folder");
 }
 
 int verify_vectors(const VectorsArgs& a) {
@@ -295,11 +361,11 @@ int verify_vectors(const VectorsArgs& a) {
   }
   validate(p);
   const std::size_t pairs = m["pairs"], per = poi_count(p);
-  const std::string want_bytes = read_file(dir + "records.bin", "vectors verify");
+  const std::string want_bytes = expected_records(dir);
   const std::string got_bytes = read_file(a.verify_records, "vectors verify");
   if (want_bytes.size() != pairs * per * 32)
     throw InputError("vectors verify: " + dir +
-                     "records.bin: " + std::to_string(want_bytes.size()) +
+                     "'s expected records: " + std::to_string(want_bytes.size()) +
                      " bytes, the manifest says " + std::to_string(pairs * per * 32));
   if (got_bytes.size() != want_bytes.size())
     throw InputError("vectors verify: " + a.verify_records + ": " +

@@ -2,6 +2,7 @@
 // one-bit flip with check's mismatch line (exit 1), a file of the wrong size (exit 2); --from a
 // list of real pairs; the protocol page lists manifest.json's keys as they are.
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
@@ -74,6 +75,64 @@ TEST_CASE("pxflow vectors verify catches a one-bit flip and a wrong size", "[dut
   const auto size = run_pxflow({"vectors", "verify", d.path(""), d.path("short.bin")});
   CHECK(size.exit_code == 2);
   CHECK(size.err_lines() == 1);
+}
+
+TEST_CASE("pxflow vectors verify reads a --format c folder", "[dut][vectors]") {
+  TempDir d;
+  for (const char* format : {"bin", "c"})
+    REQUIRE(run_pxflow({"vectors", "--out", d.path(format), "--format", format, "--cases", "3",
+                        "--seed", "5"})
+                .exit_code == 0);
+  // The C folder's header has every parameter of SPEC §1, T and GC included.
+  const std::string header = slurp(d.path("c/pxflow_vectors.h"));
+  for (const char* macro : {"PXV_T 8u", "PXV_GC 0u", "PXV_MINCOUNT", "PXV_HF", "PXV_POIS"})
+    CHECK_THAT(header, Catch::Contains(std::string("#define ") + macro));
+  const std::string records = d.path("bin/records.bin");
+  const auto same = run_pxflow({"vectors", "verify", d.path("c"), records});
+  INFO(same.out << same.err);
+  CHECK(same.exit_code == 0);
+  std::string flipped = slurp(records);
+  flipped[64 * 32 + 5 * 32 + 10] ^= 0x01;  // pair 1, POI 5, the low byte of sad
+  d.write("flipped.bin", flipped);
+  const auto bad = run_pxflow({"vectors", "verify", d.path("c"), d.path("flipped.bin")});
+  CHECK(bad.exit_code == 1);
+  CHECK_THAT(bad.out, Catch::Contains("poi=5") && Catch::Contains("field=sad"));
+  // A folder with a manifest but neither records file: one line naming both formats, exit 2.
+  for (const char* folder : {"none", "damaged"})
+    std::filesystem::create_directories(d.path(folder));
+  d.write("none/manifest.json", slurp(d.path("c/manifest.json")));
+  const auto none = run_pxflow({"vectors", "verify", d.path("none"), records});
+  CHECK(none.exit_code == 2);
+  CHECK(none.err_lines() == 1);
+  CHECK_THAT(none.err, Catch::Contains("--format bin") && Catch::Contains("--format c"));
+  // A damaged array: one line, exit 2.
+  std::string arrays = slurp(d.path("c/pxflow_vectors.c"));
+  arrays.insert(arrays.find('{', arrays.find("pxv_records[")) + 1, "x");
+  d.write("damaged/manifest.json", slurp(d.path("c/manifest.json")));
+  d.write("damaged/pxflow_vectors.c", arrays);
+  const auto damaged = run_pxflow({"vectors", "verify", d.path("damaged"), records});
+  INFO(damaged.err);
+  CHECK(damaged.exit_code == 2);
+  CHECK(damaged.err_lines() == 1);
+}
+
+TEST_CASE("the protocol page names every PXV_ macro of the C header", "[dut][vectors]") {
+  TempDir d;
+  REQUIRE(run_pxflow({"vectors", "--out", d.path(""), "--format", "c", "--cases", "1"}).exit_code ==
+          0);
+  const auto names = [](const std::string& text, const std::regex& pattern) {
+    std::set<std::string> found;
+    for (std::sregex_iterator m(text.begin(), text.end(), pattern), end; m != end; ++m)
+      found.insert((*m)[1]);
+    return found;
+  };
+  const std::set<std::string> defined =
+      names(slurp(d.path("pxflow_vectors.h")), std::regex("#define (PXV_[A-Z]+) "));
+  const std::string page = slurp(PROTOCOL_PAGE);
+  const auto at = page.find("## 9.");
+  REQUIRE(at != std::string::npos);
+  const std::string section = page.substr(at, page.find("\n## ", at + 1) - at);
+  CHECK(names(section, std::regex("`(PXV_[A-Z]+)`")) == defined);
 }
 
 TEST_CASE("pxflow vectors --from a list of real pairs: flow bits equal pxflow flow's",

@@ -9,8 +9,8 @@
 static pxdut_record records[PXV_POIS];
 
 int main(void) {
-  const pxdut_params p = {PXV_WIDTH, PXV_HEIGHT, PXV_S,  PXFLOW_TILE,  PXV_B,
-                          PXV_FT,    PXV_VT,     PXV_HF, PXV_MINCOUNT, 0u};
+  const pxdut_params p = {PXV_WIDTH, PXV_HEIGHT, PXV_S,  PXV_T,        PXV_B,
+                          PXV_FT,    PXV_VT,     PXV_HF, PXV_MINCOUNT, PXV_GC};
   int failed = 0;
   for (uint32_t pair = 0; pair < PXV_PAIRS; ++pair) {
     const uint8_t *prev = pxv_frames + 2ul * pair * PXV_WIDTH * PXV_HEIGHT;
