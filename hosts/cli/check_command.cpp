@@ -40,6 +40,7 @@ struct CheckArgs {
   std::string worker_row;  // the hidden --check-worker ROW: serve that row to a checking pxflow
   std::vector<std::string> worker_command;
   bool verbose = false, generated_only = false, limits_only = false;
+  ParamOverride params;  // --profile, --set: the corpus at other parameters
   BackendOptions backend_options;
   std::string globals;  // the global options given (--dut, --disable-isa ...): they shape the run
   CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr,
@@ -77,6 +78,8 @@ std::string command_line(const CheckArgs& a, const Shard& shard) {
   if (a.shard_opt->count() > 0) c += " --shard " + shard.text();
   if (a.generated_only) c += " --generated-only";
   if (a.limits_only) c += " --limits-only";
+  if (!a.params.profile.empty()) c += " --profile " + shell_word(a.params.profile);
+  for (const std::string& kv : a.params.sets) c += " --set " + shell_word(kv);
   if (a.data_opt->count() > 0) c += " --data " + shell_word(a.data_dir);
   if (!a.backend_options.device.empty()) c += " --device " + shell_word(a.backend_options.device);
   if (a.backend_options.threads != 0)
@@ -128,6 +131,13 @@ CheckOptions options_from_args(const CheckArgs& a) {
         std::string(kHelp));
   o.corpus.limits_only = a.limits_only;
   o.corpus.real = !a.generated_only && !a.limits_only;
+  if (!a.params.empty() && a.limits_only)
+    throw InputError(a.params.options().substr(1) +
+                     " with --limits-only: the limit cases are each row's own limits and keep "
+                     "their parameters; --profile and --set apply to the rest of the corpus" +
+                     std::string(kHelp));
+  a.params.check();
+  o.corpus.params = a.params;
   o.command = command_line(a, o.shard);
   o.banner = "pxflow check: seed " + std::to_string(a.seed) +
              (a.cases > 0 ? ", fuzz campaign of " + std::to_string(a.cases) + " random pairs"
@@ -169,8 +179,9 @@ CheckReport read_stopped_check(const CheckArgs& a, const BuildIdentity& built) {
   check_resumable(label, r, built.version, built.commit);
   if (r.options.global_options != a.globals)
     throw InputError(label + ": ran with the global options '" + r.options.global_options +
-                     "' (here '" + a.globals + "'): resume it as pxflow" +
-                     r.options.global_options + " check --resume " + shell_word(a.resume_path));
+                     "' (here '" + a.globals + "'): resume it as " +
+                     shell_word(own_command_name()) + r.options.global_options +
+                     " check --resume " + shell_word(a.resume_path));
   return r;
 }
 
@@ -187,6 +198,7 @@ CheckOptions options_from_file(const CheckArgs& a, const CheckReport& r) {
   o.corpus.data_dir = r.options.data_dir;
   o.corpus.limits_only = r.options.limits_only;
   o.corpus.real = !r.campaign.generated_only && !r.options.limits_only;
+  o.corpus.params = r.options.params;
   o.command = r.command;
   o.resume = &r;
   o.resume_file = a.resume_path;
@@ -240,7 +252,7 @@ int run_check_command(const CheckArgs& a) {
     };
     o.repro.make_folder = [repro](const std::string& path) { return repro->make_subfolder(path); };
   }
-  o.repro.program = "pxflow" + a.globals;
+  o.repro.program = shell_word(own_command_name()) + a.globals;
   o.repro.limits.seconds = a.repro_seconds;
   // With the JSON on stdout, everything for humans goes to stderr.
   std::ostream& human = json_to_stdout ? std::cerr : std::cout;
@@ -267,6 +279,7 @@ const std::vector<std::string> kCheckExamples = {
     "check --cases 10000 --seed 7 --shard 2/4 --json s2.json  # one quarter of a campaign",
     "check --cases 10000 --shard auto --json s.json  # a GitLab, Kubernetes or Slurm matrix's part",
     "check --resume ci.json  # finish a check a signal stopped (Ctrl-C: its --json file kept it)",
+    "check --backends ref-original,avx2 --set search_radius=20  # the corpus at S = 20",
 };
 
 Command add_check_command(CLI::App& app) {
@@ -307,6 +320,19 @@ Command add_check_command(CLI::App& app) {
   sub->add_flag("--limits-only", a->limits_only,
                 "Only the limit cases: each backend at the edges its unsupported() declares, and "
                 "SPEC's corners (docs/harness.md)");
+  std::string profiles;
+  for (const auto& n : profile_names()) profiles += (profiles.empty() ? "" : ", ") + n;
+  sub->add_option("--profile", a->params.profile,
+                  "Run the corpus at this profile's parameters (" + profiles +
+                      "), each case at its own frame size; the limit cases keep theirs "
+                      "(default: each case's own parameters)")
+      ->type_name("NAME");
+  sub->add_option("--set", a->params.sets,
+                  "Run the corpus with one parameter overridden, KEY=VALUE (repeatable; every "
+                  "key of flow --set but width and height): e.g. --set search_radius=20. Cases "
+                  "whose frames are too small for it are left out, each named")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
   sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
   a->repro_dir_opt = declare_path(
       sub->add_option("--repro-dir", a->repro_dir,

@@ -11,9 +11,11 @@
 #endif
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <string_view>
 #include <thread>
 
 // Between fork and exec (or _exit) a process forked from a multithreaded pxflow may only make
@@ -268,6 +270,26 @@ std::string own_executable() {
   std::error_code e;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", e);
   if (e) throw SpawnError("cannot find the pxflow binary (/proc/self/exe): " + e.message());
+  return self.string();
+}
+
+std::string own_command_name() {
+  namespace fs = std::filesystem;
+  std::error_code e;
+  const fs::path self = fs::read_symlink("/proc/self/exe", e);
+  if (e) return "pxflow";
+  const std::string argv0 = program_invocation_name;  // glibc's argv[0], as started
+  const char* path = std::getenv("PATH");
+  if (argv0.empty() || argv0.find('/') != std::string::npos || !path) return self.string();
+  // The first folder on PATH with that name is the one a shell would run.
+  for (std::string_view rest = path; !rest.empty();) {
+    const std::size_t colon = rest.find(':');
+    const std::string dir(rest.substr(0, colon));
+    rest = colon == std::string_view::npos ? std::string_view() : rest.substr(colon + 1);
+    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / argv0;
+    if (::access(candidate.c_str(), X_OK) != 0) continue;
+    return fs::equivalent(candidate, self, e) ? argv0 : self.string();
+  }
   return self.string();
 }
 

@@ -67,4 +67,9 @@ std::string ended_text(int wait_status);
 // throws SpawnError when it cannot be read.
 std::string own_executable();
 
+// This binary as a printed command should name it (reproducers, resume hints): the bare name it
+// was started under when PATH finds this very binary under that name, else its absolute path;
+// "pxflow" only when /proc/self/exe cannot be read. Not shell-quoted.
+std::string own_command_name();
+
 }  // namespace pxflow

@@ -316,7 +316,8 @@ void describe_campaign(CheckReport& report, const Campaign& campaign, const Chec
   info.cases = campaign.cases();
   info.pairs = campaign.pairs();
   report.options = {o.corpus.data_dir,    o.backend_options.device,  o.global_options,
-                    o.corpus.limits_only, o.backend_options.threads, o.isolation.case_timeout};
+                    o.corpus.limits_only, o.backend_options.threads, o.isolation.case_timeout,
+                    o.corpus.params};
 }
 
 // Takes over the stopped run `o.resume`: its cases done, its tallies and failure lines. Returns
@@ -381,6 +382,8 @@ CheckReport run_check(const CheckOptions& o, std::ostream& out) {
   long reference_failures = o.resume ? take_over(o, report, contenders) : 0;
 
   if (!o.banner.empty()) out << o.banner << "\n";
+  for (const std::string& why : campaign.dropped())
+    out << "left out at" << o.corpus.params.options() << ": " << why << "\n";
   for (auto& k : contenders) {
     if (k.backend || k.outcome.state == BackendState::kReference) continue;
     if (k.outcome.state == BackendState::kFailed)

@@ -85,6 +85,7 @@ struct RunOptions {
   bool limits_only = false;
   int threads = 0;
   double case_timeout = 0;  // --case-timeout; 0: the scaled allowance
+  ParamOverride params;     // --profile, --set
   bool operator==(const RunOptions&) const = default;
 };
 

@@ -70,6 +70,11 @@ CaseRange shard_range(long cases, const Shard& s) {
 Campaign::Campaign(const CampaignOptions& o) : fuzz_pairs_(o.fuzz_pairs), seed_(o.corpus.seed) {
   Fnv1a h;
   if (fuzz()) {
+    fuzz_settings_ = check_settings(o.corpus.params, &dropped_);
+    fuzz_settings_.resize(std::min<std::size_t>(fuzz_settings_.size(), 2));
+    if (fuzz_settings_.size() < 2 || fuzz_settings_[1].second.width != 64)
+      throw InputError("--cases: the fuzz campaign's 64x64 pairs cannot run at" +
+                       o.corpus.params.options() + " (" + dropped_.front() + ")");
     cases_ = (fuzz_pairs_ + kFuzzBatch - 1) / kFuzzBatch;
     for (long b = 0; b < std::min(cases_, 2L); ++b) {
       const CheckCase c = fuzz_batch(b);
@@ -77,7 +82,7 @@ Campaign::Campaign(const CampaignOptions& o) : fuzz_pairs_(o.fuzz_pairs), seed_(
       settings_.push_back(c.setting);
     }
   } else {
-    if (!o.corpus.limits_only) corpus_ = build_check_corpus(o.corpus);
+    if (!o.corpus.limits_only) corpus_ = build_check_corpus(o.corpus, &dropped_);
     for (CheckCase& c : limit_cases(o.limit_rows, seed_)) corpus_.push_back(std::move(c));
     cases_ = static_cast<long>(corpus_.size());
     for (const CheckCase& c : corpus_) {
@@ -108,7 +113,7 @@ CheckCase Campaign::take(long index) {
 // Batch b holds pairs [256b, 256b + n) with seeds from seed * 1000000007 + 256b, alternating the
 // two 64x64 profiles, so any batch is made without the ones before it.
 CheckCase Campaign::fuzz_batch(long index) const {
-  static const auto settings = check_settings();
+  const auto& settings = fuzz_settings_;
   const long done = index * kFuzzBatch;
   const int n = static_cast<int>(std::min(kFuzzBatch, fuzz_pairs_ - done));
   const auto& [setting, p] = settings[static_cast<std::size_t>(index % 2)];

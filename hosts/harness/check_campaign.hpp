@@ -54,6 +54,8 @@ class Campaign {
   // whose OpenCV decodes or warps differently do not have the same inputs, and merge refuses
   // them.
   const std::string& fingerprint() const { return fingerprint_; }
+  // The settings --profile/--set left out, each with its reason (CorpusOptions::params).
+  const std::vector<std::string>& dropped() const { return dropped_; }
 
   // Case `index` (0-based). For the fixed corpus the case is moved out: call it once per index.
   CheckCase take(long index);
@@ -67,7 +69,8 @@ class Campaign {
   long cases_ = 0;
   std::vector<CheckCase> corpus_;
   std::vector<long> corpus_pairs_;  // pairs per fixed-corpus case (its pairs may be moved out)
-  std::vector<std::string> settings_;
+  std::vector<std::string> settings_, dropped_;
+  std::vector<std::pair<std::string, Params>> fuzz_settings_;  // the two 64x64 profiles'
   std::string fingerprint_;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <numbers>
 
 #include "errors.hpp"
@@ -117,9 +118,12 @@ OwnedPair feature_threshold_pair(const Params& p) {
   return op;
 }
 
-// A pair and a VT equal to one POI's best SAD, so that POI sits exactly on the threshold.
+// A pair and a VT equal to one POI's best SAD, so that POI sits exactly on the threshold. Where
+// no seed gives an accepted POI (a --set feature_threshold that keeps none), the first pair at the
+// setting's own VT.
 std::pair<OwnedPair, int> sad_threshold_pair(const Params& p, std::uint64_t seed) {
-  for (std::uint64_t s = seed;; ++s) {
+  constexpr int kSeedsTried = 64;
+  for (std::uint64_t s = seed; s < seed + kSeedsTried; ++s) {
     OwnedPair op = random_pair(p.width, p.height, p.search_radius, s);
     Params loose = p;
     loose.sad_threshold = 65535;
@@ -132,6 +136,9 @@ std::pair<OwnedPair, int> sad_threshold_pair(const Params& p, std::uint64_t seed
         return {std::move(op), r.sad};
       }
   }
+  OwnedPair op = random_pair(p.width, p.height, p.search_radius, seed);
+  op.name = "threshold/sad-none-accepted/seed=" + std::to_string(seed);
+  return {std::move(op), p.sad_threshold};
 }
 
 Params sized(Params p, int w, int h) {
@@ -145,20 +152,75 @@ bool CheckCase::for_row(const std::string& row) const {
   return rows.empty() || std::find(rows.begin(), rows.end(), row) != rows.end();
 }
 
-std::vector<std::pair<std::string, Params>> check_settings() {
+std::string ParamOverride::options() const {
+  std::string o = profile.empty() ? "" : " --profile " + profile;
+  for (const std::string& kv : sets) o += " --set " + kv;
+  return o;
+}
+
+std::optional<Params> ParamOverride::apply(const Params& p, std::string* why_not) const {
+  Params q = p;
+  if (!profile.empty()) {
+    q = pxflow::profile(profile);
+    q.width = p.width, q.height = p.height;
+  }
+  for (const std::string& kv : sets) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--set '" + kv + "': expected KEY=VALUE, e.g. --set search_radius=20");
+    const std::string key = kv.substr(0, eq);
+    if (key == "width" || key == "height")
+      throw InputError("--set " + kv + ": the corpus's cases keep their own frame sizes; " +
+                       "check sets every parameter but width and height");
+    set_param(q, key, std::string_view(kv).substr(eq + 1));
+  }
+  if (q.gyro_comp)
+    throw InputError(
+        "--set gyro_comp=1: pxflow takes no gyro rates, so the compensation would have nothing "
+        "to add; leave gyro_comp at 0");
+  try {
+    validate(q);
+  } catch (const InputError& e) {
+    if (why_not) *why_not = e.what();
+    return std::nullopt;
+  }
+  return q;
+}
+
+void ParamOverride::check() const {
+  // On a frame large enough for any radius: what fails here fails on every case.
+  Params roomy = pxflow::profile(kDefaultProfile);
+  roomy.width = roomy.height = 1024;
+  std::string why;
+  if (!apply(roomy, &why)) throw InputError(options().substr(1) + ": " + why);
+}
+
+std::vector<std::pair<std::string, Params>> check_settings(const ParamOverride& o,
+                                                           std::vector<std::string>* dropped) {
   auto big = [](int w, int h, int S, int B) {
     Params p;
     p.width = w, p.height = h, p.search_radius = S, p.blocks = B;
     return p;
   };
-  return {{std::string(kDefaultProfile), profile(kDefaultProfile)},
-          {"px4flow-head", profile("px4flow-head")},
-          {"320x240 S=7 B=16", big(320, 240, 7, 16)},
-          {"640x480 S=6 B=32 HF off", [&] {
-             Params p = big(640, 480, 6, 32);
-             p.hist_filter = false;
-             return p;
-           }()}};
+  std::vector<std::pair<std::string, Params>> own = {
+      {std::string(kDefaultProfile), profile(kDefaultProfile)},
+      {"px4flow-head", profile("px4flow-head")},
+      {"320x240 S=7 B=16", big(320, 240, 7, 16)},
+      {"640x480 S=6 B=32 HF off", [&] {
+         Params p = big(640, 480, 6, 32);
+         p.hist_filter = false;
+         return p;
+       }()}};
+  if (o.empty()) return own;
+  std::vector<std::pair<std::string, Params>> kept;
+  for (auto& [setting, p] : own) {
+    std::string why;
+    if (const auto q = o.apply(p, &why))
+      kept.push_back({setting + o.options(), *q});
+    else if (dropped)
+      dropped->push_back(setting + ": " + why);
+  }
+  return kept;
 }
 
 CheckCase fuzz_case(const std::string& setting, const Params& p, std::uint64_t first_seed,
@@ -169,9 +231,10 @@ CheckCase fuzz_case(const std::string& setting, const Params& p, std::uint64_t f
   return c;
 }
 
-std::vector<CheckCase> build_check_corpus(const CorpusOptions& o) {
+std::vector<CheckCase> build_check_corpus(const CorpusOptions& o,
+                                          std::vector<std::string>* dropped) {
   std::vector<CheckCase> cases;
-  const auto settings = check_settings();
+  const auto settings = check_settings(o.params, dropped);
   for (const auto& [setting, p] : settings) {
     const int w = p.width;
     const int randoms = w == 64 ? 96 : (w <= 320 ? 12 : 4);
@@ -188,6 +251,7 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o) {
     cases.push_back(std::move(vtc));
   }
   if (!o.real) return cases;
+  const std::size_t generated = cases.size();
 
   const auto reals = real_pairs(o);
   CheckCase binned64{
@@ -218,7 +282,8 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o) {
   const Frame base64 = px4flow_camera(src), base320 = crop(src, 0, 0, 320, 240);
   CheckCase s64{"synthetic/64x64", std::string(kDefaultProfile), profile(kDefaultProfile), {}};
   CheckCase s64h{"synthetic/64x64", "px4flow-head", profile("px4flow-head"), {}};
-  CheckCase s320{"synthetic/320x240", settings[2].first, settings[2].second, {}};
+  const auto [window_setting, window_params] = check_settings()[2];  // 320x240 S=7 B=16
+  CheckCase s320{"synthetic/320x240", window_setting, window_params, {}};
   std::uint64_t seed = o.seed;
   for (const Motion& m : kMotions) {
     s64.pairs.push_back(owned(std::string("synthetic/") + m.name + "/seed=" + std::to_string(seed),
@@ -231,7 +296,22 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o) {
   cases.push_back(std::move(s64));
   cases.push_back(std::move(s64h));
   cases.push_back(std::move(s320));
-  return cases;
+  if (o.params.empty()) return cases;
+  // The real and synthetic pairs do not depend on the parameters: their cases are overridden
+  // once made (the generated ones were made at the overridden settings).
+  std::vector<CheckCase> kept(std::make_move_iterator(cases.begin()),
+                              std::make_move_iterator(cases.begin() + generated));
+  for (auto c = cases.begin() + generated; c != cases.end(); ++c) {
+    std::string why;
+    if (const auto q = o.params.apply(c->params, &why)) {
+      c->params = *q;
+      c->setting += o.params.options();
+      kept.push_back(std::move(*c));
+    } else if (dropped) {
+      dropped->push_back(c->name + " " + c->setting + ": " + why);
+    }
+  }
+  return kept;
 }
 
 }  // namespace pxflow

@@ -65,7 +65,9 @@ Json options_json(const CheckReport& r) {
           {"device", o.device},
           {"threads", o.threads},
           {"case_timeout", o.case_timeout},
-          {"global_options", o.global_options}};
+          {"global_options", o.global_options},
+          {"profile", o.params.profile},
+          {"sets", o.params.sets}};
 }
 
 void options_from_json(CheckReport& r, const Json& j) {
@@ -76,6 +78,8 @@ void options_from_json(CheckReport& r, const Json& j) {
   j.at("threads").get_to(o.threads);
   j.at("case_timeout").get_to(o.case_timeout);
   j.at("global_options").get_to(o.global_options);
+  o.params.profile = j.value("profile", std::string());
+  o.params.sets = j.value("sets", std::vector<std::string>());
 }
 
 Json shard_json(const Shard& s, const CaseRange& r) {

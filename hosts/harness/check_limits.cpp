@@ -123,7 +123,7 @@ void row_probes(const LimitRow& r, std::vector<LimitProbe>& out) {
   if (auto b =
           largest_accepted(kMinBlocks, kMaxBlocks, [&](int b) { return ok(at(64, 64, S, b)); }))
     add("largest-blocks", at(64, 64, S, *b));
-  for (const SweepStep& step : radius_sweep(ok, kAffordableLimitPixels))
+  for (const SweepStep& step : radius_sweep(ok, kSweepPixels))
     out.push_back({"radius-sweep", {r.name}, step.params, false, step.pairs});
 }
 

@@ -59,5 +59,8 @@ std::string limit_entry(const CheckCase& c, const std::string& row);
 // The frames a limit case may have at most: a larger accepted square is named in the docs but not
 // run (an 8192x8192 pair costs seconds per row); the strips reach the 16384 side limit instead.
 inline constexpr std::int64_t kAffordableLimitPixels = std::int64_t{1} << 20;
+// The radius sweep's frames at most (512x512): below the real frames' 768x576, so that the sweep
+// asks no device for larger buffers than the rest of the corpus does (docs/PORTING.md).
+inline constexpr std::int64_t kSweepPixels = std::int64_t{1} << 18;
 
 }  // namespace pxflow

@@ -1,5 +1,6 @@
 // The GAP8 model's guard zones around its result areas (hosts/gap8/gap8_flow_runner.cpp) and the
 // limits `pxflow check` finds from each variant's unsupported() (hosts/harness/check_limits.hpp).
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include "check_limits.hpp"
@@ -39,10 +40,16 @@ TEST_CASE("gap8: the check's limit cases are each variant's exact edges", "[gap8
     const Gap8Backend backend(v.id, {});
     const LimitRow row{name, [&](const Params& p) { return backend.unsupported(p); }};
     bool square = false;
+    int sweep_top = 0, largest_radius = 0;
     for (const LimitProbe& probe : limit_probes({&row, 1})) {
       if (probe.rows.empty()) continue;  // SPEC's corners, not this row's edges
       INFO(probe.what());
       CHECK(backend.unsupported(probe.params).empty());
+      if (probe.kind == "radius-sweep") {  // every radius it accepts, each once
+        sweep_top = std::max(sweep_top, probe.params.search_radius);
+        continue;
+      }
+      if (probe.kind == "largest-radius") largest_radius = probe.params.search_radius;
       // One step further along the searched dimension is refused (or outside SPEC's ranges).
       Params next = probe.params;
       const std::string kind = probe.kind;
@@ -55,6 +62,8 @@ TEST_CASE("gap8: the check's limit cases are each variant's exact edges", "[gap8
         CHECK_THAT(backend.unsupported(next), Contains("does not fit L1"));
     }
     CHECK(square);  // every variant has an L1 limit below the frame size limit
+    // The sweep reaches the largest radius the variant accepts (or SPEC's, where it has none).
+    CHECK(sweep_top == (largest_radius > 0 ? largest_radius : kMaxSearchRadius));
   }
 }
 

@@ -59,8 +59,9 @@ TEST_CASE("correct backends pass: the summary line counts cases", "[check]") {
   INFO(r.out);
   CHECK(r.exit_code == 0);
   CHECK(r.out.find("FAIL") == std::string::npos);
-  // 4 settings x 4 generated cases and 18 limit cases (check_limits.hpp), 2 backends
-  CHECK(last_line(r.out) == "68 passed, 0 failed, 0 skipped");
+  // 4 settings x 4 generated cases and each row's 49 limit cases (check_limits.hpp: SPEC's
+  // corners, its strips and its radius sweep S = 1..31), 2 backends
+  CHECK(last_line(r.out) == "130 passed, 0 failed, 0 skipped");
 }
 
 TEST_CASE("a backend that cannot run is skipped with its reason, or fails when required",
@@ -68,7 +69,7 @@ TEST_CASE("a backend that cannot run is skipped with its reason, or fails when r
   auto r = check({"--backends", "test-unavailable,ref-local", "--generated-only"});
   CHECK(r.exit_code == 0);
   CHECK(r.out.find("skip test-unavailable (no such device here (test row))") != std::string::npos);
-  CHECK(last_line(r.out) == "34 passed, 0 failed, 34 skipped");
+  CHECK(last_line(r.out) == "65 passed, 0 failed, 65 skipped");
   r = check({"--backends", "test-unavailable,ref-local", "--require", "test-unavailable",
              "--generated-only"});
   CHECK(r.exit_code == 1);
@@ -130,6 +131,43 @@ TEST_CASE("cases outside a backend's limits are n/a, not failures", "[check]") {
   CHECK(fuzz.exit_code == 2);
   CHECK(fuzz.err.find("--limits-only: the limit cases are part of the fixed corpus") !=
         std::string::npos);
+}
+
+TEST_CASE("check --set and --profile run the corpus at other parameters, each case at its size",
+          "[check]") {
+  pxflow::test::TempDir dir;
+  const auto r = check({"--backends", "ref-local", "--generated-only", "--set", "search_radius=20",
+                        "--json", dir.path("s20.json")});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 0);
+  std::ifstream in(dir.path("s20.json"));
+  const auto j = nlohmann::json::parse(in);
+  CHECK(j["options"]["sets"] == nlohmann::json::array({"search_radius=20"}));
+  CHECK(j["command"].get<std::string>().find(" --set search_radius=20") != std::string::npos);
+  // Every generated setting ran at S = 20; the limit cases kept their own parameters.
+  const auto settings = j["campaign"]["settings"].get<std::vector<std::string>>();
+  for (const char* s : {"px4flow-64 --set search_radius=20", "px4flow-head --set search_radius=20",
+                        "320x240 S=7 B=16 --set search_radius=20",
+                        "640x480 S=6 B=32 HF off --set search_radius=20"})
+    CHECK(std::find(settings.begin(), settings.end(), s) != settings.end());
+  CHECK(std::find(settings.begin(), settings.end(), "px4flow-64") == settings.end());
+  // A radius too large for the 64x64 frames leaves those settings out, each named.
+  const auto big = check({"--backends", "ref-local", "--generated-only", "--set",
+                          "search_radius=31", "--profile", "px4flow-head"});
+  CHECK(big.exit_code == 0);
+  CHECK(big.out.find("left out at --profile px4flow-head --set search_radius=31: px4flow-64: "
+                     "frame 64x64 is too small for search_radius 31") != std::string::npos);
+  // What no case could run at is bad input, one line.
+  for (const auto& bad : {std::vector<std::string>{"--set", "width=80"},
+                          {"--set", "search_radius=40"},
+                          {"--profile", "nope"},
+                          {"--set", "search_radius=8", "--limits-only"}}) {
+    auto args = bad;
+    args.insert(args.begin(), {"--backends", "ref-local", "--generated-only"});
+    const auto e = check(args);
+    CHECK(e.exit_code == 2);
+    CHECK(e.err_lines() == 1);
+  }
 }
 
 TEST_CASE("a backend that crashes or hangs is its row's failure line, the others are checked",
@@ -256,25 +294,26 @@ TEST_CASE("counts are checked: a backend that miscounts fails with one line nami
   words >> got >> vs >> want;
   CHECK(vs == "vs");
   CHECK(number(got) == number(want) + 512);
-  // test-small-only, ref-original's kernel, counts right: its 25 cases within 64x64 pass (8
-  // generated, 17 limit cases); test-miscount fails every case it runs.
+  // test-small-only, ref-original's kernel, counts right: its 51 cases within 64x64 pass (8
+  // generated, 43 limit cases); test-miscount fails every case it runs (16 and its 49).
   CHECK(r.out.find("FAIL test-small-only") == std::string::npos);
-  CHECK(last_line(r.out) == "25 passed, 38 failed, 0 skipped");
+  CHECK(last_line(r.out) == "51 passed, 65 failed, 0 skipped");
 }
 
 namespace {
 
 // The command after `marker` on its line, split at spaces, "pxflow" replaced by the test binary.
-std::vector<std::string> printed_command(const std::string& out, const std::string& marker) {
+// The command printed after `marker`, as it would be pasted into a shell.
+std::string printed_command(const std::string& out, const std::string& marker) {
   const auto at = out.find(marker);
   if (at == std::string::npos) return {};
   const auto from = at + marker.size();
-  std::istringstream words(out.substr(from, out.find('\n', from) - from));
-  std::vector<std::string> args;
-  for (std::string w; words >> w;) args.push_back(w);
-  if (args.empty() || args.front() != "pxflow") return {};
-  args.erase(args.begin());
-  return args;
+  return out.substr(from, out.find('\n', from) - from);
+}
+
+// The printed command run by a shell whose PATH is empty: it must name pxflow by its path.
+pxflow::test::RunResult paste_without_path(const std::string& command) {
+  return run_program("/bin/sh", {"-c", "PATH=; export PATH; " + command});
 }
 
 }  // namespace
@@ -297,8 +336,10 @@ TEST_CASE("a planted half-pixel bug: the stage in words and a reproducer that sh
   const auto theirs = printed_command(r.out, " reproducer against: ");
   REQUIRE(!mine.empty());
   REQUIRE(!theirs.empty());
-  const auto a = run_program(PXFLOW_WITH_TEST_ROWS, mine);
-  const auto b = run_program(PXFLOW_WITH_TEST_ROWS, theirs);
+  // The commands name the binary that ran, by its absolute path: they run with no PATH at all.
+  CHECK(mine.rfind(std::filesystem::canonical(PXFLOW_WITH_TEST_ROWS).string() + " flow ", 0) == 0);
+  const auto a = paste_without_path(mine);
+  const auto b = paste_without_path(theirs);
   INFO(a.err << b.err);
   REQUIRE(a.exit_code == 0);
   REQUIRE(b.exit_code == 0);

@@ -124,12 +124,13 @@ TEST_CASE("shard: the fixed corpus splits too, with skips, n/a and a required ba
                        5, 1);
   require_same_results(whole, merged);
   CHECK(whole["campaign"]["kind"] == "fixed-corpus");
-  // 16 generated cases and 22 limit cases (check_limits.hpp) of the three rows that opened.
-  CHECK(whole["campaign"]["cases"] == 38);
-  CHECK(whole["backends"][2]["not_applicable"] == 13);  // test-small-only above 64x64
+  // 16 generated cases and the limit cases (check_limits.hpp) of the three rows that opened:
+  // SPEC's corners and each row's own edges and radius sweep.
+  CHECK(whole["campaign"]["cases"] == 94);
+  CHECK(whole["backends"][2]["not_applicable"] == 11);  // test-small-only above 64x64
   CHECK(whole["backends"][3]["failures"].size() == 1);  // "required but cannot run", once
   CHECK(whole["backends"][3]["failed"] == 0);           // no case ran ...
-  CHECK(whole["failed"].get<long>() >= 38);             // ... but all 38 count as failed
+  CHECK(whole["failed"].get<long>() >= 65);             // ... but all its 65 count as failed
   CHECK(merged["merged_from"].size() == 5);
 
   // Without the requirement the unavailable backend is skipped in every shard: skipped merged.
@@ -137,19 +138,19 @@ TEST_CASE("shard: the fixed corpus splits too, with skips, n/a and a required ba
   const auto [w2, m2] = whole_and_merged(
       dir2, {"--backends", "ref-local,test-unavailable", "--generated-only"}, 2, 0);
   require_same_results(w2, m2);
-  CHECK(w2["skipped"] == 34);  // 16 generated cases and 18 limit cases
+  CHECK(w2["skipped"] == 65);  // 16 generated cases and its 49 limit cases
   CHECK(m2["backends"][1]["state"] == "skipped");
 }
 
 TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the campaign", "[shard]") {
   TempDir dir;
-  // The generated corpus is 4 cases per setting, then 20 limit cases: of 7 shards of these 36
-  // cases, shard 3/7 holds cases 10..14, the 320x240 and 640x480 ones, n/a for test-small-only.
+  // The generated corpus is 4 cases per setting, then 46 limit cases: of 12 shards of these 62
+  // cases, shard 3/12 holds cases 10..14, 320x240 and 640x480 ones, n/a for test-small-only.
   std::vector<std::string> merge = {"merge", "--json", dir.path("m.json")};
-  for (int k = 1; k <= 7; ++k) {
+  for (int k = 1; k <= 12; ++k) {
     const std::string file = dir.path(numbered_json("s", k));
     const RunResult r = pxflow_run({"check", "--backend", "test-small-only", "--generated-only",
-                                    "--shard", std::to_string(k) + "/7", "--json", file});
+                                    "--shard", std::to_string(k) + "/12", "--json", file});
     INFO(r.out);
     CHECK(r.exit_code == 0);
     const json j = read(file);
@@ -160,7 +161,7 @@ TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the camp
   }
   const RunResult m = pxflow_run(merge);
   CHECK(m.exit_code == 0);
-  CHECK(read(dir.path("m.json"))["passed"] == 25);
+  CHECK(read(dir.path("m.json"))["passed"] == 51);
   // A campaign in which no shard compared anything tested nothing: merge exits 1.
   std::vector<std::string> skipped = {"merge", "--json", "-"};
   for (int k = 1; k <= 2; ++k) {
@@ -272,8 +273,8 @@ TEST_CASE("merge: the merged file is a check file pxflow report accepts", "[shar
                                   "--no-accuracy", "--backends", "ref-original"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 0);
-  // 16 generated and 18 limit cases.
-  CHECK(slurp(dir.path("report/report.md")).find("34 cases (334 frame pairs)") !=
+  // 16 generated and 49 limit cases.
+  CHECK(slurp(dir.path("report/report.md")).find("65 cases (373 frame pairs)") !=
         std::string::npos);
 }
 
@@ -358,8 +359,8 @@ TEST_CASE("check: progress counts the fixed corpus against its total, the summar
   CHECK(r.exit_code == 0);
   // 16 generated cases of 300 pairs, 49 limit cases of 65 (check_limits.hpp: SPEC's corners,
   // ref-local's strips and its radius sweep S = 1..31).
-  CHECK(r.err.find("check: 1 of 65 cases, 96 of 365 pairs") != std::string::npos);
-  CHECK(r.out.find("65 cases, 365 pairs in ") != std::string::npos);
+  CHECK(r.err.find("check: 1 of 65 cases, 96 of 373 pairs") != std::string::npos);
+  CHECK(r.out.find("65 cases, 373 pairs in ") != std::string::npos);
   const RunResult s = pxflow_run(
       {"check", "--backend", "ref-local", "--cases", "600", "--shard", "2/2", "--progress"});
   CHECK(s.exit_code == 0);
@@ -378,7 +379,7 @@ TEST_CASE("check names the implementation the cpu row dispatched to", "[shard]")
   CHECK(!isa.empty());
   CHECK(isa != "cpu");           // one of the ISA rows: swar, sse2, ..., avx512bw
   CHECK(b["device"] == "host");  // as flow --json says it
-  CHECK(r.err.find("passed          34     334     0") != std::string::npos);  // 18 limit cases
+  CHECK(r.err.find("passed          65     373     0") != std::string::npos);  // 49 limit cases
   CHECK(r.err.find("s  " + isa + "\n") != std::string::npos);  // the summary's "runs as" column
 }
 #endif
