@@ -87,9 +87,9 @@ def all_mutants(source, families=None):
     return result
 
 
-def select(source, seed, per_family, families):
+def select(source, seed, per_family, families, ops=operators.DEFAULT_OPERATORS):
     """per_family mutants of each family, seeded: operators taken in turn, so that the rare
-    ones (min/max, ==) are drawn as well as the many constants."""
+    ones (min/max, ==) are drawn as well as the many constants. Only the operators `ops`."""
     chosen = []
     by_path = all_mutants(source, families)
     for family in families:
@@ -97,7 +97,8 @@ def select(source, seed, per_family, families):
         for t in TARGETS:
             if t.family == family:
                 for m in by_path[t.path][1]:
-                    pool.setdefault(m.op, []).append(m)
+                    if m.op in ops:
+                        pool.setdefault(m.op, []).append(m)
         rng = random.Random(f"{seed}:{family}")
         queues = []
         for op in sorted(pool):
@@ -383,7 +384,8 @@ def command_run(args):
         chosen, by_path = chosen_only(args.source, args.only)
         families = sorted({target_of(m.path).family for m in chosen})
     else:
-        chosen, by_path = select(args.source, args.seed, args.per_family, families)
+        chosen, by_path = select(args.source, args.seed, args.per_family, families,
+                                 chosen_operators(args))
     equivalents, undetectable = load_equivalents(), load_equivalents(UNDETECTABLE)
     if args.sanitizer_build == "auto":
         auto = os.path.join(args.source, "build-sanitize")
@@ -398,6 +400,7 @@ def command_run(args):
     signal.signal(signal.SIGTERM, on_term)
     results, started = [], time.time()
     meta = {"seed": args.seed, "per_family": args.per_family, "families": families,
+            "operators": list(chosen_operators(args)) if not args.only else None,
             "command": " ".join(["tests/mutation/mutate.py"] + sys.argv[1:]),
             "only": args.only, "sanitizer_build": args.sanitizer_build}
     sanitizer = Sanitizer(args, log)
@@ -442,16 +445,30 @@ def command_report(args):
                 r["status"], r["detail"] = "undetectable", "reviewed: " + undetectable[r["id"]]
             else:
                 r["status"], r["detail"] = "survived", ""
-    keys = ("seed", "per_family", "families", "command", "baseline", "only", "sanitizer_build")
+    keys = ("seed", "per_family", "families", "operators", "command", "baseline", "only",
+            "sanitizer_build")
     meta = {k: doc[k] for k in keys if k in doc}
     report.write(args.out, meta, doc["mutants"], doc["seconds"])
     print(open(os.path.join(args.out, "results.md"), encoding="utf-8").read().split("\n## ")[0])
     return 0
 
 
+def chosen_operators(args):
+    """--operators: default (the reported campaigns'), memory, all, or a comma-separated list."""
+    named = {"default": operators.DEFAULT_OPERATORS, "memory": operators.MEMORY_OPERATORS,
+             "all": operators.OPERATORS}
+    ops = named.get(args.operators) or tuple(args.operators.split(","))
+    unknown = [op for op in ops if op not in operators.OPERATORS]
+    if unknown:
+        raise SystemExit(f"mutate.py: error: --operators: unknown {', '.join(unknown)} (known: "
+                         f"default, memory, all, {', '.join(operators.OPERATORS)})")
+    return ops
+
+
 def command_list(args):
     families = args.families.split(",") if args.families else sorted(FAMILIES)
-    chosen, by_path = select(args.source, args.seed, args.per_family, families)
+    chosen, by_path = select(args.source, args.seed, args.per_family, families,
+                             chosen_operators(args))
     for m in chosen:
         print(m.id)
         print(m.diff(by_path[m.path][0]))
@@ -467,6 +484,9 @@ def main():
         p.add_argument("--per-family", type=int, default=40)
         p.add_argument("--families", default="", help="comma-separated (default: all): "
                        + ",".join(sorted(FAMILIES)))
+        p.add_argument("--operators", default="default",
+                       help="default (those of the reported campaigns), memory (a length, a bound "
+                       "or a size's term one off: out-of-bounds accesses), all, or a list")
         p.add_argument("--source", default=SOURCE)
         p.add_argument("--build", default=os.path.join(SOURCE, "build"))
     run = sub.choices["run"]

@@ -109,6 +109,9 @@ _SWAPS = (
     ("acc-drop", r" (\+=|-=|\|=|&=|\^=) ", {"+=": "=", "-=": "=", "|=": "=", "&=": "=", "^=": "="}),
     ("acc-swap", r" (\+=|-=) ", {"+=": "-=", "-=": "+="}),
     ("incdec", r"(\+\+|--)", {"++": "--", "--": "++"}),
+    # A product for a quotient (a width of `2 / radius` for `2 * radius`): clang-format spaces a
+    # binary `*`, never a pointer's.
+    ("muldiv", r" (\*|/) ", {"*": "/", "/": "*"}),
     # min(, std::min(, _mm_min_epu16(, GAP8_ASM_PV_MINU_B(, gap8_pv_minu_b(: not min_sad.
     ("minmax", r"(?<![A-Za-z0-9])(min|max|minu|maxu|MINU|MAXU)(?=(_ep[iu]\d+|_[bB])?\s*\()",
      {"min": "max", "max": "min", "minu": "maxu", "maxu": "minu", "MINU": "MAXU", "MAXU": "MINU"}),
@@ -137,6 +140,15 @@ def _literal_mutants(path, text, masked):
             else:
                 repl = str(new)
             yield m.start(1), m.end(1), repl, op
+
+
+# A literal term added to or taken from a size, a bound or an index: `row_bytes + 10` -> `row_bytes`.
+_TERM = re.compile(r" [+-] (0[xX][0-9a-fA-F]+|[0-9]+)[uUlL]*(?![\w.])")
+
+
+def _term_mutants(masked):
+    for m in _TERM.finditer(masked):
+        yield m.start(), m.end(), "", "term-drop"
 
 
 def _statement_mutants(text, masked):
@@ -178,6 +190,7 @@ def mutants(path, text):
         for m in re.finditer(pattern, masked):
             found.append((m.start(1), m.end(1), table[m.group(1)], op))
     found.extend(_literal_mutants(path, text, masked))
+    found.extend(_term_mutants(masked))
     found.extend(_statement_mutants(text, masked))
     found.extend(_loop_mutants(masked))
     result, seen = [], set()
@@ -192,4 +205,10 @@ def mutants(path, text):
 
 
 OPERATORS = ("arith", "rel", "eq", "logic", "bit", "shift", "acc-drop", "acc-swap", "incdec",
-             "minmax", "const+1", "const-1", "stmt-del", "loop+1", "loop-1")
+             "minmax", "const+1", "const-1", "stmt-del", "loop+1", "loop-1", "term-drop", "muldiv")
+# What a campaign draws from unless told otherwise (`--operators`): the operators of the
+# campaigns docs/harness.md reports, so that a seed draws the same mutants as it did there.
+DEFAULT_OPERATORS = OPERATORS[:15]
+# Mutants that make a kernel read or write out of bounds more often than they change a result: a
+# length or a bound one off, a term of a size dropped, a size's product turned into a quotient.
+MEMORY_OPERATORS = ("const+1", "const-1", "rel", "loop+1", "term-drop", "muldiv")
