@@ -44,7 +44,6 @@ class Session {
                   const DeviceWork* work = nullptr);
 
   const std::string& label() const { return label_; }
-  double timeout_seconds() const { return timeout_.count(); }
 
   // A failure line: "<label>: <message>: <what>; <hint>".
   [[noreturn]] void fail(const std::string& message, const std::string& what,

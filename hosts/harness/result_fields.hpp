@@ -59,13 +59,6 @@ void fields_from_json(std::span<const ResultField<T>> fields, const Json& j, T& 
 }
 
 template <class T>
-std::vector<std::string> field_keys(std::span<const ResultField<T>> fields) {
-  std::vector<std::string> keys;
-  for (const ResultField<T>& f : fields) keys.push_back(f.key);
-  return keys;
-}
-
-template <class T>
 std::vector<std::string> csv_columns(std::span<const ResultField<T>> fields) {
   std::vector<std::string> columns;
   for (const ResultField<T>& f : fields)

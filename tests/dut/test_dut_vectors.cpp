@@ -8,6 +8,7 @@
 #include <set>
 
 #include "run_program.hpp"
+#include "sample_data.hpp"
 
 using namespace pxflow::test;
 
@@ -138,7 +139,7 @@ TEST_CASE("the protocol page names every PXV_ macro of the C header", "[dut][vec
 TEST_CASE("pxflow vectors --from a list of real pairs: flow bits equal pxflow flow's",
           "[dut][vectors]") {
   TempDir d;
-  const std::string data = "/usr/share/doc/opencv-doc/examples/data/";
+  const std::string data = std::string(pxflow::kSampleDataDir) + "/";
   d.write("list.txt", data + "rubberwhale1.png " + data + "rubberwhale2.png\n");
   // The vectors' own folder: a folder of other files (the list) is refused (owned_folder.hpp).
   const auto r = run_pxflow({"vectors", "--out", d.path("vec"), "--from", d.path("list.txt")});
