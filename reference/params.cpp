@@ -123,7 +123,7 @@ void validate(const Params& p) {
     throw InputError("frame " + std::to_string(p.width) + "x" + std::to_string(p.height) +
                      " exceeds the limit of " + std::to_string(kMaxFramePixels) + " pixels");
   // One POI needs lo < hi on each axis: lo = S+1, hi = side-(S+1)-T (SPEC §2).
-  const int min_side = 2 * (p.search_radius + 1) + p.tile + 1;
+  const int min_side = min_frame_side(p.search_radius);
   if (p.width < min_side || p.height < min_side)
     throw InputError("frame " + std::to_string(p.width) + "x" + std::to_string(p.height) +
                      " is too small for search_radius " + std::to_string(p.search_radius) +

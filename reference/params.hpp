@@ -55,6 +55,9 @@ const std::vector<std::string>& param_keys();
 // validate(), after all overrides are in.
 void set_param(Params& p, std::string_view key, std::string_view value);
 
+// The smallest frame side with one POI at radius S (SPEC §2: lo = S+1 < hi = side-(S+1)-T).
+constexpr int min_frame_side(int search_radius) { return 2 * (search_radius + 1) + kTile + 1; }
+
 // Throws InputError with one line naming the offending parameter when p is not a valid
 // combination (SPEC §1): T != 8, S outside 1..31, B outside 1..255, thresholds outside u16,
 // a frame too small for one POI, or a frame beyond the size limits above.

@@ -13,9 +13,6 @@ namespace {
 
 constexpr int kMiddleRadius = 12;  // see spec_corners()
 
-// SPEC §2: one POI needs lo < hi on each axis (params.cpp's validate() says the same).
-int min_side(int search_radius) { return 2 * (search_radius + 1) + kTile + 1; }
-
 bool valid(const Params& p) {
   try {
     validate(p);
@@ -58,17 +55,17 @@ std::vector<LimitProbe> spec_corners() {
   std::vector<LimitProbe> corners = {
       {"smallest-frame",
        {},
-       at(min_side(kMinSearchRadius), min_side(kMinSearchRadius), kMinSearchRadius, B)},
-      {"smallest-frame", {}, at(min_side(S), min_side(S), S, B)},
+       at(min_frame_side(kMinSearchRadius), min_frame_side(kMinSearchRadius), kMinSearchRadius, B)},
+      {"smallest-frame", {}, at(min_frame_side(S), min_frame_side(S), S, B)},
       {"largest-radius-smallest-frame",
        {},
-       at(min_side(kMaxSearchRadius), min_side(kMaxSearchRadius), kMaxSearchRadius, B)},
+       at(min_frame_side(kMaxSearchRadius), min_frame_side(kMaxSearchRadius), kMaxSearchRadius, B)},
       // A radius between the default and 31 whose window rows (2S+10 = 34 bytes) take three
       // 16-byte copies and whose SIMD row reads (avx2: 41 bytes) pass the right edge: the CPU
       // rows copy such windows (kernels/cpu/poi_loop.cpp), which neither 4 nor 31 makes them do.
       {"middle-radius-smallest-frame",
        {},
-       at(min_side(kMiddleRadius), min_side(kMiddleRadius), kMiddleRadius, B)},
+       at(min_frame_side(kMiddleRadius), min_frame_side(kMiddleRadius), kMiddleRadius, B)},
       {"odd-size", {}, at(65, 64, S, B)},  // an odd width alone, an odd height alone, both
       {"odd-size", {}, at(64, 63, S, B)},
       {"odd-size", {}, at(63, 65, S, B)},
@@ -95,7 +92,7 @@ std::vector<LimitProbe> spec_corners() {
 void row_probes(const LimitRow& r, std::vector<LimitProbe>& out) {
   auto ok = [&](const Params& p) { return valid(p) && r.unsupported(p).empty(); };
   const Params d = profile(kDefaultProfile);
-  const int S = d.search_radius, B = d.blocks, m = min_side(S);
+  const int S = d.search_radius, B = d.blocks, m = min_frame_side(S);
   auto affordable = [](const Params& p) {
     return std::int64_t{p.width} * p.height <= kAffordableLimitPixels;
   };
@@ -109,13 +106,13 @@ void row_probes(const LimitRow& r, std::vector<LimitProbe>& out) {
     add("widest", at(*w, m, S, B));
   if (auto h = largest_accepted(m, kMaxFrameSide, [&](int h) { return ok(at(m, h, S, B)); }))
     add("tallest", at(m, *h, S, B));
-  int side = min_side(kMaxSearchRadius), grid = B;
+  int side = min_frame_side(kMaxSearchRadius), grid = B;
   if (!ok(at(side, side, kMinSearchRadius, grid))) {
     grid = kMinBlocks;
-    side = largest_accepted(min_side(kMinSearchRadius), side, [&](int n) {
+    side = largest_accepted(min_frame_side(kMinSearchRadius), side, [&](int n) {
              return ok(at(n, n, kMinSearchRadius, grid));
            }).value_or(0);
-    side -= side % 2 == 0 && side > min_side(kMinSearchRadius);
+    side -= side % 2 == 0 && side > min_frame_side(kMinSearchRadius);
   }
   if (auto s = largest_accepted(kMinSearchRadius, kMaxSearchRadius,
                                 [&](int s) { return ok(at(side, side, s, grid)); }))

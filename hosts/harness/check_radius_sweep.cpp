@@ -21,7 +21,7 @@ std::vector<Offset> sweep_offsets(int S) {
 }
 
 Params sweep_params(int S, int g) {
-  int side = g == 1 ? 2 * S + 11 : 2 * S + 10 + g * (2 * S + 9);
+  int side = g == 1 ? min_frame_side(S) : 2 * S + 10 + g * (2 * S + 9);
   if (g > 1 && side % 4 == 0) ++side;  // (hi - lo) / g stays 2S + 9: the same grid
   Params p = profile(kDefaultProfile);
   p.width = p.height = side;

@@ -85,7 +85,7 @@ OwnedPair crop_pair(const OwnedPair& o, int x0, int y0, int w, int h) {
 // 64x64 (a kernel may take another path on a frame that small), else the pair as it is.
 std::optional<Candidate> cropped(const OwnedPair& pair, const Params& p, const Poi& at,
                                  Shrinker& s) {
-  const int S = p.search_radius, smallest = 2 * S + 11;
+  const int S = p.search_radius, smallest = min_frame_side(S);
   std::vector<std::pair<int, int>> sizes = {{smallest, smallest}};
   const int w64 = std::max(64, smallest);
   if (w64 > smallest && (w64 < pair.width || w64 < pair.height))
