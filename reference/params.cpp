@@ -102,6 +102,23 @@ void set_param(Params& p, std::string_view key, std::string_view value) {
                    ")");
 }
 
+std::string_view set_param_assignment(Params& p, std::string_view assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string_view::npos || eq == 0)
+    throw InputError("--set '" + std::string(assignment) +
+                     "': expected KEY=VALUE, e.g. --set search_radius=8");
+  const std::string_view key = assignment.substr(0, eq);
+  set_param(p, key, assignment.substr(eq + 1));
+  return key;
+}
+
+void require_no_gyro_comp(const Params& p) {
+  if (p.gyro_comp)
+    throw InputError(
+        "--set gyro_comp=1: pxflow takes no gyro rates, so the compensation would have nothing "
+        "to add; leave gyro_comp at 0");
+}
+
 void validate(const Params& p) {
   auto range = [](const char* name, int v, int lo, int hi) {
     if (v < lo || v > hi)

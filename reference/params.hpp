@@ -55,6 +55,13 @@ const std::vector<std::string>& param_keys();
 // validate(), after all overrides are in.
 void set_param(Params& p, std::string_view key, std::string_view value);
 
+// One `--set KEY=VALUE`: set_param on its two sides; InputError naming it when it is not
+// KEY=VALUE. Returns the key.
+std::string_view set_param_assignment(Params& p, std::string_view assignment);
+
+// pxflow's commands take no gyro rates, so GC on would add nothing: InputError when p.gyro_comp.
+void require_no_gyro_comp(const Params& p);
+
 // The smallest frame side with one POI at radius S (SPEC §2: lo = S+1 < hi = side-(S+1)-T).
 constexpr int min_frame_side(int search_radius) { return 2 * (search_radius + 1) + kTile + 1; }
 

@@ -24,11 +24,7 @@ Params ProblemOptions::resolve(std::optional<std::pair<int, int>> frame) const {
   Params p = pxflow::profile(profile);
   bool width_set = false, height_set = false;
   for (const auto& kv : sets) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw InputError("--set '" + kv + "': expected KEY=VALUE, e.g. --set search_radius=8");
-    const std::string_view key(kv.data(), eq);
-    set_param(p, key, std::string_view(kv).substr(eq + 1));
+    const std::string_view key = set_param_assignment(p, kv);
     width_set |= key == "width";
     height_set |= key == "height";
   }
@@ -41,10 +37,7 @@ Params ProblemOptions::resolve(std::optional<std::pair<int, int>> frame) const {
     p.width = w;
     p.height = h;
   }
-  if (p.gyro_comp)
-    throw InputError(
-        "--set gyro_comp=1: pxflow takes no gyro rates, so the compensation would "
-        "have nothing to add; leave gyro_comp at 0");
+  require_no_gyro_comp(p);
   validate(p);
   return p;
 }

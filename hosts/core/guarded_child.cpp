@@ -275,9 +275,13 @@ std::string own_executable() {
 
 std::string own_command_name() {
   namespace fs = std::filesystem;
+  fs::path self;
+  try {
+    self = own_executable();
+  } catch (const SpawnError&) {
+    return "pxflow";
+  }
   std::error_code e;
-  const fs::path self = fs::read_symlink("/proc/self/exe", e);
-  if (e) return "pxflow";
   const std::string argv0 = program_invocation_name;  // glibc's argv[0], as started
   const char* path = std::getenv("PATH");
   if (argv0.empty() || argv0.find('/') != std::string::npos || !path) return self.string();

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "errors.hpp"
+#include "fnv1a.hpp"
 #include "result_json.hpp"
 
 namespace pxflow {
@@ -13,13 +14,10 @@ namespace {
 // A fuzz campaign's batch: 256 pairs, the last one what is left.
 constexpr long kFuzzBatch = 256;
 
-// FNV-1a, 64 bits: a fingerprint of the inputs, not a defence against forgery.
-class Fnv1a {
+// A fingerprint of the inputs (fnv1a.hpp).
+class CaseFingerprint : public Fnv1a {
  public:
-  void add(const void* data, std::size_t n) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) h_ = (h_ ^ p[i]) * 1099511628211ull;
-  }
+  using Fnv1a::add;
   void add(const std::string& s) { add(s.data(), s.size() + 1); }  // with its '\0'
   void add(const CheckCase& c) {
     add(c.name), add(c.setting), add(params_json(c.params).dump());
@@ -29,14 +27,6 @@ class Fnv1a {
       add(p.prev.data(), p.prev.size()), add(p.next.data(), p.next.size());
     }
   }
-  std::string hex() const {
-    char b[17];
-    std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(h_));
-    return b;
-  }
-
- private:
-  std::uint64_t h_ = 14695981039346656037ull;
 };
 
 void note_setting(std::vector<std::string>& settings, const std::string& s) {
@@ -68,7 +58,7 @@ CaseRange shard_range(long cases, const Shard& s) {
 }
 
 Campaign::Campaign(const CampaignOptions& o) : fuzz_pairs_(o.fuzz_pairs), seed_(o.corpus.seed) {
-  Fnv1a h;
+  CaseFingerprint h;
   if (fuzz()) {
     fuzz_settings_ = check_settings(o.corpus.params, &dropped_);
     fuzz_settings_.resize(std::min<std::size_t>(fuzz_settings_.size(), 2));

@@ -165,19 +165,12 @@ std::optional<Params> ParamOverride::apply(const Params& p, std::string* why_not
     q.width = p.width, q.height = p.height;
   }
   for (const std::string& kv : sets) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw InputError("--set '" + kv + "': expected KEY=VALUE, e.g. --set search_radius=20");
-    const std::string key = kv.substr(0, eq);
+    const std::string_view key = set_param_assignment(q, kv);
     if (key == "width" || key == "height")
       throw InputError("--set " + kv + ": the corpus's cases keep their own frame sizes; " +
                        "check sets every parameter but width and height");
-    set_param(q, key, std::string_view(kv).substr(eq + 1));
   }
-  if (q.gyro_comp)
-    throw InputError(
-        "--set gyro_comp=1: pxflow takes no gyro rates, so the compensation would have nothing "
-        "to add; leave gyro_comp at 0");
+  require_no_gyro_comp(q);
   try {
     validate(q);
   } catch (const InputError& e) {

@@ -4,6 +4,7 @@
 
 #include "check_radius_sweep.hpp"
 #include "errors.hpp"
+#include "fnv1a.hpp"
 #include "grid.hpp"
 #include "result_json.hpp"
 #include "synthetic.hpp"
@@ -189,9 +190,10 @@ std::vector<CheckCase> limit_cases(std::span<const LimitRow> rows, std::uint64_t
     CheckCase c{"limits/" + probe.kind, setting, p, {}, {}};
     if (!probe.every_row) c.rows = probe.rows;
     // Seeds from the case itself, apart from the random cases' seeds (seed * 1000003 + n).
-    std::uint64_t s = seed * 1000003u + 7000000u;
-    for (char ch : c.name + " " + setting)
-      s = (s ^ static_cast<unsigned char>(ch)) * 1099511628211u;
+    Fnv1a hash(seed * 1000003u + 7000000u);
+    const std::string label = c.name + " " + setting;
+    hash.add(label.data(), label.size());
+    const std::uint64_t s = hash.value();
     if (probe.sweep_pairs) {
       const auto offsets = sweep_offsets(p.search_radius);
       const std::size_t per_pair = poi_count(p);
