@@ -11,6 +11,10 @@
 #     <prefix>_<name>_CEILING  the psadbw width it unlocks (xmm, ymm, zmm) or none
 #     <prefix>_ALL             every name in the table, on any architecture
 # A row this cannot read is a configure error, never a silently dropped ISA.
+
+# The portable part of every CPU kernel, built for every architecture (kernels/cpu and the NEON
+# cross build list it from here). Before the guard: a variable is set in each includer's scope.
+set(PXFLOW_CPU_PORTABLE_SOURCES poi_loop.cpp window_guard.cpp isa_table.cpp)
 include_guard(GLOBAL)
 
 function(pxflow_cpu_arch out)

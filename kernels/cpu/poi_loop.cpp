@@ -1,24 +1,16 @@
 // The portable part of every CPU kernel: the walk over the POI grid, the feature test, the search
 // window (copied only where a kernel's wide loads would leave the frame) and the record.
+
 #include <cstring>
-#include <string>
 
 #include "cpu_kernel.hpp"
-#include "errors.hpp"
 #include "grid.hpp"
 #include "poi_steps.hpp"
 #include "primitives.hpp"
+#include "window_guard.hpp"
 
 namespace pxflow::cpu {
 namespace {
-
-constexpr int kMaxWindowSide = 2 * kMaxSearchRadius + 10;  // SPEC §1
-constexpr int kMaxRowBytes = 128;  // the widest row_bytes() of any kernel, rounded up
-
-// A zero-padded copy of a search window for POIs near the right edge of the frame.
-struct WindowCopy {
-  alignas(64) std::uint8_t bytes[kMaxWindowSide * kMaxRowBytes];
-};
 
 // Copies n >= 8 bytes in fixed-size chunks (the last one overlapping): a variable-length memcpy
 // call per row would cost more than the search of a small window.
@@ -39,12 +31,12 @@ void copy_row(std::uint8_t* dst, const std::uint8_t* src, int n) {
   }
 }
 
-Window copy_window(const FrameView& next, int x0, int y0, int side, int row_bytes,
-                   WindowCopy& copy) {
-  const int stride = (row_bytes + 15) / 16 * 16;
-  std::memset(copy.bytes, 0, static_cast<std::size_t>(side) * stride);
-  for (int r = 0; r < side; ++r) copy_row(copy.bytes + r * stride, next.row(y0 + r) + x0, side);
-  return {copy.bytes, stride};
+// A zero-padded copy of the window whose top-left pixel is next(x0, y0), for POIs whose kernel
+// reads would leave the frame on the right; the guard bytes around it are checked after the copy.
+Window copy_window(const FrameView& next, int x0, int y0, WindowGuard& copy) {
+  for (int r = 0; r < copy.side(); ++r) copy_row(copy.row(r), next.row(y0 + r) + x0, copy.side());
+  copy.check(y0);
+  return {copy.row(0), copy.stride()};
 }
 
 // SPEC §3 step 1 in the firmware's shape: three USAD8 of vertically adjacent 4-byte rows and
@@ -71,7 +63,7 @@ struct PoiContext {
   const Params& p;
   int row_bytes;
   OpCounts* counts;
-  WindowCopy& copy;
+  WindowGuard& copy;
 };
 
 void run_poi(const PoiContext& ctx, int x, int y, PoiRecord& rec) {
@@ -89,8 +81,7 @@ void run_poi(const PoiContext& ctx, int x, int y, PoiRecord& rec) {
   }
   const FrameView& next = ctx.pair.next;
   Window w{next.row(y - S - 1) + (x - S - 1), next.stride};
-  if (x - S - 1 + ctx.row_bytes > next.width)
-    w = copy_window(next, x - S - 1, y - S - 1, 2 * S + 10, ctx.row_bytes, ctx.copy);
+  if (x - S - 1 + ctx.row_bytes > next.width) w = copy_window(next, x - S - 1, y - S - 1, ctx.copy);
   const Block block{ctx.pair.prev.row(y) + x, ctx.pair.prev.stride};
   const BlockMatch m = ctx.kernel.search(block, w, S, ctx.counts);
   rec.dx = static_cast<std::int8_t>(m.dx);
@@ -113,9 +104,7 @@ void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, i
                    int end_row, std::span<PoiRecord> out, OpCounts& counts) {
   OpCounts* charged = k.counts_ops ? &counts : nullptr;
   if (charged) counts.counted = true;
-  if (k.row_bytes(p.search_radius) > kMaxRowBytes)
-    throw BackendError(std::string(k.name) + ": row reads exceed the window copy (internal)");
-  WindowCopy copy;
+  WindowGuard copy(2 * p.search_radius + 10, k.row_bytes(p.search_radius));
   const PoiContext ctx{k, pair, p, k.row_bytes(p.search_radius), charged, copy};
   const std::vector<int> xs = grid_axis(p.width, p);
   const std::vector<int> ys = grid_axis(p.height, p);

@@ -40,8 +40,10 @@ list(TRANSFORM reference_sources PREPEND ${src}/reference/)
 set(neon_cross_sources ${reference_sources}
   ${src}/hosts/corpus/synthetic.cpp
   ${src}/hosts/harness/exactness.cpp ${src}/hosts/harness/record_diff.cpp
-  ${src}/kernels/cpu/poi_loop.cpp ${src}/kernels/cpu/isa_table.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_corpus.cpp ${CMAKE_CURRENT_SOURCE_DIR}/neon_cross_check.cpp)
+foreach(name IN LISTS PXFLOW_CPU_PORTABLE_SOURCES)
+  list(APPEND neon_cross_sources ${src}/kernels/cpu/${name})
+endforeach()
 foreach(name IN LISTS cross_NAMES)
   list(APPEND neon_cross_sources ${src}/kernels/cpu/${name}.cpp)
 endforeach()

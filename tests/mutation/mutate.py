@@ -13,18 +13,18 @@ whose compiled code is byte-identical to the unmutated build's is equivalent wit
 `pxflow check --backends ref-original,ROWS --require ROWS` on the default corpus, stopped at its
 first FAIL line: killed (a FAIL line, a non-zero exit, a crash or a hang), survived (exit 0), or
 build-failed. A survivor listed in equivalent.txt (reviewed by a human) counts as equivalent.
-Any other survivor of host code (targets.Family.host_code) is rebuilt in the ASan+UBSan build
-(--sanitizer-build, configured like CI's sanitizer stage) and checked the same way there: killed
-(sanitizer). A survivor of the OpenCL C kernels is checked the same way with the OpenCL rows in
-Oclgrind (tests/opencl/oclgrind_check.sh), when it is installed: killed (Oclgrind). A survivor still standing and listed in undetectable.txt (reviewed: no check can see
-it on this machine) counts as undetectable, never as killed.
+Any other survivor is rerun through the test of .ci/run that runs its family's code under a
+memory checker (targets.Family.memory_test), by ctest as ci/run-tests.sh runs it: for host code
+the ASan+UBSan stage's test, rebuilt in --sanitizer-build (configured like that stage): killed
+(sanitizer); for the OpenCL C kernels the Release stage's Oclgrind test: killed (Oclgrind). So a
+kill names a test CI runs. A survivor still standing and listed in undetectable.txt (reviewed: no
+check can see it on this machine) counts as undetectable, never as killed.
 """
 
 import argparse
 import json
 import os
 import random
-import shutil
 import signal
 import subprocess
 import sys
@@ -45,7 +45,6 @@ UNDETECTABLE = os.path.join(HERE, "undetectable.txt")
 # ci/run-tests.sh's sanitizer stage: the options its tests run with.
 SANITIZER_ENV = {"ASAN_OPTIONS": "detect_leaks=1:abort_on_error=1",
                  "UBSAN_OPTIONS": "print_stacktrace=1:halt_on_error=1"}
-OCLGRIND_CHECK = os.path.join(SOURCE, "tests", "opencl", "oclgrind_check.sh")
 
 
 class Stop(Exception):
@@ -161,14 +160,28 @@ def family_targets(family):
     return list(dict.fromkeys(f.compile_targets + f.link_targets))
 
 
+_RUNNABLE = {}
+
+
+def runnable(build):
+    """The rows `pxflow backends` of this build says this machine can run (an ISA row the CPU
+    lacks, avx512bw on an AVX2 machine, is checked where it can run and skipped here)."""
+    if build not in _RUNNABLE:
+        out = subprocess.run([os.path.join(build, "pxflow"), "backends", "--json", "-"],
+                             stdout=subprocess.PIPE, text=True, check=True).stdout
+        _RUNNABLE[build] = {b["backend"] for b in json.loads(out)["backends"] if b["available"]}
+    return _RUNNABLE[build] | OPTION_ROWS
+
+
 def check_command(build, target):
     family = FAMILIES[target.family]
     rows = ",".join(target.rows)
+    required = ",".join(r for r in target.rows if r in runnable(build))
     extra = [a.format(build=os.path.abspath(build)) for a in family.check_args]
     # --no-repro: the verdict is the first FAIL line; a reproducer would only litter the working
     # folder (the source tree) with pxflow-repro-N folders.
     return [os.path.join(build, "pxflow"), "check", *extra, "--backends", "ref-original," + rows,
-            "--require", rows, "--no-repro"]
+            "--require", required, "--no-repro"]
 
 
 def run_check(cmd, timeout, env=None):
@@ -271,107 +284,94 @@ def run_mutant(args, m, text, artifacts, checks, log):
         write(path, text)
 
 
-class Sanitizer:
-    """The ASan+UBSan pass over survivors of host code: the same check, from --sanitizer-build.
-    Its unmutated check runs once per row group before the first mutant of that group, from the
-    restored tree (every mutant restores its file before the next one starts)."""
+def run_ctest(build, test, timeout, env=None):
+    """(outcome, detail, seconds) of one ctest test of `build`: its first error line names it."""
+    cmd = ["ctest", "--test-dir", build, "-R", f"^{test}$", "--output-on-failure",
+           "--timeout", str(int(timeout))]
+    start = time.monotonic()
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                       errors="replace", env=dict(os.environ, **env) if env else None)
+    seconds = time.monotonic() - start
+    if "No tests were found" in r.stdout:
+        raise SystemExit(f"mutate.py: error: {build} has no test {test} (configure it as CI does)")
+    if r.returncode == 0:
+        return "survived", "", seconds
+    marks = ("FAIL ", "ERROR: AddressSanitizer", "runtime error:", "***Timeout", "Exception:")
+    first = next((ln.strip() for ln in r.stdout.splitlines() if any(k in ln for k in marks)),
+                 r.stdout.strip().splitlines()[-1] if r.stdout.strip() else f"exit {r.returncode}")
+    return "killed", f"{test}: {first}", seconds
+
+
+class CiMemoryTest:
+    """The memory checkers' pass over survivors of the default check: the family's test of .ci/run
+    that runs its code under a memory checker (targets.Family.memory_test), run by ctest exactly
+    as ci/run-tests.sh runs it: from --sanitizer-build with the sanitizer stage's options
+    (killed-sanitizer), or from --build (killed-oclgrind: Oclgrind's test is a Release-stage test).
+    Its unmutated run comes first, once per test, from the restored tree."""
 
     def __init__(self, args, log):
-        self.args, self.log, self.checks, self.built = args, log, {}, set()
+        self.args, self.log, self.base, self.built = args, log, {}, set()
+
+    def _build(self, stage):
+        return self.args.sanitizer_build if stage == "sanitizer" else self.args.build
 
     def applies(self, t):
-        return bool(self.args.sanitizer_build) and FAMILIES[t.family].host_code
+        test = FAMILIES[t.family].memory_test
+        return bool(test) and bool(self._build(test[0]))
 
-    def baseline(self, t):
-        if t.rows not in self.checks:
-            ok, _ = ninja(self.args.sanitizer_build, family_targets(t.family), self.log)
-            outcome, detail, seconds = ("build-failed", "the sanitizer build fails", 0.0)
-            if ok:
-                outcome, detail, seconds = run_check(check_command(self.args.sanitizer_build, t),
-                                                     self.args.max_timeout * 5, SANITIZER_ENV)
-            self.checks[t.rows] = {"ok": outcome == "survived", "detail": detail, "seconds": seconds}
+    def _run(self, t):
+        stage, test = FAMILIES[t.family].memory_test
+        build = self._build(stage)
+        ok, _ = ninja(build, family_targets(t.family), self.log)
+        if stage == "sanitizer":
             self.built.add(t.family)
-            print(f"sanitizer baseline {','.join(t.rows)}: "
-                  f"{'passed' if outcome == 'survived' else detail} ({seconds:.1f} s)", flush=True)
-        return self.checks[t.rows]
+        if not ok:
+            return "build-failed", f"the {stage} build fails", 0.0
+        base = self.base.get(test, {}).get("seconds", 60.0)
+        return run_ctest(build, test, max(300.0, 5 * base), SANITIZER_ENV if stage == "sanitizer" else None)
 
     def run(self, m, text):
-        """(status, detail) of the mutant under ASan+UBSan: killed-sanitizer or survived."""
+        """(status, detail): killed-sanitizer, killed-oclgrind or survived."""
         t = target_of(m.path)
-        base = self.baseline(t)
-        if not base["ok"]:
-            return "survived", "the unmutated sanitizer check fails: " + base["detail"]
+        stage, test = FAMILIES[t.family].memory_test
+        if test not in self.base:
+            outcome, detail, seconds = self._run(t)
+            self.base[test] = {"ok": outcome == "survived", "detail": detail, "seconds": seconds}
+            print(f"{stage} baseline {test}: {'passed' if outcome == 'survived' else detail} "
+                  f"({seconds:.1f} s)", flush=True)
+        if not self.base[test]["ok"]:
+            return "survived", f"the unmutated {test} fails: " + self.base[test]["detail"]
         path = os.path.join(self.args.source, m.path)
         try:
             write(path, m.apply(text))
-            ok, _ = ninja(self.args.sanitizer_build, family_targets(t.family), self.log)
-            if not ok:
-                return "survived", "the sanitizer build fails"
-            timeout = min(self.args.max_timeout * 5, max(60.0, 5 * base["seconds"]))
-            outcome, detail, _ = run_check(check_command(self.args.sanitizer_build, t), timeout,
-                                           SANITIZER_ENV)
+            outcome, detail, _ = self._run(t)
         finally:
             write(path, text)
-        return ("killed-sanitizer", detail) if outcome == "killed" else ("survived", "")
+        if outcome == "build-failed":
+            return "survived", detail
+        status = "killed-sanitizer" if stage == "sanitizer" else "killed-oclgrind"
+        return (status, detail) if outcome == "killed" else ("survived", "")
 
     def restore(self):
         targets = sorted({x for f in self.built for x in family_targets(f)})
-        if targets:
+        if targets and self.args.sanitizer_build:
             ninja(self.args.sanitizer_build, targets, self.log)
+        ninja(self.args.build, ["pxflow"], self.log)
 
 
-class Oclgrind:
-    """The Oclgrind pass over survivors of the OpenCL C kernels: the same check, the whole default
-    corpus, with the OpenCL rows in Oclgrind's memory-checking simulator
-    (tests/opencl/oclgrind_check.sh: any error it reports is a FAIL line). About 6 minutes for
-    both rows; the unmutated check runs once, before the first such survivor."""
-
-    def __init__(self, args, log):
-        self.args, self.log, self.base = args, log, None
-
-    def applies(self, t):
-        return t.family == "opencl" and shutil.which("oclgrind") is not None
-
-    def _command(self, t):
-        cmd = check_command(self.args.build, t)  # [pxflow, "check", options...]
-        return [OCLGRIND_CHECK, cmd[0], *cmd[2:]]
-
-    def run(self, m, text):
-        """(status, detail) of the mutant under Oclgrind: killed-oclgrind or survived."""
-        t = target_of(m.path)
-        targets = family_targets(t.family)
-        if self.base is None:
-            ninja(self.args.build, targets, self.log)
-            outcome, detail, seconds = run_check(self._command(t), 3600)
-            self.base = {"ok": outcome == "survived", "detail": detail, "seconds": seconds}
-            print(f"oclgrind baseline {','.join(t.rows)}: "
-                  f"{'passed' if self.base['ok'] else detail} ({seconds:.1f} s)", flush=True)
-        if not self.base["ok"]:
-            return "survived", "the unmutated check fails under Oclgrind: " + self.base["detail"]
-        path = os.path.join(self.args.source, m.path)
-        try:
-            write(path, m.apply(text))
-            ninja(self.args.build, targets, self.log)
-            outcome, detail, _ = run_check(self._command(t), max(900.0, 3 * self.base["seconds"]))
-        finally:
-            write(path, text)
-            ninja(self.args.build, targets, self.log)
-        return ("killed-oclgrind", detail) if outcome == "killed" else ("survived", "")
-
-
-def classify(args, m, r, text, equivalents, undetectable, checkers):
-    """A survivor of the default check: reviewed equivalent, killed by a memory checker's pass
-    (ASan+UBSan for host code, Oclgrind for OpenCL C), reviewed undetectable here, or survived."""
+def classify(args, m, r, text, equivalents, undetectable, memory):
+    """A survivor of the default check: reviewed equivalent, killed by .ci/run's memory-checker
+    test of its family (ASan+UBSan for host code, Oclgrind for OpenCL C), reviewed undetectable
+    here, or survived."""
     if r["status"] != "survived":
         return r
     if m.id in equivalents:
         return dict(r, status="equivalent", detail="reviewed: " + equivalents[m.id])
-    applicable = [c for c in checkers if c.applies(target_of(m.path))]
-    for checker in applicable:
-        status, detail = checker.run(m, text)
+    if memory.applies(target_of(m.path)):
+        status, detail = memory.run(m, text)
         if status != "survived":
             return dict(r, status=status, detail=detail)
-    if not applicable and not FAMILIES[target_of(m.path).family].host_code:
+    elif not FAMILIES[target_of(m.path).family].memory_test:
         r = dict(r, detail="device code: no memory checker runs it here")
     if m.id in undetectable:
         return dict(r, status="undetectable", detail="reviewed: " + undetectable[m.id])
@@ -403,15 +403,14 @@ def command_run(args):
             "operators": list(chosen_operators(args)) if not args.only else None,
             "command": " ".join(["tests/mutation/mutate.py"] + sys.argv[1:]),
             "only": args.only, "sanitizer_build": args.sanitizer_build}
-    sanitizer = Sanitizer(args, log)
-    checkers = (sanitizer, Oclgrind(args, log))
+    memory = CiMemoryTest(args, log)
     try:
         artifacts, checks = baseline(args, [target_of(p) for p in sorted({m.path for m in chosen})], log)
         meta["baseline"] = {",".join(k): v for k, v in checks.items()}
         for n, m in enumerate(chosen, 1):
             text = by_path[m.path][0]
             r = run_mutant(args, m, text, artifacts, checks, log)
-            r = classify(args, m, r, text, equivalents, undetectable, checkers)
+            r = classify(args, m, r, text, equivalents, undetectable, memory)
             results.append(r)
             print(f"[{n}/{len(chosen)}] {r['status']:12} {m.id}  {r.get('detail', '')[:110]}",
                   flush=True)
@@ -427,7 +426,7 @@ def command_run(args):
         report.write(args.out, meta, results, time.time() - started)
         if not args.no_restore_build:
             ninja(args.build, sorted({x for f in families for x in FAMILIES[f].link_targets}), log)
-            sanitizer.restore()
+            memory.restore()
     return 0
 
 

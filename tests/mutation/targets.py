@@ -24,32 +24,44 @@ class Family:
     link_targets: tuple = ("pxflow",)
     # extra `pxflow check` arguments (the dut reference device is a --dut row).
     check_args: tuple = ()
-    # the mutated code runs in the host process (or the host-built dut reference device), so an
-    # ASan+UBSan build sees its overruns; False for code a device runs (a GPU driver, the GAP8
-    # model's ISS, QEMU), which no host sanitizer instruments.
-    host_code: bool = True
+    # The test of .ci/run (ci/run-tests.sh) that runs the family's code under a memory checker,
+    # as (stage, ctest name): "sanitizer" for its ASan+UBSan stage (host code: the host process
+    # or the host-built dut reference device), "release" for a Release-stage test with its own
+    # checker (Oclgrind for OpenCL C). Empty for code a device runs (a GPU driver, the GAP8
+    # model's ISS, QEMU), which no memory checker here instruments.
+    memory_test: tuple = ()
 
 
 GAP8_ELVES = tuple(f"kernels/gap8/pxflow_gap8_{v}.elf" for v in ("original", "local", "global", "fast"))
 REF_OBJECTS = ("reference/CMakeFiles/pxflow_reference.dir/*.o",)
+# tests/harness/CMakeLists.txt: the reference and CPU rows on the whole default corpus.
+CPU_ROWS_UNDER_ASAN = ("sanitizer", "check_cpu_rows_fixed_corpus")
 
 FAMILIES = {
     f.name: f
     for f in (
         Family("cpu", "cpu", ("kernels/cpu/libpxflow_cpu_kernels.a",),
-               ("kernels/cpu/CMakeFiles/pxflow_cpu_kernels.dir/*.o",)),
-        Family("ref-original", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS),
-        Family("ref-local", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS),
-        Family("ref-global", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS),
-        Family("opencl", "opencl", ("pxflow",), (), host_code=False),
+               ("kernels/cpu/CMakeFiles/pxflow_cpu_kernels.dir/*.o",),
+               memory_test=CPU_ROWS_UNDER_ASAN),
+        Family("ref-original", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS,
+               memory_test=CPU_ROWS_UNDER_ASAN),
+        Family("ref-local", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS,
+               memory_test=CPU_ROWS_UNDER_ASAN),
+        Family("ref-global", "reference", ("reference/libpxflow_reference.a",), REF_OBJECTS,
+               memory_test=CPU_ROWS_UNDER_ASAN),
+        # tests/opencl/CMakeLists.txt: both OpenCL rows under Oclgrind, in the Release stage.
+        Family("opencl", "opencl", ("pxflow",), (),
+               memory_test=("release", "opencl_memcheck_oclgrind")),
         Family("vulkan", "vulkan", ("kernels/vulkan/generated/flow.spv",),
-               ("kernels/vulkan/generated/flow.spv",), host_code=False),
-        Family("gap8", "gap8", GAP8_ELVES, GAP8_ELVES, host_code=False),
+               ("kernels/vulkan/generated/flow.spv",)),
+        Family("gap8", "gap8", GAP8_ELVES, GAP8_ELVES),
         Family("cortex-m4", "m4qemu", ("hosts/m4qemu/pxflow_m4_dut.elf",),
-               ("hosts/m4qemu/pxflow_m4_dut.elf",), host_code=False),
+               ("hosts/m4qemu/pxflow_m4_dut.elf",)),
+        # tests/dut/CMakeLists.txt: the dut reference device on the whole default corpus.
         Family("dut", "", ("dut/CMakeFiles/pxdut_algo.dir/src/pxdut_kernel.c.o",),
                ("dut/CMakeFiles/pxdut_algo.dir/src/pxdut_kernel.c.o",),
-               ("pxflow", "pxflow-dut-ref"), ("--dut", "dutref=exec:{build}/pxflow-dut-ref")),
+               ("pxflow", "pxflow-dut-ref"), ("--dut", "dutref=exec:{build}/pxflow-dut-ref"),
+               memory_test=("sanitizer", "dut_ref_check_fixed_corpus")),
     )
 }
 
@@ -73,7 +85,7 @@ TARGETS = (
     Target("kernels/cpu/sse41.cpp", "cpu", ("sse41",)),
     Target("kernels/cpu/avx2.cpp", "cpu", ("avx2",)),
     Target("kernels/cpu/avx512bw.cpp", "cpu", ("avx512bw",)),
-    Target("kernels/cpu/poi_loop.cpp", "cpu", ("swar",) + X86),
+    Target("kernels/cpu/poi_loop.cpp", "cpu", ("swar",) + X86),  # not window_guard.cpp: a checker
     Target("kernels/cpu/x86_feature.hpp", "cpu", X86),
     Target("kernels/cpu/x86_half_pixel.hpp", "cpu", ("sse2", "sse41", "avx2")),
     Target("kernels/cpu/x86_argmin.hpp", "cpu", ("sse41", "avx2")),
