@@ -12,6 +12,7 @@
 #include "registry.hpp"
 #include "run_helpers.hpp"
 #include "synthetic.hpp"
+#include "window_guard.hpp"
 
 using namespace pxflow;
 
@@ -190,4 +191,26 @@ TEST_CASE("the widest search radius runs on every available ISA", "[cpu][radius]
     INFO(cmp.text());
     CHECK(cmp.ok());
   }
+}
+
+// kernels/cpu/window_guard.hpp: what the guard around the right-edge window copy reports.
+TEST_CASE("window guard: a byte changed past a row's pixels is reported, a short row_bytes refused",
+          "[window-guard]") {
+  CHECK_THROWS_WITH(cpu::WindowGuard(18, 17),
+                    Catch::Contains("row_bytes = 17 for a window of 18 columns"));
+  cpu::WindowGuard g(18, 32);  // avx2's row_bytes at S = 4: zeros from column 18 to 31
+  for (int r = 0; r < g.side(); ++r) std::fill_n(g.row(r), g.side(), std::uint8_t{7});
+  CHECK_NOTHROW(g.check(0));
+  g.row(3)[18] = 1;  // one byte past the pixels: what a copy one byte too long writes
+  CHECK_THROWS_WITH(g.check(40), Catch::Contains("byte 18 of row 3 changed") &&
+                                     Catch::Contains("window at frame row 40"));
+  g.row(3)[18] = 0;
+  CHECK_NOTHROW(g.check(0));
+#if !defined(__SANITIZE_ADDRESS__)  // under ASan the guard bytes are poisoned: ASan's to report
+  g.row(17)[g.stride() - 1] ^= 1;
+  CHECK_THROWS_WITH(g.check(0), Catch::Contains("of row 17 changed"));
+  g.row(17)[g.stride() - 1] ^= 1;
+  g.row(17)[g.stride()] ^= 1;  // the guard after the last row
+  CHECK_THROWS_WITH(g.check(0), Catch::Contains("the guard after the last row"));
+#endif
 }
