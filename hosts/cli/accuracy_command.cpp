@@ -42,7 +42,6 @@ int run_accuracy_command(const AccuracyArgs& a) {
 
 }  // namespace
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kAccuracyExamples = {
     "accuracy  # error against true motion, beside OpenCV's LK and DIS",
 };

@@ -37,7 +37,6 @@ int run_backends(const std::string& json_path) {
 
 }  // namespace
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kBackendsExamples = {
     "backends  # what this build has, and what can run here",
     "backends --json -  # the same as JSON",

@@ -237,7 +237,6 @@ int run_bench_command(const BenchArgs& a) {
 
 }  // namespace
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kBenchExamples = {
     "bench --batch 1,256,4096  # throughput, each backend checked before it is timed",
     "bench --backends cpu,opencl --json bench.json",

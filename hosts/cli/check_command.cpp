@@ -271,7 +271,6 @@ int run_check_command(const CheckArgs& a) {
 
 }  // namespace
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kCheckExamples = {
     "check  # every backend against ref-original, bit for bit",
     "check --dut ref=exec:pxflow-dut-ref --require ref  # a kernel outside pxflow",

@@ -187,7 +187,6 @@ int run_compare(const CompareArgs& a) {
 
 }  // namespace
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kCompareExamples = {
     "compare main.json today.json --fail-above 5  # exit 1: slower by more than 5 %; 3: undecided",
     "compare --run main/pxflow pr/pxflow --bench-args \"--backends cpu --batch 256\" --fail-above "

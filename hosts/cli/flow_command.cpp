@@ -354,7 +354,6 @@ int run_flow(const FlowOptions& o) {
 
 }  // namespace
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kFlowExamples = {
     "flow PREV.png NEXT.png  # the flow estimate, a human summary",
     "flow --json - --backend ref-local A.png B.png  # JSON on standard output",

@@ -71,7 +71,6 @@ int run_merge_command(const MergeArgs& a) {
 
 }  // namespace
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kMergeExamples = {
     "merge --json all.json s1.json s2.json s3.json s4.json  # one verdict from four shards",
 };

@@ -472,7 +472,6 @@ int run_report(const ReportArgs& a) {
 
 }  // namespace
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kReportExamples = {
     "report --out out/report  # report.md, report.html, results.json and results.csv",
 };

@@ -394,7 +394,6 @@ int verify_vectors(const VectorsArgs& a) {
   return c.ok() ? 0 : 1;
 }
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kVectorsExamples = {
     "vectors --out vec/ --cases 100  # test vectors for on-target tests (vec/ exists)",
 };

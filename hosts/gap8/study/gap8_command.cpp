@@ -119,7 +119,6 @@ int run_gap8(const Gap8Options& o) {
 
 }  // namespace
 
-// What --help and the man page show under Examples (the command line after "pxflow ").
 const std::vector<std::string> kGap8Examples = {
     "gap8 --variant all --cores 1-8  # the GAP8 model beside the paper's tables",
 };
