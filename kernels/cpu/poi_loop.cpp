@@ -104,8 +104,9 @@ void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, i
                    int end_row, std::span<PoiRecord> out, OpCounts& counts) {
   OpCounts* charged = k.counts_ops ? &counts : nullptr;
   if (charged) counts.counted = true;
-  WindowGuard copy(2 * p.search_radius + 10, k.row_bytes(p.search_radius));
-  const PoiContext ctx{k, pair, p, k.row_bytes(p.search_radius), charged, copy};
+  const int row_bytes = k.row_bytes(p.search_radius);
+  WindowGuard copy(2 * p.search_radius + 10, row_bytes);
+  const PoiContext ctx{k, pair, p, row_bytes, charged, copy};
   const std::vector<int> xs = grid_axis(p.width, p);
   const std::vector<int> ys = grid_axis(p.height, p);
   for (int row = first_row; row < end_row; ++row) {

@@ -12,11 +12,11 @@
 #else
 #define PXFLOW_ASAN_GUARDS 0
 #endif
-constexpr bool kAsanGuards = PXFLOW_ASAN_GUARDS;
 
 namespace pxflow::cpu {
 namespace {
 
+constexpr bool kAsanGuards = PXFLOW_ASAN_GUARDS;
 constexpr std::uint8_t kGuardByte = 0xA5;
 
 void poison(std::uint8_t* p, std::size_t n, bool on) {

@@ -10,7 +10,8 @@
 `run` edits the kernel files of the source tree in place, one mutant at a time, and always puts
 them back (also on Ctrl-C or SIGTERM); rebuilds only the targets that compile the file; a mutant
 whose compiled code is byte-identical to the unmutated build's is equivalent without a run; else
-`pxflow check --backends ref-original,ROWS --require ROWS` on the default corpus, stopped at its
+`pxflow check --backends ref-original,ROWS --require ROWS` (those this machine runs) on the
+default corpus, stopped at its
 first FAIL line: killed (a FAIL line, a non-zero exit, a crash or a hang), survived (exit 0), or
 build-failed. A survivor listed in equivalent.txt (reviewed by a human) counts as equivalent.
 Any other survivor is rerun through the test of .ci/run that runs its family's code under a
@@ -353,10 +354,10 @@ class CiMemoryTest:
         return (status, detail) if outcome == "killed" else ("survived", "")
 
     def restore(self):
+        """The sanitizer build relinked from the restored tree (command_run relinks --build)."""
         targets = sorted({x for f in self.built for x in family_targets(f)})
         if targets and self.args.sanitizer_build:
             ninja(self.args.sanitizer_build, targets, self.log)
-        ninja(self.args.build, ["pxflow"], self.log)
 
 
 def classify(args, m, r, text, equivalents, undetectable, memory):

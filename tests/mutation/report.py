@@ -6,10 +6,10 @@ Written after every mutant (to a temporary, then renamed), so a stopped campaign
 import json
 import os
 
-# killed: by the default `pxflow check`; killed-sanitizer: only by the same check in the ASan+UBSan
-# build; killed-oclgrind: only by the same check with the OpenCL rows under Oclgrind's memory checks
-# (tests/opencl/oclgrind_check.sh); undetectable: a survivor reviewed as invisible to any check on
-# this machine (undetectable.txt), never counted as killed.
+# killed: by the default `pxflow check`; killed-sanitizer: only by the family's test of .ci/run's
+# ASan+UBSan stage; killed-oclgrind: only by .ci/run's Oclgrind test (opencl_memcheck_oclgrind,
+# tests/opencl/oclgrind_check.sh); both are targets.Family.memory_test; undetectable: a survivor
+# reviewed as invisible to any check on this machine (undetectable.txt), never counted as killed.
 KILLED = ("killed", "killed-sanitizer", "killed-oclgrind")
 COLUMNS = ("mutants", "compiled", "equivalent", *KILLED, "undetectable", "survived", "build-failed",
            "not-run")
