@@ -86,3 +86,32 @@ function(pxflow_cross_arguments prefix)
   set(${prefix}_DEFINES ${defines} PARENT_SCOPE)
   set(${prefix}_SOURCES ${sources} PARENT_SCOPE)
 endfunction()
+
+# The cross-compiled outputs (GAP8 ELFs, the Cortex-M4 firmware, the AArch64 NEON check) do not
+# depend on the host's build type or sanitizers: a build may copy them from another build folder
+# of the same sources instead of compiling them again (ci/run-tests.sh: the sanitizer stage takes
+# the Release stage's, about 75 CPU seconds; docs/harness.md, "The test suite's time"). Build that
+# folder first: a missing file stops the build naming it.
+set(PXFLOW_CROSS_FROM "" CACHE PATH
+    "Build folder of the same sources whose cross-compiled outputs this build copies")
+if(PXFLOW_CROSS_FROM AND NOT EXISTS ${PXFLOW_CROSS_FROM}/CMakeCache.txt)
+  message(FATAL_ERROR "PXFLOW_CROSS_FROM=${PXFLOW_CROSS_FROM} is not a build folder "
+                      "(no CMakeCache.txt): configure and build it first, or leave the option empty")
+endif()
+
+# pxflow_cross_output(<output> COMMENT <text> COMMAND <args...> DEPENDS <files...>): the custom
+# command of one cross-compiled output, or its copy from PXFLOW_CROSS_FROM (the same path below
+# that folder) when that is set. Every cross build goes through here.
+function(pxflow_cross_output output)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "COMMENT" "COMMAND;DEPENDS")
+  if(PXFLOW_CROSS_FROM)
+    file(RELATIVE_PATH rel ${CMAKE_BINARY_DIR} ${output})
+    set(from ${PXFLOW_CROSS_FROM}/${rel})
+    add_custom_command(OUTPUT ${output} COMMAND ${CMAKE_COMMAND} -E copy ${from} ${output}
+                       DEPENDS ${from} COMMENT "${ARG_COMMENT} (copied from ${PXFLOW_CROSS_FROM})"
+                       VERBATIM)
+  else()
+    add_custom_command(OUTPUT ${output} COMMAND ${ARG_COMMAND} DEPENDS ${ARG_DEPENDS}
+                       COMMENT "${ARG_COMMENT}" VERBATIM)
+  endif()
+endfunction()

@@ -45,15 +45,13 @@ function(pxflow_gap8_program name)
                          SOURCES ${ARG_SOURCES})
   set(includes ${cross_INCLUDES})
   set(sources ${cross_SOURCES})
-  add_custom_command(
-    OUTPUT ${elf}
+  pxflow_cross_output(${elf}
     COMMAND ${PXFLOW_GAP8_CC} ${cflags} ${includes} -nostdlib -nostartfiles
             -T ${rt}/link.ld -Wl,--no-warn-rwx-segments
             ${rt}/crt0.S ${rt}/runtime.c ${sources} -lgcc -o ${elf}
     DEPENDS ${sources} ${rt}/crt0.S ${rt}/runtime.c ${rt}/link.ld ${rt}/pmsis.h
             ${rt}/gap8_regs.h ${rt}/xpulp.h ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_fields.h
-    COMMENT "RISC-V ${name}.elf"
-    VERBATIM)
+    COMMENT "RISC-V ${name}.elf")
   add_custom_target(gap8_prog_${name} ALL DEPENDS ${elf})
   add_dependencies(gap8_prog_${name} pxflow_gap8_xpulp_fields)
   set(GAP8_PROGRAM_${name} ${elf} PARENT_SCOPE)

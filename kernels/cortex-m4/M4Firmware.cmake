@@ -62,16 +62,14 @@ function(pxflow_m4_firmware name)
   set(defs ${cross_DEFINES})
   set(sources ${cross_SOURCES})
   set(elf ${CMAKE_CURRENT_BINARY_DIR}/${name}.elf)
-  add_custom_command(
-    OUTPUT ${elf}
+  pxflow_cross_output(${elf}
     COMMAND ${PXFLOW_M4_CC} ${cflags} ${ARG_COMPILE_OPTIONS} ${defs} ${includes} ${specs} -nostartfiles
             -T ${PXFLOW_M4_BOARD_DIR}/mps2_an386.ld -Wl,--gc-sections ${ARG_LINK_OPTIONS}
             ${PXFLOW_M4_BOARD_SOURCES} ${PXFLOW_M4_KERNEL_SOURCES} ${sources} -o ${elf}
     DEPENDS ${sources} ${PXFLOW_M4_BOARD_SOURCES} ${PXFLOW_M4_KERNEL_SOURCES}
             ${PXFLOW_M4_KERNEL_HEADERS} ${PXFLOW_SPEC_HEADERS} ${PXFLOW_M4_BOARD_DIR}/board.h
             ${PXFLOW_M4_BOARD_DIR}/mps2_an386.ld ${ARG_DEPENDS}
-    COMMENT "Cortex-M4 ${name}.elf"
-    VERBATIM)
+    COMMENT "Cortex-M4 ${name}.elf")
   add_custom_target(m4_fw_${name} ALL DEPENDS ${elf})
   set(M4_FIRMWARE_${name} ${elf} PARENT_SCOPE)
 endfunction()

@@ -68,12 +68,11 @@ foreach(source IN LISTS neon_cross_sources)
     VERBATIM)
   list(APPEND neon_cross_objects ${object})
 endforeach()
-add_custom_command(
-  OUTPUT ${neon_cross_binary}
+# The objects are built only for this link: copied from PXFLOW_CROSS_FROM, it needs none.
+pxflow_cross_output(${neon_cross_binary}
   COMMAND ${PXFLOW_AARCH64_CXX} ${neon_cross_objects} -o ${neon_cross_binary}
   DEPENDS ${neon_cross_objects}
-  COMMENT "Linking the NEON check for AArch64"
-  VERBATIM)
+  COMMENT "Linking the NEON check for AArch64")
 add_custom_target(neon_cross_check ALL DEPENDS ${neon_cross_binary})
 
 # The real frames reach the AArch64 program as raw files written by the host's path check.
