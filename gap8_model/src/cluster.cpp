@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "core_execute_inline.h"
 #include "gap8/timing.h"
 
 namespace gap8 {
@@ -19,15 +20,17 @@ constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
 Cluster::Cluster(ClusterConfig config) : config_(std::move(config)) {
   config_.cores = std::clamp(config_.cores, 1, static_cast<int>(GAP8_MAX_CORES));
   if (!config_.putc) config_.putc = [](char c) { std::fputc(c, stdout); };
-  for (int i = 0; i < config_.cores; ++i)
-    cores_.push_back(std::make_unique<Core>(i, memory_, this));
+  cores_.reserve(config_.cores);  // never reallocated: a Core& stays valid across Start
+  for (int i = 0; i < config_.cores; ++i) cores_.emplace_back(i, memory_, this);
   side_.resize(config_.cores);
 }
 
 void Cluster::Start(uint32_t entry) {
-  for (int i = 0; i < num_cores(); ++i) {
-    cores_[i] = std::make_unique<Core>(i, memory_, this);
-    cores_[i]->set_pc(entry);
+  const int n = num_cores();
+  cores_.clear();
+  for (int i = 0; i < n; ++i) {
+    cores_.emplace_back(i, memory_, this);
+    cores_[i].set_pc(entry);
     side_[i] = CoreSide{};
   }
   icache_.Reset();
@@ -38,6 +41,8 @@ void Cluster::Start(uint32_t entry) {
   barrier_arrived_ = 0;
   dma_allocated_ = 0;
   exited_ = false;
+  wheel_valid_ = false;
+  retry_.fill(Retry{});
 }
 
 RunResult Cluster::Run() {
@@ -46,14 +51,14 @@ RunResult Cluster::Run() {
     while (!exited_) Advance();
   } catch (const Fault& fault) {
     result.fault = fault;
-    for (auto& c : cores_) result.cycles = std::max(result.cycles, c->time);
+    for (auto& c : cores_) result.cycles = std::max(result.cycles, c.time);
     return result;
   }
   // Cores asleep at exit slept until the end: their cycle counts reach the exit cycle.
   for (auto& c : cores_) {
-    if (c->asleep && c->time < exit_cycle_) {
-      c->slept += exit_cycle_ - c->time;
-      c->time = exit_cycle_;
+    if (c.asleep && c.time < exit_cycle_) {
+      c.slept += exit_cycle_ - c.time;
+      c.time = exit_cycle_;
     }
   }
   result.exit_code = exit_code_;
@@ -61,35 +66,71 @@ RunResult Cluster::Run() {
   return result;
 }
 
+void Cluster::RebuildWheel() {
+  wheel_.fill(0);
+  wheel_occupied_ = 0;
+  uint64_t first_time = kNever;
+  for (const Core& c : cores_) {
+    if (!c.asleep) first_time = std::min(first_time, c.time);
+  }
+  wheel_now_ = first_time == kNever ? 0 : first_time;
+  wheel_valid_ = true;
+  for (const Core& c : cores_) {
+    if (!c.asleep) WheelInsert(c);
+  }
+}
+
 void Cluster::Advance() {
-  // One pass over the cores: the earliest issue cycle, every core issuing then (ready), and the
-  // next issue cycle after it (second_time; equal to first_time when two cores share it).
+  // The earliest issue cycle, every core issuing then (ready), and the next issue cycle after it
+  // (second_time; equal to first_time when two cores share it).
+  if (!wheel_valid_) RebuildWheel();
   uint64_t first_time = kNever, second_time = kNever;
-  uint32_t ready = 0;  // bit per core
-  for (int i = 0; i < num_cores(); ++i) {
-    const Core& c = *cores_[i];
-    if (c.asleep) continue;
-    if (c.time < first_time) {
-      second_time = first_time;
-      first_time = c.time;
-      ready = 1u << i;
-    } else if (c.time == first_time) {
-      second_time = first_time;
-      ready |= 1u << i;
-    } else if (c.time < second_time) {
-      second_time = c.time;
+  uint32_t ready = 0;   // bit per core
+  if (!wheel_valid_) {  // a core beyond the window: scan the cores
+    for (int i = 0; i < num_cores(); ++i) {
+      const Core& c = cores_[i];
+      if (c.asleep) continue;
+      if (c.time < first_time) {
+        second_time = first_time;
+        first_time = c.time;
+        ready = 1u << i;
+      } else if (c.time == first_time) {
+        second_time = first_time;
+        ready |= 1u << i;
+      } else if (c.time < second_time) {
+        second_time = c.time;
+      }
     }
+  } else if (wheel_occupied_ != 0) {
+    const uint32_t base = static_cast<uint32_t>(wheel_now_) & (kWheelSlots - 1);
+    const uint64_t ahead = std::rotr(wheel_occupied_, static_cast<int>(base));
+    const int first = std::countr_zero(ahead);
+    first_time = wheel_now_ + static_cast<uint64_t>(first);
+    const uint32_t slot = (base + static_cast<uint32_t>(first)) & (kWheelSlots - 1);
+    ready = wheel_[slot];
+    if ((ready & (ready - 1)) != 0) {
+      second_time = first_time;
+    } else if (const uint64_t rest = ahead & (ahead - 1); rest != 0) {
+      second_time = wheel_now_ + static_cast<uint64_t>(std::countr_zero(rest));
+    }
+    // The cores of this slot leave the wheel: whoever runs them puts them back.
+    wheel_[slot] = 0;
+    wheel_occupied_ &= ~(uint64_t{1} << slot);
+    wheel_now_ = first_time;
   }
   // A transfer completing at cycle t is visible to instructions issuing at t.
-  if (!dma_.Idle() && dma_.NextCompletion() <= first_time) return CompleteDma();
+  if (!dma_.Idle() && dma_.NextCompletion() <= first_time) {
+    wheel_valid_ = false;  // the ready cores left the wheel without running
+    return CompleteDma();
+  }
   if (!ready) ReportDeadlock();
-  Core& first = *cores_[std::countr_zero(ready)];  // the lowest id among the earliest
+  Core& first = cores_[std::countr_zero(ready)];  // the lowest id among the earliest
   if (first_time > config_.max_cycles) {
     const Decoded& d = first.Fetch();
     throw Fault{FaultKind::kCycleBudget, first.id(), first.pc(), d.raw,
                 "cycle budget of " + std::to_string(config_.max_cycles) + " cycles exceeded"};
   }
-  if (second_time == first_time) return IssueCycle(ready);
+  if (second_time == first_time) return RunShared(ready, first_time);
   uint64_t limit = std::min(second_time, config_.max_cycles + 1);
   if (!dma_.Idle()) limit = std::min(limit, dma_.NextCompletion());
   RunSolo(first, limit);
@@ -97,6 +138,7 @@ void Cluster::Advance() {
 
 void Cluster::RunSolo(Core& core, uint64_t limit) {
   schedule_changed_ = false;  // a DMA push sets it, so dma_end stays right
+  retry_[core.id()].insn = nullptr;
   const uint64_t dma_end = config_.contention ? dma_.BankTrafficEnd() : 0;
   while (core.time < limit && !core.asleep && !exited_ && !schedule_changed_) {
     const Decoded& d = core.Fetch();
@@ -109,44 +151,91 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
       continue;
     }
     if (const uint32_t fetch = FetchStall(core)) [[unlikely]] {
-      core.time += core.Execute(d) + fetch;
+      core.time += core.ExecuteInline(d) + fetch;
       core.event(GAP8_EVT_IMISS) += fetch;
       continue;
     }
-    core.time += core.Execute(d);
+    core.time += core.ExecuteInline(d);
   }
+  if (!core.asleep) WheelInsert(core);
 }
 
-// The cores in `ready` (two or more, all at the same cycle) issue, in id order: hazards first,
-// then the TCDM bank arbiter, then execution. The bank bookkeeping has few data-dependent
-// branches: with eight cores interleaved the host's branch predictor guesses poorly.
-void Cluster::IssueCycle(uint32_t ready) {
+// Shared cycles, one after the other while the earliest cycle has two or more cores: the cores
+// in `ready` (all issuing at `cycle`, already out of the wheel) issue, in id order: hazards
+// first, then the TCDM bank arbiter, then execution; each goes back into the wheel at its next
+// issue cycle. Stops, leaving the wheel as it is, where Advance must decide: one core alone, a
+// DMA completion, the cycle budget, a wake-up (the wheel is then invalid), the exit. The bank
+// bookkeeping has few data-dependent branches: with eight cores interleaved the host's branch
+// predictor guesses poorly.
+void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
+  uint64_t occupied = wheel_occupied_;  // kept here, not in memory, between cycles
+  const auto insert = [&](const Core& c) {
+    const uint64_t t = c.time;
+    if (t - cycle >= kWheelSlots) wheel_valid_ = false;
+    const uint32_t slot = static_cast<uint32_t>(t) & (kWheelSlots - 1);
+    wheel_[slot] |= 1u << c.id();
+    occupied |= uint64_t{1} << slot;
+  };
+  for (;;) {
+    IssueCycle(ready, cycle, insert);
+    if (exited_ || !wheel_valid_ || occupied == 0) break;
+    const uint32_t base = static_cast<uint32_t>(cycle) & (kWheelSlots - 1);
+    const int ahead = std::countr_zero(std::rotr(occupied, static_cast<int>(base)));
+    const uint64_t next = cycle + static_cast<uint64_t>(ahead);
+    const uint32_t slot = (base + static_cast<uint32_t>(ahead)) & (kWheelSlots - 1);
+    const uint32_t next_ready = wheel_[slot];
+    if ((next_ready & (next_ready - 1)) == 0 || next > config_.max_cycles) break;
+    if (!dma_.Idle() && dma_.NextCompletion() <= next) break;
+    wheel_[slot] = 0;
+    occupied &= ~(uint64_t{1} << slot);
+    wheel_now_ = cycle = next;
+    ready = next_ready;
+  }
+  wheel_occupied_ = occupied;
+}
+
+template <typename Insert>
+inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle, const Insert& insert) {
   std::array<const Decoded*, GAP8_MAX_CORES> insn;  // valid for the cores in `issuing`
+  std::array<uint32_t, GAP8_MAX_CORES> bank_of;     // likewise: the bank bit each asks for
   BankRequests requests{};                          // per bank: bit per requesting core
-  const uint64_t cycle = cores_[std::countr_zero(ready)]->time;  // before any stall moves it
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
+  Core* const cores = cores_.data();
+  const uint64_t epoch = memory_.code_epoch();
   for (uint32_t m = ready; m != 0; m &= m - 1) {
     const int id = std::countr_zero(m);
-    Core& c = *cores_[id];
-    const Decoded& d = c.Fetch();
-    if (const uint32_t stall = c.TakeHazardStall(d)) {
-      c.time += stall;
-      continue;
+    Core& c = cores[id];
+    Retry& retry = retry_[id];
+    uint32_t bank_bit;
+    if (retry.insn != nullptr && retry.epoch == epoch) {
+      insn[id] = retry.insn;
+      bank_bit = retry.bank_bit;
+    } else {
+      const Decoded& d = c.Fetch();
+      if (const uint32_t stall = c.TakeHazardStall(d)) {
+        retry.insn = nullptr;
+        c.time += stall;
+        insert(c);
+        continue;
+      }
+      insn[id] = &d;
+      bank_bit = config_.contention ? c.TcdmBankBit(d) : 0u;
     }
-    insn[id] = &d;
+    retry.insn = nullptr;
+    bank_of[id] = bank_bit;
     issuing |= 1u << id;
-    const uint32_t bank_bit = config_.contention ? c.TcdmBankBit(d) : 0u;
     requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
     shared_banks |= banks & bank_bit;
     banks |= bank_bit;
   }
+  uint32_t losers = 0;  // each retries next cycle
   // Banks the DMA takes this cycle: every core requesting one retries (the DMA always wins).
   if (const uint32_t dma_banks = config_.contention ? dma_.BanksAt(cycle) & banks : 0) {
     for (uint32_t b = dma_banks; b != 0; b &= b - 1) {
       const int bank = std::countr_zero(b);
       for (uint32_t l = requests[bank]; l != 0; l &= l - 1)
-        LoseBankToDma(*cores_[std::countr_zero(l)]);
-      issuing &= ~requests[bank];
+        LoseBankToDma(cores_[std::countr_zero(l)]);
+      losers |= requests[bank];
     }
     banks &= ~dma_banks;
     shared_banks &= ~dma_banks;
@@ -156,12 +245,20 @@ void Cluster::IssueCycle(uint32_t ready) {
     const int bank = std::countr_zero(b);
     bank_priority_[bank] = NextCore(std::countr_zero(requests[bank]));
   }
-  if (shared_banks != 0) issuing &= ~ArbitrateSharedBanks(shared_banks, requests);
+  if (shared_banks != 0) losers |= ArbitrateSharedBanks(shared_banks, requests);
+  for (uint32_t l = losers; l != 0; l &= l - 1) {
+    const int id = std::countr_zero(l);
+    retry_[id] = Retry{insn[id], bank_of[id], epoch};
+    insert(cores[id]);
+  }
+  issuing &= ~losers;
   for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
-    Core& c = *cores_[std::countr_zero(m)];
+    const int id = std::countr_zero(m);
+    Core& c = cores[id];
     const uint32_t fetch = FetchStall(c);
-    c.time += c.Execute(*insn[c.id()]) + fetch;
+    c.time += c.ExecuteInline(*insn[id]) + fetch;
     c.event(GAP8_EVT_IMISS) += fetch;
+    if (!c.asleep) insert(c);
   }
 }
 
@@ -177,7 +274,7 @@ uint32_t Cluster::ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests
     bank_priority_[b] = NextCore(winner);
     const uint32_t losers = mask & ~(1u << winner);
     for (uint32_t l = losers; l != 0; l &= l - 1) {
-      Core& loser = *cores_[std::countr_zero(l)];
+      Core& loser = cores_[std::countr_zero(l)];
       loser.time += timing::kTcdmRetry;
       loser.event(GAP8_EVT_TCDM_CONT) += timing::kTcdmRetry;
     }
@@ -200,12 +297,12 @@ void Cluster::CompleteDma() {
   const Dma::Completion done = dma_.CompleteNext(memory_);
   if (!done.event) return;
   for (auto& c : cores_) {
-    if (!done.broadcast && static_cast<uint32_t>(c->id()) != done.core) continue;
-    CoreSide& s = side_[c->id()];
+    if (!done.broadcast && static_cast<uint32_t>(c.id()) != done.core) continue;
+    CoreSide& s = side_[c.id()];
     s.evt_status |= 1u << GAP8_EVT_DMA;
-    if (c->asleep && s.wait == Wait::kEvent && (s.evt_status & s.evt_mask)) {
+    if (c.asleep && s.wait == Wait::kEvent && (s.evt_status & s.evt_mask)) {
       s.evt_status &= ~s.evt_mask;
-      WakeCore(*c, at, 0);
+      WakeCore(c, at, 0);
     }
   }
 }
@@ -222,6 +319,7 @@ void Cluster::WakeCore(Core& core, uint64_t at, uint32_t value) {
   side_[core.id()].wait = Wait::kNone;
   core.Wake(at, value);
   schedule_changed_ = true;
+  wheel_valid_ = false;
 }
 
 }  // namespace gap8

@@ -184,6 +184,8 @@ void AddAccessFacts(Decoded& d) {
     default:
       break;
   }
+  d.tcdm = (d.access & (kAccessLoad | kAccessStore)) != 0;
+  d.access_imm = (d.access & kAccessImmOffset) ? d.imm : 0;
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ class Cluster {
 
   Memory& memory() { return memory_; }
   const ICache& icache() const { return icache_; }
-  Core& core(int i) { return *cores_[i]; }
+  Core& core(int i) { return cores_[i]; }
   int num_cores() const { return static_cast<int>(cores_.size()); }
 
   // Every core starts at `entry` at cycle 0 (start-up code splits them by core id).
@@ -72,14 +72,31 @@ class Cluster {
 
   void Advance();
   void RunSolo(Core& core, uint64_t limit);
+  // The schedule wheel: bucket t % kWheelSlots holds the awake cores whose next issue cycle is
+  // t, for every t in [wheel_now_, wheel_now_ + kWheelSlots). Advance reads the earliest cycle
+  // and its cores from it instead of scanning every core each cycle. Any change it does not
+  // follow (a core falls asleep or wakes, a core's time beyond the window) marks it invalid;
+  // Advance then rebuilds it from the cores.
+  static constexpr uint32_t kWheelSlots = 64;
+  void RebuildWheel();
+  void WheelInsert(const Core& core) {
+    const uint64_t t = core.time;
+    if (t - wheel_now_ >= kWheelSlots) wheel_valid_ = false;
+    const uint32_t slot = static_cast<uint32_t>(t) & (kWheelSlots - 1);
+    wheel_[slot] |= 1u << core.id();
+    wheel_occupied_ |= uint64_t{1} << slot;
+  }
   // Per TCDM bank, bit per core requesting it; the spare slot kNoBank collects the cores making
   // no TCDM access (so recording a request needs no branch) and is never read.
   static constexpr int kNoBank = GAP8_L1_BANKS;
   using BankRequests = std::array<uint32_t, GAP8_L1_BANKS + 1>;
 
-  void IssueCycle(uint32_t ready);
+  void RunShared(uint32_t ready, uint64_t cycle);
+  template <typename Insert>
+  void IssueCycle(uint32_t ready, uint64_t cycle, const Insert& insert);
   // Cycles the core waits for the instruction at its pc: 0 while the prefetch buffer holds it
-  // (the fast path), else the instruction-cache accesses of FetchLines. Counted in IMISS.
+  // (the fast path), else the instruction-cache accesses of FetchLines. Counted in IMISS after
+  // the instruction executed (it may read the counters itself).
   uint32_t FetchStall(Core& core) {
     if (core.pc() - core.prefetch_base <= timing::kPrefetchBytes - timing::kOpcodeMaxBytes)
       return 0;
@@ -105,7 +122,7 @@ class Cluster {
 
   ClusterConfig config_;
   Memory memory_;
-  std::vector<std::unique_ptr<Core>> cores_;
+  std::vector<Core> cores_;  // contiguous: the scheduler reads every core's time each cycle
   std::vector<CoreSide> side_;
   Dma dma_;
   ICache icache_;
@@ -116,6 +133,19 @@ class Cluster {
   uint32_t barrier_arrived_ = 0;
   uint32_t dma_allocated_ = 0;                      // bit per DMA counter
   std::array<int, GAP8_L1_BANKS> bank_priority_{};  // round-robin: core served first next time
+  // A core that lost its bank retries next cycle the same instruction at the same address (its
+  // registers cannot change meanwhile): kept here, valid while the code epoch is the same, so
+  // the retry needs no fetch, hazard test or address. Cleared whenever the core runs alone.
+  struct Retry {
+    const Decoded* insn = nullptr;
+    uint32_t bank_bit = 0;
+    uint64_t epoch = 0;
+  };
+  std::array<Retry, GAP8_MAX_CORES> retry_{};
+  std::array<uint32_t, kWheelSlots> wheel_{};  // bit per core
+  uint64_t wheel_occupied_ = 0;                // bit per non-empty slot
+  uint64_t wheel_now_ = 0;                     // no awake core issues before it
+  bool wheel_valid_ = false;
   bool schedule_changed_ = false;  // a wake-up or DMA push: the solo loop must yield
   bool exited_ = false;
   int exit_code_ = 0;

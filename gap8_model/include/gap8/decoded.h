@@ -91,6 +91,8 @@ struct Decoded {
   // arbitration, ExecuteMemory) read them instead of switching on op every time.
   uint8_t access = 0;      // AccessFlags: does it load or store, and how the address is formed
   uint8_t offset_reg = 0;  // register added to rs1 to form the address (0: none; x0 reads 0)
+  uint8_t tcdm = 0;        // 1 for any load or store (it asks for a TCDM bank when in L1)
+  int32_t access_imm = 0;  // added to rs1 + offset_reg to form the address: imm or 0
 };
 
 enum AccessFlags : uint8_t {
