@@ -21,7 +21,10 @@ Cluster::Cluster(ClusterConfig config) : config_(std::move(config)) {
   config_.cores = std::clamp(config_.cores, 1, static_cast<int>(GAP8_MAX_CORES));
   if (!config_.putc) config_.putc = [](char c) { std::fputc(c, stdout); };
   cores_.reserve(config_.cores);  // never reallocated: a Core& stays valid across Start
-  for (int i = 0; i < config_.cores; ++i) cores_.emplace_back(i, memory_, this);
+  for (int i = 0; i < config_.cores; ++i) {
+    cores_.emplace_back(i, memory_, this);
+    core_ptr_[i] = &cores_[i];
+  }
   side_.resize(config_.cores);
 }
 
@@ -31,6 +34,7 @@ void Cluster::Start(uint32_t entry) {
   for (int i = 0; i < n; ++i) {
     cores_.emplace_back(i, memory_, this);
     cores_[i].set_pc(entry);
+    core_ptr_[i] = &cores_[i];
     side_[i] = CoreSide{};
   }
   icache_.Reset();
@@ -41,8 +45,7 @@ void Cluster::Start(uint32_t entry) {
   barrier_arrived_ = 0;
   dma_allocated_ = 0;
   exited_ = false;
-  wheel_valid_ = false;
-  retry_.fill(Retry{});
+  retry_mask_ = 0;
 }
 
 RunResult Cluster::Run() {
@@ -66,63 +69,27 @@ RunResult Cluster::Run() {
   return result;
 }
 
-void Cluster::RebuildWheel() {
-  wheel_.fill(0);
-  wheel_occupied_ = 0;
-  uint64_t first_time = kNever;
-  for (const Core& c : cores_) {
-    if (!c.asleep) first_time = std::min(first_time, c.time);
-  }
-  wheel_now_ = first_time == kNever ? 0 : first_time;
-  wheel_valid_ = true;
-  for (const Core& c : cores_) {
-    if (!c.asleep) WheelInsert(c);
-  }
-}
-
 void Cluster::Advance() {
-  // The earliest issue cycle, every core issuing then (ready), and the next issue cycle after it
-  // (second_time; equal to first_time when two cores share it).
-  if (!wheel_valid_) RebuildWheel();
+  // One pass over the cores: the earliest issue cycle, every core issuing then (ready), and the
+  // next issue cycle after it (second_time; equal to first_time when two cores share it).
   uint64_t first_time = kNever, second_time = kNever;
-  uint32_t ready = 0;   // bit per core
-  if (!wheel_valid_) {  // a core beyond the window: scan the cores
-    for (int i = 0; i < num_cores(); ++i) {
-      const Core& c = cores_[i];
-      if (c.asleep) continue;
-      if (c.time < first_time) {
-        second_time = first_time;
-        first_time = c.time;
-        ready = 1u << i;
-      } else if (c.time == first_time) {
-        second_time = first_time;
-        ready |= 1u << i;
-      } else if (c.time < second_time) {
-        second_time = c.time;
-      }
-    }
-  } else if (wheel_occupied_ != 0) {
-    const uint32_t base = static_cast<uint32_t>(wheel_now_) & (kWheelSlots - 1);
-    const uint64_t ahead = std::rotr(wheel_occupied_, static_cast<int>(base));
-    const int first = std::countr_zero(ahead);
-    first_time = wheel_now_ + static_cast<uint64_t>(first);
-    const uint32_t slot = (base + static_cast<uint32_t>(first)) & (kWheelSlots - 1);
-    ready = wheel_[slot];
-    if ((ready & (ready - 1)) != 0) {
+  uint32_t ready = 0;  // bit per core
+  for (int i = 0; i < num_cores(); ++i) {
+    const Core& c = cores_[i];
+    if (c.asleep) continue;
+    if (c.time < first_time) {
       second_time = first_time;
-    } else if (const uint64_t rest = ahead & (ahead - 1); rest != 0) {
-      second_time = wheel_now_ + static_cast<uint64_t>(std::countr_zero(rest));
+      first_time = c.time;
+      ready = 1u << i;
+    } else if (c.time == first_time) {
+      second_time = first_time;
+      ready |= 1u << i;
+    } else if (c.time < second_time) {
+      second_time = c.time;
     }
-    // The cores of this slot leave the wheel: whoever runs them puts them back.
-    wheel_[slot] = 0;
-    wheel_occupied_ &= ~(uint64_t{1} << slot);
-    wheel_now_ = first_time;
   }
   // A transfer completing at cycle t is visible to instructions issuing at t.
-  if (!dma_.Idle() && dma_.NextCompletion() <= first_time) {
-    wheel_valid_ = false;  // the ready cores left the wheel without running
-    return CompleteDma();
-  }
+  if (!dma_.Idle() && dma_.NextCompletion() <= first_time) return CompleteDma();
   if (!ready) ReportDeadlock();
   Core& first = cores_[std::countr_zero(ready)];  // the lowest id among the earliest
   if (first_time > config_.max_cycles) {
@@ -138,7 +105,7 @@ void Cluster::Advance() {
 
 void Cluster::RunSolo(Core& core, uint64_t limit) {
   schedule_changed_ = false;  // a DMA push sets it, so dma_end stays right
-  retry_[core.id()].insn = nullptr;
+  retry_mask_ &= ~(1u << core.id());
   const uint64_t dma_end = config_.contention ? dma_.BankTrafficEnd() : 0;
   while (core.time < limit && !core.asleep && !exited_ && !schedule_changed_) {
     const Decoded& d = core.Fetch();
@@ -147,7 +114,7 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
       continue;
     }
     if (core.time < dma_end && (core.TcdmBankBit(d) & dma_.BanksAt(core.time))) {
-      LoseBankToDma(core);
+      LoseBank(core);
       continue;
     }
     if (const uint32_t fetch = FetchStall(core)) [[unlikely]] {
@@ -157,71 +124,62 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
     }
     core.time += core.ExecuteInline(d);
   }
-  if (!core.asleep) WheelInsert(core);
 }
 
 // Shared cycles, one after the other while the earliest cycle has two or more cores: the cores
-// in `ready` (all issuing at `cycle`, already out of the wheel) issue, in id order: hazards
-// first, then the TCDM bank arbiter, then execution; each goes back into the wheel at its next
-// issue cycle. Stops, leaving the wheel as it is, where Advance must decide: one core alone, a
-// DMA completion, the cycle budget, a wake-up (the wheel is then invalid), the exit. The bank
-// bookkeeping has few data-dependent branches: with eight cores interleaved the host's branch
-// predictor guesses poorly.
+// in `ready` (all issuing at `cycle`) issue, in id order: hazards first, then the TCDM bank
+// arbiter, then execution. Within the loop only the issuing cores' next issue cycles change, so
+// the loop keeps every core's in `t` and finds the next cycle there. It stops where Advance must
+// decide: one core alone, a DMA completion, the cycle budget, a wake-up or DMA push, the exit.
+// The bank bookkeeping has few data-dependent branches: with eight cores interleaved the host's
+// branch predictor guesses poorly.
 void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
-  uint64_t occupied = wheel_occupied_;  // kept here, not in memory, between cycles
-  const auto insert = [&](const Core& c) {
-    const uint64_t t = c.time;
-    if (t - cycle >= kWheelSlots) wheel_valid_ = false;
-    const uint32_t slot = static_cast<uint32_t>(t) & (kWheelSlots - 1);
-    wheel_[slot] |= 1u << c.id();
-    occupied |= uint64_t{1} << slot;
-  };
+  std::array<uint64_t, GAP8_MAX_CORES> t;  // next issue cycle per core, kNever asleep or absent
+  t.fill(kNever);
+  for (int i = 0; i < num_cores(); ++i) t[i] = cores_[i].asleep ? kNever : cores_[i].time;
+  const auto issued = [&](const Core& c, int id) { t[id] = c.asleep ? kNever : c.time; };
+  schedule_changed_ = false;  // a wake-up or a DMA push sets it
   for (;;) {
-    IssueCycle(ready, cycle, insert);
-    if (exited_ || !wheel_valid_ || occupied == 0) break;
-    const uint32_t base = static_cast<uint32_t>(cycle) & (kWheelSlots - 1);
-    const int ahead = std::countr_zero(std::rotr(occupied, static_cast<int>(base)));
-    const uint64_t next = cycle + static_cast<uint64_t>(ahead);
-    const uint32_t slot = (base + static_cast<uint32_t>(ahead)) & (kWheelSlots - 1);
-    const uint32_t next_ready = wheel_[slot];
-    if ((next_ready & (next_ready - 1)) == 0 || next > config_.max_cycles) break;
-    if (!dma_.Idle() && dma_.NextCompletion() <= next) break;
-    wheel_[slot] = 0;
-    occupied &= ~(uint64_t{1} << slot);
-    wheel_now_ = cycle = next;
+    IssueCycle(ready, cycle, issued);
+    if (exited_ || schedule_changed_) return;
+    uint64_t next = kNever;  // all GAP8_MAX_CORES entries: the compiler unrolls both loops
+    for (uint64_t ti : t) next = std::min(next, ti);
+    uint32_t next_ready = 0;
+    for (uint32_t i = 0; i < GAP8_MAX_CORES; ++i)
+      next_ready |= static_cast<uint32_t>(t[i] == next) << i;
+    if ((next_ready & (next_ready - 1)) == 0 || next == kNever || next > config_.max_cycles) return;
+    if (!dma_.Idle() && dma_.NextCompletion() <= next) return;
+    cycle = next;
     ready = next_ready;
   }
-  wheel_occupied_ = occupied;
 }
 
-template <typename Insert>
-inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle, const Insert& insert) {
+template <typename Issued>
+inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle, const Issued& issued) {
   std::array<const Decoded*, GAP8_MAX_CORES> insn;  // valid for the cores in `issuing`
   std::array<uint32_t, GAP8_MAX_CORES> bank_of;     // likewise: the bank bit each asks for
   BankRequests requests{};                          // per bank: bit per requesting core
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
-  Core* const cores = cores_.data();
-  const uint64_t epoch = memory_.code_epoch();
+  const bool contention = config_.contention;
+  // Retries kept from a cycle before a code change are void: fetch again.
+  if (memory_.code_epoch() != retry_epoch_) retry_mask_ = 0;
   for (uint32_t m = ready; m != 0; m &= m - 1) {
     const int id = std::countr_zero(m);
-    Core& c = cores[id];
-    Retry& retry = retry_[id];
+    Core& c = *core_ptr_[id];
     uint32_t bank_bit;
-    if (retry.insn != nullptr && retry.epoch == epoch) {
-      insn[id] = retry.insn;
-      bank_bit = retry.bank_bit;
+    if ((retry_mask_ >> id) & 1u) {
+      insn[id] = retry_insn_[id];
+      bank_bit = retry_bank_[id];
     } else {
       const Decoded& d = c.Fetch();
       if (const uint32_t stall = c.TakeHazardStall(d)) {
-        retry.insn = nullptr;
         c.time += stall;
-        insert(c);
+        issued(c, id);
         continue;
       }
       insn[id] = &d;
-      bank_bit = config_.contention ? c.TcdmBankBit(d) : 0u;
+      bank_bit = contention ? c.TcdmBankBit(d) : 0u;
     }
-    retry.insn = nullptr;
     bank_of[id] = bank_bit;
     issuing |= 1u << id;
     requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
@@ -230,13 +188,8 @@ inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle, const Insert& in
   }
   uint32_t losers = 0;  // each retries next cycle
   // Banks the DMA takes this cycle: every core requesting one retries (the DMA always wins).
-  if (const uint32_t dma_banks = config_.contention ? dma_.BanksAt(cycle) & banks : 0) {
-    for (uint32_t b = dma_banks; b != 0; b &= b - 1) {
-      const int bank = std::countr_zero(b);
-      for (uint32_t l = requests[bank]; l != 0; l &= l - 1)
-        LoseBankToDma(cores_[std::countr_zero(l)]);
-      losers |= requests[bank];
-    }
+  if (const uint32_t dma_banks = contention ? dma_.BanksAt(cycle) & banks : 0) {
+    for (uint32_t b = dma_banks; b != 0; b &= b - 1) losers |= requests[std::countr_zero(b)];
     banks &= ~dma_banks;
     shared_banks &= ~dma_banks;
   }
@@ -246,19 +199,23 @@ inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle, const Insert& in
     bank_priority_[bank] = NextCore(std::countr_zero(requests[bank]));
   }
   if (shared_banks != 0) losers |= ArbitrateSharedBanks(shared_banks, requests);
+  retry_mask_ = (retry_mask_ & ~ready) | losers;
+  retry_epoch_ = memory_.code_epoch();
   for (uint32_t l = losers; l != 0; l &= l - 1) {
     const int id = std::countr_zero(l);
-    retry_[id] = Retry{insn[id], bank_of[id], epoch};
-    insert(cores[id]);
+    LoseBank(*core_ptr_[id]);
+    retry_insn_[id] = insn[id];
+    retry_bank_[id] = bank_of[id];
+    issued(*core_ptr_[id], id);
   }
   issuing &= ~losers;
   for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
     const int id = std::countr_zero(m);
-    Core& c = cores[id];
+    Core& c = *core_ptr_[id];
     const uint32_t fetch = FetchStall(c);
     c.time += c.ExecuteInline(*insn[id]) + fetch;
     c.event(GAP8_EVT_IMISS) += fetch;
-    if (!c.asleep) insert(c);
+    issued(c, id);
   }
 }
 
@@ -272,26 +229,13 @@ uint32_t Cluster::ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests
     const uint32_t from_pointer = mask & ~((1u << bank_priority_[b]) - 1u);
     const int winner = std::countr_zero(from_pointer ? from_pointer : mask);
     bank_priority_[b] = NextCore(winner);
-    const uint32_t losers = mask & ~(1u << winner);
-    for (uint32_t l = losers; l != 0; l &= l - 1) {
-      Core& loser = cores_[std::countr_zero(l)];
-      loser.time += timing::kTcdmRetry;
-      loser.event(GAP8_EVT_TCDM_CONT) += timing::kTcdmRetry;
-    }
-    all_losers |= losers;
+    all_losers |= mask & ~(1u << winner);
   }
   return all_losers;
 }
 
 // The transfer's event goes to every core (broadcast, as PMSIS asks) or to the one that queued
 // it (mchan_v6 Mchan_channel::trigger_event); a core waiting for it wakes (eu_v3 check_state).
-// GVSOC's TCDM bank serves one access a cycle, first come first served; this model lets the
-// DMA's pieces come first, so its schedule (dma.cpp) never moves.
-void Cluster::LoseBankToDma(Core& core) {
-  core.time += timing::kTcdmRetry;
-  core.event(GAP8_EVT_TCDM_CONT) += timing::kTcdmRetry;
-}
-
 void Cluster::CompleteDma() {
   const uint64_t at = dma_.NextCompletion();
   const Dma::Completion done = dma_.CompleteNext(memory_);
@@ -319,7 +263,6 @@ void Cluster::WakeCore(Core& core, uint64_t at, uint32_t value) {
   side_[core.id()].wait = Wait::kNone;
   core.Wake(at, value);
   schedule_changed_ = true;
-  wheel_valid_ = false;
 }
 
 }  // namespace gap8

@@ -25,8 +25,8 @@ inline uint32_t OperandB(const Decoded& d, uint32_t rs2_value) {
   using execute_detail::OperandB;
   current_ = &d;
   ++events_[GAP8_EVT_INSTR];
-  events_[GAP8_EVT_RVC] += (d.size == 2);
-  SetHazard(Hazard::kAlu, d.rd);
+  events_[GAP8_EVT_RVC] += d.rvc;
+  SetHazardBit(Hazard::kAlu, d.rd_bit);
   const uint32_t a = regs_[d.rs1], b = regs_[d.rs2];
   const uint32_t imm = static_cast<uint32_t>(d.imm);
   uint32_t result;

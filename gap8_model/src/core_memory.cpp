@@ -120,7 +120,7 @@ uint32_t Core::ExecuteMemory(const Decoded& d) {
     if (d.op == Op::kLoadPostImm) regs_[d.rs1] = addr + static_cast<uint32_t>(d.imm);
     if (d.op == Op::kLoadPostReg) regs_[d.rs1] = addr + regs_[d.rs2];
     regs_[d.rd] = value;  // written last: with rd == rs1 the loaded value wins
-    SetHazard(Hazard::kLoad, d.rd);
+    SetHazardBit(Hazard::kLoad, d.rd_bit);
     if (asleep) ClearHazard();  // a blocking peripheral read delivers at wake-up
     if (asleep) wake_rd = d.rd;
   }

@@ -29,8 +29,13 @@ class Core {
 
   // The decoded instruction at pc; throws Fault when pc is outside L1 and L2.
   const Decoded& Fetch() {
-    Decoded* slot = mem_.CodeSlot(pc_);
-    if (!slot) RaiseFetchFault();
+    Decoded* slot;
+    if (Memory::InL2(pc_)) {  // where code almost always is: a slot, no null test
+      slot = mem_.L2CodeSlot(pc_);
+    } else {
+      slot = mem_.CodeSlot(pc_);
+      if (!slot) RaiseFetchFault();
+    }
     if (slot->op == Op::kUndecoded) *slot = Decode(mem_.FetchBits(pc_));
     return *slot;
   }
@@ -90,13 +95,13 @@ class Core {
   }
   // The result of the instruction just executed (register rd) is pending, as `kind`: a load or
   // mul result stalls any reader, an ALU result only a jalr.
-  void SetHazard(Hazard kind, uint8_t rd) {
+  void SetHazard(Hazard kind, uint8_t rd) { SetHazardBit(kind, (1u << rd) & ~1u); }
+  void SetHazardBit(Hazard kind, uint32_t bit) {  // bit: Decoded::rd_bit (x0 never stalls)
     hazard_ = kind;
-    const uint32_t bit = (1u << rd) & ~1u;  // x0 never stalls
     data_hazard_mask_ = (kind == Hazard::kLoad || kind == Hazard::kMul) ? bit : 0u;
     jump_hazard_mask_ = kind == Hazard::kAlu ? bit : 0u;
   }
-  void ClearHazard() { SetHazard(Hazard::kNone, 0); }
+  void ClearHazard() { SetHazardBit(Hazard::kNone, 0); }
   [[noreturn]] void RaiseFetchFault() const;
   [[noreturn]] void RaiseUnmapped(const char* access, uint32_t bytes, const char* where,
                                   uint32_t addr) const;

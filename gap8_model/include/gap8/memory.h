@@ -29,6 +29,9 @@ class Memory {
     return p ? p : L2Span(addr, size);
   }
 
+  static bool InL2(uint32_t addr) { return addr - GAP8_L2_BASE < GAP8_L2_SIZE; }
+  // Decode-cache slot for the instruction at pc, which InL2.
+  Decoded* L2CodeSlot(uint32_t pc) { return &l2_code_[(pc - GAP8_L2_BASE) >> 1]; }
   // Decode-cache slot for the instruction at pc, or nullptr when pc is not in L1 or L2.
   Decoded* CodeSlot(uint32_t pc) {
     uint32_t off = pc - GAP8_L2_BASE;
