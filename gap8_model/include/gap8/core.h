@@ -106,8 +106,9 @@ class Core {
   [[noreturn]] void RaiseUnmapped(const char* access, uint32_t bytes, const char* where,
                                   uint32_t addr) const;
   uint32_t ConsumeHazardStall();
-  uint32_t Load(const Decoded& d, uint32_t addr, uint32_t* cost);
-  void Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost);
+  uint32_t LoadOutsideL1(uint32_t addr, uint32_t bytes, bool misaligned, uint32_t* cost);
+  void StoreOutsideL1(uint32_t addr, uint32_t bytes, bool misaligned, uint32_t value,
+                      uint32_t* cost);
   uint32_t ExecuteMemory(const Decoded& d);
   uint32_t ExecuteMulDiv(const Decoded& d);
   uint32_t ExecuteHwLoopSetup(const Decoded& d);
