@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "core_execute_inline.h"
 #include "gap8/timing.h"
 
 namespace gap8 {
@@ -19,15 +20,21 @@ constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
 Cluster::Cluster(ClusterConfig config) : config_(std::move(config)) {
   config_.cores = std::clamp(config_.cores, 1, static_cast<int>(GAP8_MAX_CORES));
   if (!config_.putc) config_.putc = [](char c) { std::fputc(c, stdout); };
-  for (int i = 0; i < config_.cores; ++i)
-    cores_.push_back(std::make_unique<Core>(i, memory_, this));
+  cores_.reserve(config_.cores);  // never reallocated: a Core& stays valid across Start
+  for (int i = 0; i < config_.cores; ++i) {
+    cores_.emplace_back(i, memory_, this);
+    core_ptr_[i] = &cores_[i];
+  }
   side_.resize(config_.cores);
 }
 
 void Cluster::Start(uint32_t entry) {
-  for (int i = 0; i < num_cores(); ++i) {
-    cores_[i] = std::make_unique<Core>(i, memory_, this);
-    cores_[i]->set_pc(entry);
+  const int n = num_cores();
+  cores_.clear();
+  for (int i = 0; i < n; ++i) {
+    cores_.emplace_back(i, memory_, this);
+    cores_[i].set_pc(entry);
+    core_ptr_[i] = &cores_[i];
     side_[i] = CoreSide{};
   }
   icache_.Reset();
@@ -38,6 +45,7 @@ void Cluster::Start(uint32_t entry) {
   barrier_arrived_ = 0;
   dma_allocated_ = 0;
   exited_ = false;
+  retry_mask_ = 0;
 }
 
 RunResult Cluster::Run() {
@@ -46,14 +54,14 @@ RunResult Cluster::Run() {
     while (!exited_) Advance();
   } catch (const Fault& fault) {
     result.fault = fault;
-    for (auto& c : cores_) result.cycles = std::max(result.cycles, c->time);
+    for (auto& c : cores_) result.cycles = std::max(result.cycles, c.time);
     return result;
   }
   // Cores asleep at exit slept until the end: their cycle counts reach the exit cycle.
   for (auto& c : cores_) {
-    if (c->asleep && c->time < exit_cycle_) {
-      c->slept += exit_cycle_ - c->time;
-      c->time = exit_cycle_;
+    if (c.asleep && c.time < exit_cycle_) {
+      c.slept += exit_cycle_ - c.time;
+      c.time = exit_cycle_;
     }
   }
   result.exit_code = exit_code_;
@@ -67,7 +75,7 @@ void Cluster::Advance() {
   uint64_t first_time = kNever, second_time = kNever;
   uint32_t ready = 0;  // bit per core
   for (int i = 0; i < num_cores(); ++i) {
-    const Core& c = *cores_[i];
+    const Core& c = cores_[i];
     if (c.asleep) continue;
     if (c.time < first_time) {
       second_time = first_time;
@@ -83,13 +91,13 @@ void Cluster::Advance() {
   // A transfer completing at cycle t is visible to instructions issuing at t.
   if (!dma_.Idle() && dma_.NextCompletion() <= first_time) return CompleteDma();
   if (!ready) ReportDeadlock();
-  Core& first = *cores_[std::countr_zero(ready)];  // the lowest id among the earliest
+  Core& first = cores_[std::countr_zero(ready)];  // the lowest id among the earliest
   if (first_time > config_.max_cycles) {
     const Decoded& d = first.Fetch();
     throw Fault{FaultKind::kCycleBudget, first.id(), first.pc(), d.raw,
                 "cycle budget of " + std::to_string(config_.max_cycles) + " cycles exceeded"};
   }
-  if (second_time == first_time) return IssueCycle(ready);
+  if (second_time == first_time) return RunShared(ready, first_time);
   uint64_t limit = std::min(second_time, config_.max_cycles + 1);
   if (!dma_.Idle()) limit = std::min(limit, dma_.NextCompletion());
   RunSolo(first, limit);
@@ -97,6 +105,7 @@ void Cluster::Advance() {
 
 void Cluster::RunSolo(Core& core, uint64_t limit) {
   schedule_changed_ = false;  // a DMA push sets it, so dma_end stays right
+  retry_mask_ &= ~(1u << core.id());
   const uint64_t dma_end = config_.contention ? dma_.BankTrafficEnd() : 0;
   while (core.time < limit && !core.asleep && !exited_ && !schedule_changed_) {
     const Decoded& d = core.Fetch();
@@ -105,49 +114,82 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
       continue;
     }
     if (core.time < dma_end && (core.TcdmBankBit(d) & dma_.BanksAt(core.time))) {
-      LoseBankToDma(core);
+      LoseBank(core);
       continue;
     }
     if (const uint32_t fetch = FetchStall(core)) [[unlikely]] {
-      core.time += core.Execute(d) + fetch;
+      core.time += core.ExecuteInline(d) + fetch;
       core.event(GAP8_EVT_IMISS) += fetch;
       continue;
     }
-    core.time += core.Execute(d);
+    core.time += core.ExecuteInline(d);
   }
 }
 
-// The cores in `ready` (two or more, all at the same cycle) issue, in id order: hazards first,
-// then the TCDM bank arbiter, then execution. The bank bookkeeping has few data-dependent
-// branches: with eight cores interleaved the host's branch predictor guesses poorly.
-void Cluster::IssueCycle(uint32_t ready) {
+// Shared cycles, one after the other while the earliest cycle has two or more cores: the cores
+// in `ready` (all issuing at `cycle`) issue, in id order: hazards first, then the TCDM bank
+// arbiter, then execution. Within the loop only the issuing cores' next issue cycles change, so
+// the loop keeps every core's in `t` and finds the next cycle there. It stops where Advance must
+// decide: one core alone, a DMA completion, the cycle budget, a wake-up or DMA push, the exit.
+// The bank bookkeeping has few data-dependent branches: with eight cores interleaved the host's
+// branch predictor guesses poorly.
+void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
+  std::array<uint64_t, GAP8_MAX_CORES> t;  // next issue cycle per core, kNever asleep or absent
+  t.fill(kNever);
+  for (int i = 0; i < num_cores(); ++i) t[i] = cores_[i].asleep ? kNever : cores_[i].time;
+  const auto issued = [&](const Core& c, int id) { t[id] = c.asleep ? kNever : c.time; };
+  schedule_changed_ = false;  // a wake-up or a DMA push sets it
+  for (;;) {
+    IssueCycle(ready, cycle, issued);
+    if (exited_ || schedule_changed_) return;
+    uint64_t next = kNever;  // all GAP8_MAX_CORES entries: the compiler unrolls both loops
+    for (uint64_t ti : t) next = std::min(next, ti);
+    uint32_t next_ready = 0;
+    for (uint32_t i = 0; i < GAP8_MAX_CORES; ++i)
+      next_ready |= static_cast<uint32_t>(t[i] == next) << i;
+    if ((next_ready & (next_ready - 1)) == 0 || next == kNever || next > config_.max_cycles) return;
+    if (!dma_.Idle() && dma_.NextCompletion() <= next) return;
+    cycle = next;
+    ready = next_ready;
+  }
+}
+
+template <typename Issued>
+inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle, const Issued& issued) {
   std::array<const Decoded*, GAP8_MAX_CORES> insn;  // valid for the cores in `issuing`
+  std::array<uint32_t, GAP8_MAX_CORES> bank_of;     // likewise: the bank bit each asks for
   BankRequests requests{};                          // per bank: bit per requesting core
-  const uint64_t cycle = cores_[std::countr_zero(ready)]->time;  // before any stall moves it
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
+  const bool contention = config_.contention;
+  // Retries kept from a cycle before a code change are void: fetch again.
+  if (memory_.code_epoch() != retry_epoch_) retry_mask_ = 0;
   for (uint32_t m = ready; m != 0; m &= m - 1) {
     const int id = std::countr_zero(m);
-    Core& c = *cores_[id];
-    const Decoded& d = c.Fetch();
-    if (const uint32_t stall = c.TakeHazardStall(d)) {
-      c.time += stall;
-      continue;
+    Core& c = *core_ptr_[id];
+    uint32_t bank_bit;
+    if ((retry_mask_ >> id) & 1u) {
+      insn[id] = retry_insn_[id];
+      bank_bit = retry_bank_[id];
+    } else {
+      const Decoded& d = c.Fetch();
+      if (const uint32_t stall = c.TakeHazardStall(d)) {
+        c.time += stall;
+        issued(c, id);
+        continue;
+      }
+      insn[id] = &d;
+      bank_bit = contention ? c.TcdmBankBit(d) : 0u;
     }
-    insn[id] = &d;
+    bank_of[id] = bank_bit;
     issuing |= 1u << id;
-    const uint32_t bank_bit = config_.contention ? c.TcdmBankBit(d) : 0u;
     requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
     shared_banks |= banks & bank_bit;
     banks |= bank_bit;
   }
+  uint32_t losers = 0;  // each retries next cycle
   // Banks the DMA takes this cycle: every core requesting one retries (the DMA always wins).
-  if (const uint32_t dma_banks = config_.contention ? dma_.BanksAt(cycle) & banks : 0) {
-    for (uint32_t b = dma_banks; b != 0; b &= b - 1) {
-      const int bank = std::countr_zero(b);
-      for (uint32_t l = requests[bank]; l != 0; l &= l - 1)
-        LoseBankToDma(*cores_[std::countr_zero(l)]);
-      issuing &= ~requests[bank];
-    }
+  if (const uint32_t dma_banks = contention ? dma_.BanksAt(cycle) & banks : 0) {
+    for (uint32_t b = dma_banks; b != 0; b &= b - 1) losers |= requests[std::countr_zero(b)];
     banks &= ~dma_banks;
     shared_banks &= ~dma_banks;
   }
@@ -156,12 +198,24 @@ void Cluster::IssueCycle(uint32_t ready) {
     const int bank = std::countr_zero(b);
     bank_priority_[bank] = NextCore(std::countr_zero(requests[bank]));
   }
-  if (shared_banks != 0) issuing &= ~ArbitrateSharedBanks(shared_banks, requests);
+  if (shared_banks != 0) losers |= ArbitrateSharedBanks(shared_banks, requests);
+  retry_mask_ = (retry_mask_ & ~ready) | losers;
+  retry_epoch_ = memory_.code_epoch();
+  for (uint32_t l = losers; l != 0; l &= l - 1) {
+    const int id = std::countr_zero(l);
+    LoseBank(*core_ptr_[id]);
+    retry_insn_[id] = insn[id];
+    retry_bank_[id] = bank_of[id];
+    issued(*core_ptr_[id], id);
+  }
+  issuing &= ~losers;
   for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
-    Core& c = *cores_[std::countr_zero(m)];
+    const int id = std::countr_zero(m);
+    Core& c = *core_ptr_[id];
     const uint32_t fetch = FetchStall(c);
-    c.time += c.Execute(*insn[c.id()]) + fetch;
+    c.time += c.ExecuteInline(*insn[id]) + fetch;
     c.event(GAP8_EVT_IMISS) += fetch;
+    issued(c, id);
   }
 }
 
@@ -175,37 +229,24 @@ uint32_t Cluster::ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests
     const uint32_t from_pointer = mask & ~((1u << bank_priority_[b]) - 1u);
     const int winner = std::countr_zero(from_pointer ? from_pointer : mask);
     bank_priority_[b] = NextCore(winner);
-    const uint32_t losers = mask & ~(1u << winner);
-    for (uint32_t l = losers; l != 0; l &= l - 1) {
-      Core& loser = *cores_[std::countr_zero(l)];
-      loser.time += timing::kTcdmRetry;
-      loser.event(GAP8_EVT_TCDM_CONT) += timing::kTcdmRetry;
-    }
-    all_losers |= losers;
+    all_losers |= mask & ~(1u << winner);
   }
   return all_losers;
 }
 
 // The transfer's event goes to every core (broadcast, as PMSIS asks) or to the one that queued
 // it (mchan_v6 Mchan_channel::trigger_event); a core waiting for it wakes (eu_v3 check_state).
-// GVSOC's TCDM bank serves one access a cycle, first come first served; this model lets the
-// DMA's pieces come first, so its schedule (dma.cpp) never moves.
-void Cluster::LoseBankToDma(Core& core) {
-  core.time += timing::kTcdmRetry;
-  core.event(GAP8_EVT_TCDM_CONT) += timing::kTcdmRetry;
-}
-
 void Cluster::CompleteDma() {
   const uint64_t at = dma_.NextCompletion();
   const Dma::Completion done = dma_.CompleteNext(memory_);
   if (!done.event) return;
   for (auto& c : cores_) {
-    if (!done.broadcast && static_cast<uint32_t>(c->id()) != done.core) continue;
-    CoreSide& s = side_[c->id()];
+    if (!done.broadcast && static_cast<uint32_t>(c.id()) != done.core) continue;
+    CoreSide& s = side_[c.id()];
     s.evt_status |= 1u << GAP8_EVT_DMA;
-    if (c->asleep && s.wait == Wait::kEvent && (s.evt_status & s.evt_mask)) {
+    if (c.asleep && s.wait == Wait::kEvent && (s.evt_status & s.evt_mask)) {
       s.evt_status &= ~s.evt_mask;
-      WakeCore(*c, at, 0);
+      WakeCore(c, at, 0);
     }
   }
 }

@@ -122,10 +122,9 @@ uint32_t Cluster::BarrierWait(Core& core, uint32_t* extra) {
   }
   barrier_arrived_ = 0;
   for (auto& c : cores_) {
-    const uint32_t b = 1u << c->id();
-    if (c.get() != &core && (barrier_target_ & b) && c->asleep &&
-        side_[c->id()].wait == Wait::kBarrier)
-      WakeCore(*c, core.time, 0);
+    const uint32_t b = 1u << c.id();
+    if (&c != &core && (barrier_target_ & b) && c.asleep && side_[c.id()].wait == Wait::kBarrier)
+      WakeCore(c, core.time, 0);
   }
   if (!(barrier_target_ & bit)) {
     SleepOn(core, Wait::kBarrier);  // not a target: nothing will wake it
@@ -158,7 +157,7 @@ void Cluster::EventUnitWrite(Core& core, uint32_t addr, uint32_t value) {
   }
   // Dispatch push: every other team core gets the value; one waiting for it wakes with it.
   for (int i = 0; i < num_cores(); ++i) {
-    Core& target = *cores_[i];
+    Core& target = cores_[i];
     if (&target == &core || !((dispatch_team_ >> i) & 1u)) continue;
     CoreSide& s = side_[i];
     if (target.asleep && s.wait == Wait::kDispatch) {

@@ -154,9 +154,9 @@ Decoded DecodeFields(uint32_t bits) {
   }
 }
 
-// The access facts of a load or store (see Decoded::access): what TcdmBankBit and ExecuteMemory
-// need, without a switch on op per instruction.
-void AddAccessFacts(Decoded& d) {
+// The derived facts (see Decoded::access and below): what TcdmBankBit, ExecuteMemory and the
+// interpreter need, without a switch on op or a shift per instruction.
+void AddDerivedFacts(Decoded& d) {
   switch (d.op) {
     case Op::kLoad:
     case Op::kElw:
@@ -184,13 +184,17 @@ void AddAccessFacts(Decoded& d) {
     default:
       break;
   }
+  d.tcdm = (d.access & (kAccessLoad | kAccessStore)) != 0;
+  d.access_imm = (d.access & kAccessImmOffset) ? d.imm : 0;
+  d.rvc = d.size == 2;
+  d.rd_bit = (1u << d.rd) & ~1u;
 }
 
 }  // namespace
 
 Decoded Decode(uint32_t bits) {
   Decoded d = DecodeFields(bits);
-  AddAccessFacts(d);
+  AddDerivedFacts(d);
   return d;
 }
 

@@ -43,6 +43,7 @@ void Dma::TakeBank(uint64_t cycle, uint32_t addr) {
   const uint64_t i = cycle - banks_base_;
   if (i >= banks_.size()) banks_.resize(i + 1, 0);
   banks_[i] |= static_cast<uint16_t>(1u << ((addr >> 2) & (GAP8_L1_BANKS - 1)));
+  banks_size_ = banks_.size();
 }
 
 // mchan_v6 check_loc_transfer_handler: a piece ends at the next 32-bit boundary or the burst's
@@ -130,6 +131,7 @@ Dma::Completion Dma::CompleteNext(Memory& memory) {
     banks_base_ += drop;
     PickNext();
   }
+  banks_size_ = banks_.size();
   return t.who;
 }
 

@@ -35,10 +35,13 @@ struct RunResult {
 class Cluster {
  public:
   explicit Cluster(ClusterConfig config);
+  // The cores point back at their cluster, and it at them: not copyable or movable.
+  Cluster(const Cluster&) = delete;
+  Cluster& operator=(const Cluster&) = delete;
 
   Memory& memory() { return memory_; }
   const ICache& icache() const { return icache_; }
-  Core& core(int i) { return *cores_[i]; }
+  Core& core(int i) { return cores_[i]; }
   int num_cores() const { return static_cast<int>(cores_.size()); }
 
   // Every core starts at `entry` at cycle 0 (start-up code splits them by core id).
@@ -77,9 +80,14 @@ class Cluster {
   static constexpr int kNoBank = GAP8_L1_BANKS;
   using BankRequests = std::array<uint32_t, GAP8_L1_BANKS + 1>;
 
-  void IssueCycle(uint32_t ready);
+  void RunShared(uint32_t ready, uint64_t cycle);
+  // One shared cycle; issued(core, id) is called for each core of `ready` whose next issue cycle
+  // is known (all but those after an exit).
+  template <typename Issued>
+  void IssueCycle(uint32_t ready, uint64_t cycle, const Issued& issued);
   // Cycles the core waits for the instruction at its pc: 0 while the prefetch buffer holds it
-  // (the fast path), else the instruction-cache accesses of FetchLines. Counted in IMISS.
+  // (the fast path), else the instruction-cache accesses of FetchLines. Counted in IMISS after
+  // the instruction executed (it may read the counters itself).
   uint32_t FetchStall(Core& core) {
     if (core.pc() - core.prefetch_base <= timing::kPrefetchBytes - timing::kOpcodeMaxBytes)
       return 0;
@@ -90,7 +98,13 @@ class Cluster {
   // Round robin: the core after `id` (the pointer a bank's winner leaves behind).
   int NextCore(int id) const { return id + 1 == num_cores() ? 0 : id + 1; }
   void CompleteDma();
-  void LoseBankToDma(Core& core);
+  // The core lost its TCDM bank this cycle (to another core or to the DMA): it retries next.
+  // GVSOC's TCDM bank serves one access a cycle, first come first served; this model lets the
+  // DMA's pieces come first, so its schedule (dma.cpp) never moves.
+  static void LoseBank(Core& core) {
+    core.time += timing::kTcdmRetry;
+    core.event(GAP8_EVT_TCDM_CONT) += timing::kTcdmRetry;
+  }
   [[noreturn]] void ReportDeadlock();
   void SleepOn(Core& core, Wait reason);
   void WakeCore(Core& core, uint64_t at, uint32_t value);
@@ -105,7 +119,8 @@ class Cluster {
 
   ClusterConfig config_;
   Memory memory_;
-  std::vector<std::unique_ptr<Core>> cores_;
+  std::vector<Core> cores_;  // contiguous: the scheduler reads every core's time each cycle
+  std::array<Core*, GAP8_MAX_CORES> core_ptr_{};  // &cores_[i]: one load in the issue loops
   std::vector<CoreSide> side_;
   Dma dma_;
   ICache icache_;
@@ -116,7 +131,15 @@ class Cluster {
   uint32_t barrier_arrived_ = 0;
   uint32_t dma_allocated_ = 0;                      // bit per DMA counter
   std::array<int, GAP8_L1_BANKS> bank_priority_{};  // round-robin: core served first next time
-  bool schedule_changed_ = false;  // a wake-up or DMA push: the solo loop must yield
+  // A core that lost its bank retries next cycle the same instruction at the same address (its
+  // registers cannot change meanwhile): its Decoded and bank bit are kept here (bit per core in
+  // retry_mask_), valid while the code epoch is retry_epoch_, so the retry needs no fetch, hazard
+  // test or address. A core running alone drops its retry.
+  uint32_t retry_mask_ = 0;
+  uint64_t retry_epoch_ = 0;
+  std::array<const Decoded*, GAP8_MAX_CORES> retry_insn_{};
+  std::array<uint32_t, GAP8_MAX_CORES> retry_bank_{};
+  bool schedule_changed_ = false;  // a wake-up or DMA push: RunSolo and RunShared must yield
   bool exited_ = false;
   int exit_code_ = 0;
   uint64_t exit_cycle_ = 0;

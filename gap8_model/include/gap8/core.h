@@ -29,8 +29,13 @@ class Core {
 
   // The decoded instruction at pc; throws Fault when pc is outside L1 and L2.
   const Decoded& Fetch() {
-    Decoded* slot = mem_.CodeSlot(pc_);
-    if (!slot) RaiseFetchFault();
+    Decoded* slot;
+    if (Memory::InL2(pc_)) {  // where code almost always is: a slot, no null test
+      slot = mem_.L2CodeSlot(pc_);
+    } else {
+      slot = mem_.CodeSlot(pc_);
+      if (!slot) RaiseFetchFault();
+    }
     if (slot->op == Op::kUndecoded) *slot = Decode(mem_.FetchBits(pc_));
     return *slot;
   }
@@ -47,12 +52,13 @@ class Core {
   // Branch-free: the cluster calls it for every core in every shared cycle.
   uint32_t TcdmBankBit(const Decoded& d) const {
     const uint32_t addr = AccessAddress(d);
-    const bool accesses = (d.access & (kAccessLoad | kAccessStore)) != 0;
-    const bool in_l1 = addr - GAP8_L1_BASE < GAP8_L1_SIZE;
-    return static_cast<uint32_t>(accesses & in_l1) << ((addr >> 2) & (GAP8_L1_BANKS - 1));
+    const uint32_t in_l1 = addr - GAP8_L1_BASE < GAP8_L1_SIZE;
+    return (in_l1 & d.tcdm) << ((addr >> 2) & (GAP8_L1_BANKS - 1));
   }
   // Executes d (the instruction at pc) and returns its cost in cycles. Throws Fault.
   uint32_t Execute(const Decoded& d);
+  // The same, inline (src/core_execute_inline.h): the cluster's issue loops use it.
+  uint32_t ExecuteInline(const Decoded& d);
   // Fetch + Execute, ignoring hazards: the architectural step the differential test compares.
   uint32_t Step() { return Execute(Fetch()); }
 
@@ -83,26 +89,26 @@ class Core {
   enum class Hazard : uint8_t { kNone, kLoad, kMul, kAlu };
 
   // Address of a load or store (post-increment forms use rs1 unmodified). x0 reads 0, so an
-  // access without an offset register adds regs_[0].
+  // access without an offset register adds regs_[0]; one without an immediate adds 0.
   uint32_t AccessAddress(const Decoded& d) const {
-    const uint32_t imm_mask = 0u - ((d.access & kAccessImmOffset) != 0);  // all ones or zero
-    return regs_[d.rs1] + regs_[d.offset_reg] + (static_cast<uint32_t>(d.imm) & imm_mask);
+    return regs_[d.rs1] + regs_[d.offset_reg] + static_cast<uint32_t>(d.access_imm);
   }
   // The result of the instruction just executed (register rd) is pending, as `kind`: a load or
   // mul result stalls any reader, an ALU result only a jalr.
-  void SetHazard(Hazard kind, uint8_t rd) {
+  void SetHazard(Hazard kind, uint8_t rd) { SetHazardBit(kind, (1u << rd) & ~1u); }
+  void SetHazardBit(Hazard kind, uint32_t bit) {  // bit: Decoded::rd_bit (x0 never stalls)
     hazard_ = kind;
-    const uint32_t bit = (1u << rd) & ~1u;  // x0 never stalls
     data_hazard_mask_ = (kind == Hazard::kLoad || kind == Hazard::kMul) ? bit : 0u;
     jump_hazard_mask_ = kind == Hazard::kAlu ? bit : 0u;
   }
-  void ClearHazard() { SetHazard(Hazard::kNone, 0); }
+  void ClearHazard() { SetHazardBit(Hazard::kNone, 0); }
   [[noreturn]] void RaiseFetchFault() const;
   [[noreturn]] void RaiseUnmapped(const char* access, uint32_t bytes, const char* where,
                                   uint32_t addr) const;
   uint32_t ConsumeHazardStall();
-  uint32_t Load(const Decoded& d, uint32_t addr, uint32_t* cost);
-  void Store(const Decoded& d, uint32_t addr, uint32_t value, uint32_t* cost);
+  uint32_t LoadOutsideL1(uint32_t addr, uint32_t bytes, bool misaligned, uint32_t* cost);
+  void StoreOutsideL1(uint32_t addr, uint32_t bytes, bool misaligned, uint32_t value,
+                      uint32_t* cost);
   uint32_t ExecuteMemory(const Decoded& d);
   uint32_t ExecuteMulDiv(const Decoded& d);
   uint32_t ExecuteHwLoopSetup(const Decoded& d);
@@ -125,5 +131,25 @@ class Core {
   std::array<uint64_t, GAP8_EVT_COUNT> events_{};
   PerfCounters perf_;
 };
+
+// True when the instruction at pc is the last one of an active hardware loop.
+inline bool Core::AtActiveLoopEnd() const {
+  return (loop_count_[0] != 0 && pc_ == loop_end_[0]) ||
+         (loop_count_[1] != 0 && pc_ == loop_end_[1]);
+}
+
+// The pc after a non-jumping instruction: a hardware loop's end sends it back to the start.
+inline uint32_t Core::NextSequentialPc(uint32_t next) {
+  if (!loops_armed_) return next;
+  for (int l = 0; l < 2; ++l) {  // loop 0 is the inner loop: it has priority
+    if (loop_count_[l] != 0 && pc_ == loop_end_[l]) {
+      if (loop_start_[l] == loop_end_[l])
+        RaiseHwLoop("a hardware loop body must have at least 2 instructions");
+      if (--loop_count_[l] != 0) return loop_start_[l];
+    }
+  }
+  loops_armed_ = loop_count_[0] != 0 || loop_count_[1] != 0;
+  return next;
+}
 
 }  // namespace gap8

@@ -88,9 +88,13 @@ struct Decoded {
   uint8_t loop = 0;       // lp.*: hardware loop index 0 or 1
   uint32_t raw = 0;       // the instruction bits, for fault messages
   // Facts derived from the fields above once, at decode time, so the per-cycle paths (bank
-  // arbitration, ExecuteMemory) read them instead of switching on op every time.
+  // arbitration, ExecuteMemory, the issue loops) read them instead of computing them each time.
   uint8_t access = 0;      // AccessFlags: does it load or store, and how the address is formed
   uint8_t offset_reg = 0;  // register added to rs1 to form the address (0: none; x0 reads 0)
+  uint8_t tcdm = 0;        // 1 for any load or store (it asks for a TCDM bank when in L1)
+  uint8_t rvc = 0;         // 1 for a compressed instruction (size 2): counted in RVC
+  int32_t access_imm = 0;  // added to rs1 + offset_reg to form the address: imm or 0
+  uint32_t rd_bit = 0;     // 1 << rd, 0 for x0: the register a pending result stalls readers of
 };
 
 enum AccessFlags : uint8_t {

@@ -49,10 +49,10 @@ class Dma {
   // TCDM banks (bit per bank) the DMA's pieces take at `cycle`; 0 outside its traffic.
   uint32_t BanksAt(uint64_t cycle) const {
     const uint64_t i = cycle - banks_base_;
-    return i < banks_.size() ? banks_[i] : 0u;
+    return i < banks_size_ ? banks_[i] : 0u;
   }
   // First cycle after the last one in which the DMA takes a bank.
-  uint64_t BankTrafficEnd() const { return banks_base_ + banks_.size(); }
+  uint64_t BankTrafficEnd() const { return banks_base_ + banks_size_; }
 
  private:
   struct Transfer {
@@ -77,6 +77,7 @@ class Dma {
   LocalStream to_l1_, to_l2_;
   std::deque<uint16_t> banks_;  // bank mask per cycle from banks_base_
   uint64_t banks_base_ = 0;
+  uint64_t banks_size_ = 0;  // banks_.size(), which a deque computes: read every cycle
   std::vector<uint32_t> pending_ = std::vector<uint32_t>(16, 0);
 };
 

@@ -29,6 +29,9 @@ class Memory {
     return p ? p : L2Span(addr, size);
   }
 
+  static bool InL2(uint32_t addr) { return addr - GAP8_L2_BASE < GAP8_L2_SIZE; }
+  // Decode-cache slot for the instruction at pc, which InL2.
+  Decoded* L2CodeSlot(uint32_t pc) { return &l2_code_[(pc - GAP8_L2_BASE) >> 1]; }
   // Decode-cache slot for the instruction at pc, or nullptr when pc is not in L1 or L2.
   Decoded* CodeSlot(uint32_t pc) {
     uint32_t off = pc - GAP8_L2_BASE;
@@ -43,6 +46,10 @@ class Memory {
 
   // 32 bits from pc (the memories carry 4 bytes of zero padding past their end).
   uint32_t FetchBits(uint32_t pc);
+
+  // Changes whenever a decoded instruction may have been forgotten: a Decoded read from the
+  // cache is still the one at its pc while the epoch is the same.
+  uint64_t code_epoch() const { return code_epoch_; }
 
   // Forgets decoded instructions overlapping [addr, addr + size): the bytes were rewritten.
   void InvalidateCode(uint32_t addr, uint32_t size) {
@@ -63,6 +70,7 @@ class Memory {
 
   std::vector<uint8_t> l1_, l2_;
   bool l1_has_code_ = false;
+  uint64_t code_epoch_ = 0;
   std::vector<Decoded> l1_code_, l2_code_;
 };
 
