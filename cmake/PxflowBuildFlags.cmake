@@ -37,7 +37,7 @@ endif()
 # at -O2 in a sanitizer build (the last -O on the command line wins), where the rest is at -O1
 # (ci/run-tests.sh: -O1 compiles in half the time of -O2). The instrumentation is the same at
 # either level. The reference answers every `pxflow check` and ref::integer_search took 56 % of the
-# samples of the six slowest ASan tests (docs/harness.md, "Where the sanitizer stage's time goes"); the CPU
+# samples of the six slowest ASan tests (docs/measurements/sanitizer-time.md, 2026-12-03); the CPU
 # kernels and the SAD ceilings run in every check and bench, and the corpus makes every check's
 # frames (its box blur was 17 % of an ASan fuzz check). Other builds are left as they are.
 function(pxflow_hot_code)

@@ -207,7 +207,8 @@ def mutants(path, text):
 OPERATORS = ("arith", "rel", "eq", "logic", "bit", "shift", "acc-drop", "acc-swap", "incdec",
              "minmax", "const+1", "const-1", "stmt-del", "loop+1", "loop-1", "term-drop", "muldiv")
 # What a campaign draws from unless told otherwise (`--operators`): the operators of the
-# campaigns docs/harness.md reports, so that a seed draws the same mutants as it did there.
+# campaigns docs/measurements/mutation-campaigns.md logs, so that a seed draws the same mutants as
+# it did there.
 DEFAULT_OPERATORS = OPERATORS[:15]
 # Mutants that make a kernel read or write out of bounds more often than they change a result: a
 # length or a bound one off, a term of a size dropped, a size's product turned into a quotient.
