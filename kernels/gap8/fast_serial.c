@@ -1,6 +1,6 @@
-/* The fast variant's serial parts on core 0 (beyond the paper), replacing the weak defaults of
- * flow_main.c (flow_kernel.h): the records cleared by a hardware loop, and the estimate in
- * integers. */
+/* The fast variant's parts around the POIs (beyond the paper): the records cleared by the team,
+ * not by core 0 (flow_main.c's weak flow_clear_words replaced by nothing), and SPEC §5's estimate
+ * in integers, by the team at the end of the fork (the hooks of flow_kernel.h). */
 #define PXFLOW_GAP8_FAST_HOOKS 1
 #include "fast_float.h"
 #include "fast_tables.h"

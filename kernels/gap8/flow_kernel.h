@@ -38,10 +38,9 @@ uint32_t flow_integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, 
 /* The team's entry point: every POI of this core, as flow_poi.c computes it. */
 void flow_team_entry(void *ctx);
 
-/* Hooks with a plain default (weak, in flow_main.c) that the fast variant
- * replaces: clearing `bytes` (a multiple of 4) of words, and HF's V / Wt over bins lo..hi
- * (SPEC §5: accumulated in float, but exact, so integer sums converted once give the same
- * bits). */
+/* Hooks with a plain default (weak, in flow_main.c): clearing `bytes` (a multiple of 4) of words
+ * (the fast variant's does nothing: its team clears the records), and HF's V / Wt over bins
+ * lo..hi (SPEC §5: accumulated in float, but exact; no variant replaces it any more). */
 void flow_clear_words(void *dst, uint32_t bytes);
 float flow_window_mean(const uint16_t *hist, int lo, int hi);
 

@@ -23,13 +23,13 @@ static void build_grid(const pxflow_param_block *p, uint16_t *xy) {
   }
 }
 
-/* Weak: the fast variant brings a hardware-loop version (flow_kernel.h). */
+/* Weak: the fast variant's does nothing, its team clears the records (flow_kernel.h). */
 __attribute__((weak)) void flow_clear_words(void *dst, uint32_t bytes) {
   uint32_t *w = dst;
   for (uint32_t n = 0; n < bytes / 4; ++n) w[n] = 0;
 }
 
-/* Weak: the fast variant sums HF's window in integers and converts once (flow_kernel.h). */
+/* Weak (a hook of the past: the fast variant now brings its whole estimate, flow_kernel.h). */
 __attribute__((weak)) float flow_window_mean(const uint16_t *hist, int lo, int hi) {
   return pxflow_window_mean_float(hist, lo, hi);
 }

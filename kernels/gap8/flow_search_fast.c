@@ -5,13 +5,15 @@
  * 2: two instructions per 4 pixels), A the sum of prev's block (once per POI) and B the
  * candidate's block sum (the table, -B loaded as the accumulator's start). Each candidate reads
  * its 16 words aligned from the shifted copy of next that matches its alignment, so the
- * candidates are taken in four groups by dx mod 4 (one asm block per group: hardware loop 1
- * over the 2S+1 rows of displacements, loop 0 over the group's candidates in a row). No branch in
- * any loop: the best is kept by p.minu on the key (SAD + A) << 16 | (the candidate's table
- * address, low 16 bits): the smallest SAD, then the smallest table address, i.e. the first
- * candidate in raster order (the address grows with (y + dy) * W + x + dx), whatever the order
- * in which the groups are searched. SAD + A < 2^15 and the table lies in L1 (64 KiB), so the key
- * never wraps.
+ * candidates are taken in four groups by dx mod 4, all in one asm block (prev's words loaded
+ * once per POI): per group, hardware loop 1 over pairs of rows of displacements, loop 0 over
+ * the group's candidates in a row, two at a time, (dx, dy) and (dx, dy + 1), which share 7 of
+ * the 9 rows of next they read (18 loads for two candidates instead of 32); then the last row
+ * (2S + 1 is odd) one candidate at a time. No branch in any loop: the best is kept by p.minu on
+ * the key (SAD + A) << 16 | (the candidate's table address, low 16 bits): the smallest SAD, then
+ * the smallest table address, i.e. the first candidate in raster order (the address grows with
+ * (y + dy) * W + x + dx), whatever the order in which the candidates are searched. SAD + A <
+ * 2^15 and the table lies in L1 (64 KiB), so the key never wraps.
  *
  * The held-register path (any other frame): prev's block in 16 registers for all candidates,
  * 4 instructions per 4-pixel SAD, raster order by rows (search_raster.h). */
