@@ -20,13 +20,14 @@ void flow_clear_words(void *dst, uint32_t bytes) { (void)dst, (void)bytes; }
 extern volatile pxflow_gap8_params pxflow_params; /* flow_main.c */
 
 typedef struct {
-  uint32_t hist[8][PXFLOW_MAX_BINS]; /* per core; rows of absent cores stay 0 */
-  uint32_t merged[PXFLOW_MAX_BINS];  /* the cores' rows added up */
-  int32_t count[8], sum[8][2];       /* per core: accepted POIs, sums of hx and hy */
-  uint32_t bits[2];                  /* flow_x, flow_y as float bits */
+  uint32_t hist[8][PXFLOW_MAX_BINS];    /* per core; rows of absent cores stay 0 */
+  uint32_t merged[PXFLOW_MAX_BINS + 4]; /* bin b at b + 2, the cores' rows added up; 2 bins of 0
+                                           on each side, never written */
+  uint32_t bits[2];                     /* flow_x, flow_y as float bits */
+  int32_t count[8], sum[8][2];          /* per core: accepted POIs, sums of hx and hy */
 } estimate_team;
 
-PI_L1 estimate_team g_estimate = {{{0}}, {0}, {0}, {{0}}, {0}};
+PI_L1 estimate_team g_estimate = {{{0}}, {0}, {0}, {0}, {{0}}};
 
 void fast_team_begin(const flow_ctx *c, uint32_t core) {
   for (uint32_t n = core; n < c->pois; n += c->cores) { /* the 8 words of each record */
@@ -57,17 +58,18 @@ static uint32_t axis_bits(uint32_t hist_filter, uint32_t s, uint32_t cores, uint
     for (uint32_t k = 0; k < cores; ++k) sum += g_estimate.sum[k][a];
     return fast_mean_bits(sum, count);
   }
-  const uint32_t *m = g_estimate.merged;
+  const uint32_t *m = g_estimate.merged + 2; /* m[-2], m[-1], m[nbins], m[nbins + 1] are 0 */
   uint32_t peak = 0, top = m[0] >> shift & 0xFFFFu;
   for (uint32_t b = 1; b < nbins; ++b) {
     const uint32_t h = m[b] >> shift & 0xFFFFu;
     if (h > top) peak = b, top = h; /* strict: the first maximum wins */
   }
-  const uint32_t lo = peak < 2 ? 0 : peak - 2, hi = peak + 2 < nbins ? peak + 2 : nbins - 1;
+  /* SPEC's window, bins max(p - 2, 0) .. min(p + 2, nbins - 1): the bins beyond the histogram
+   * are 0 here, so p - 2 .. p + 2 gives the same sums (b < 0 only where h = 0). */
   uint32_t value = 0, weight = 0; /* the spec's float sums, exact: these integers */
-  for (uint32_t b = lo; b <= hi; ++b) {
+  for (int32_t b = (int32_t)peak - 2; b <= (int32_t)peak + 2; ++b) {
     const uint32_t h = m[b] >> shift & 0xFFFFu;
-    value += b * h;
+    value += (uint32_t)b * h;
     weight += h;
   }
   return fast_filtered_bits(value, weight, 2 * s + 1);
@@ -85,7 +87,7 @@ void variant_finish(const flow_ctx *c, uint32_t core) {
   for (uint32_t b = core; b < pxflow_hist_bins(s); b += cores) {
     uint32_t both = 0;
     for (uint32_t k = 0; k < cores; ++k) both += g_estimate.hist[k][b];
-    g_estimate.merged[b] = both;
+    g_estimate.merged[b + 2] = both;
   }
   team_sync();
   if (core >= 2) return;
