@@ -19,34 +19,40 @@ void flow_clear_words(void *dst, uint32_t bytes) { (void)dst, (void)bytes; }
  * fast_float.h), so the halves never carry into each other and one 32-bit add sums both axes. */
 extern volatile pxflow_gap8_params pxflow_params; /* flow_main.c */
 
+/* Core k's counts: its histogram row, its accepted POIs and the sums of their hx and hy. */
 typedef struct {
-  uint32_t hist[8][PXFLOW_MAX_BINS];    /* per core; rows of absent cores stay 0 */
+  uint32_t bin[PXFLOW_MAX_BINS];
+  int32_t count, sum[2];
+} estimate_row;
+
+typedef struct {
+  estimate_row row[8];                  /* per core; rows of absent cores stay 0 */
   uint32_t merged[PXFLOW_MAX_BINS + 4]; /* bin b at b + 2, the cores' rows added up; 2 bins of 0
                                            on each side, never written */
   uint32_t bits[2];                     /* flow_x, flow_y as float bits */
-  int32_t count[8], sum[8][2];          /* per core: accepted POIs, sums of hx and hy */
+  int32_t count;                        /* accepted POIs, all cores */
 } estimate_team;
 
-PI_L1 estimate_team g_estimate = {{{0}}, {0}, {0}, {0}, {{0}}};
+PI_L1 estimate_team g_estimate = {{{{0}, 0, {0}}}, {0}, {0}, 0};
 
 void fast_team_begin(const flow_ctx *c, uint32_t core) {
   for (uint32_t n = core; n < c->pois; n += c->cores) { /* the 8 words of each record */
     uint32_t *r = (uint32_t *)&c->records[n];
     r[0] = r[1] = r[2] = r[3] = r[4] = r[5] = r[6] = r[7] = 0;
   }
-  uint32_t *row = g_estimate.hist[core];
-  for (uint32_t b = 0; b < pxflow_hist_bins(c->search_radius); ++b) row[b] = 0;
-  g_estimate.count[core] = 0;
-  g_estimate.sum[core][0] = g_estimate.sum[core][1] = 0;
+  estimate_row *row = &g_estimate.row[core];
+  for (uint32_t b = 0; b < pxflow_hist_bins(c->search_radius); ++b) row->bin[b] = 0;
+  row->count = row->sum[0] = row->sum[1] = 0;
 }
 
 void variant_accepted(const flow_ctx *c, const pxflow_poi_record *rec) {
-  const uint32_t core = (uint32_t)pi_core_id(), zero = 2 * c->search_radius + 1;
-  g_estimate.hist[core][rec->hx + zero] += 1;
-  g_estimate.hist[core][rec->hy + zero] += 1u << 16;
-  g_estimate.count[core] += 1;
-  g_estimate.sum[core][0] += rec->hx;
-  g_estimate.sum[core][1] += rec->hy;
+  estimate_row *row = &g_estimate.row[pi_core_id()];
+  const uint32_t zero = 2 * c->search_radius + 1;
+  row->bin[rec->hx + zero] += 1;
+  row->bin[rec->hy + zero] += 1u << 16;
+  row->count += 1;
+  row->sum[0] += rec->hx;
+  row->sum[1] += rec->hy;
 }
 
 /* Axis a's flow as float bits (count > MINCOUNT). */
@@ -55,7 +61,7 @@ static uint32_t axis_bits(uint32_t hist_filter, uint32_t s, uint32_t cores, uint
   const uint32_t nbins = pxflow_hist_bins(s), shift = 16 * a;
   if (!hist_filter) {
     int32_t sum = 0;
-    for (uint32_t k = 0; k < cores; ++k) sum += g_estimate.sum[k][a];
+    for (uint32_t k = 0; k < cores; ++k) sum += g_estimate.row[k].sum[a];
     return fast_mean_bits(sum, count);
   }
   const uint32_t *m = g_estimate.merged + 2; /* m[-2], m[-1], m[nbins], m[nbins + 1] are 0 */
@@ -75,25 +81,22 @@ static uint32_t axis_bits(uint32_t hist_filter, uint32_t s, uint32_t cores, uint
   return fast_filtered_bits(value, weight, 2 * s + 1);
 }
 
-static int32_t total_count(uint32_t cores) {
-  int32_t count = 0;
-  for (uint32_t k = 0; k < cores; ++k) count += g_estimate.count[k];
-  return count;
-}
-
 void variant_finish(const flow_ctx *c, uint32_t core) {
   const uint32_t cores = c->cores, s = c->search_radius;
   team_sync(); /* every POI counted */
   for (uint32_t b = core; b < pxflow_hist_bins(s); b += cores) {
     uint32_t both = 0;
-    for (uint32_t k = 0; k < cores; ++k) both += g_estimate.hist[k][b];
+    for (uint32_t k = 0; k < cores; ++k) both += g_estimate.row[k].bin[b];
     g_estimate.merged[b + 2] = both;
   }
   team_sync();
   if (core >= 2) return;
-  const int32_t count = total_count(cores);
+  int32_t count = 0;
+  for (uint32_t k = 0; k < cores; ++k) count += g_estimate.row[k].count;
+  if (core == 0) g_estimate.count = count;
   const uint32_t min_count = pxflow_params.spec.min_count; /* in L2 */
   const uint32_t hist_filter = pxflow_params.spec.hist_filter;
+  /* core 0: x, core 1: y; a single core: both */
   for (uint32_t a = core; a < 2; a += cores)
     g_estimate.bits[a] =
         count > (int32_t)min_count ? axis_bits(hist_filter, s, cores, a, (uint32_t)count) : 0;
@@ -102,7 +105,7 @@ void variant_finish(const flow_ctx *c, uint32_t core) {
 void flow_estimate(const pxflow_poi_record *records, uint32_t pois, const pxflow_gap8_params *p,
                    pxflow_gap8_result *out) {
   (void)records, (void)pois; /* the team has counted them (variant_accepted) */
-  const int32_t count = total_count(p->cores);
+  const int32_t count = g_estimate.count;
   out->estimate.meancount = count;
   out->estimate.quality = 0;
   if (count > (int32_t)p->spec.min_count)
