@@ -146,11 +146,11 @@ typedef struct {
   uint32_t n, pairs, pb_step, pt_step;
 } search_group;
 
-/* The groups of one POI, ended by pb = 0, and A (the byte sum of prev's block), which the asm
- * writes. */
+/* The groups of one POI, ended by pb = 0 (at most 4 and the end), and A (the byte sum of prev's
+ * block), which the asm writes before it reads the groups. */
 typedef struct {
-  uint32_t a;
   search_group groups[5];
+  uint32_t a;
 } search_plan;
 
 /* The 16 words of prev's block at blk into registers, A into plan->a, then every group of the
