@@ -87,13 +87,6 @@ static void box_column(const uint8_t *w, uint32_t *out, uint32_t blocks) {
   /* clang-format on */
 }
 
-/* A team barrier that is also a compiler barrier: pmsis.h's is a volatile register read, across
- * which GCC may move ordinary loads (here, of g_fast and of the tables other cores wrote). */
-static inline void team_sync(void) {
-  pi_cl_team_barrier();
-  __asm__ volatile("" ::: "memory");
-}
-
 /* The L1 the tables need: three copies and a W x H word table. */
 static uint32_t tables_bytes(const flow_ctx *c) {
   return 3 * pxflow_gap8_frame_l1_bytes(c->width, c->height) + 4 * c->width * c->height;
@@ -101,7 +94,11 @@ static uint32_t tables_bytes(const flow_ctx *c) {
 
 void variant_prepare(const flow_ctx *c, uint32_t core) {
   const uint32_t w = c->width, h = c->height, s = c->search_radius;
-  if (w != kFastWidth || c->pois == 0) return; /* same decision on every core: no barrier */
+  fast_team_begin(c, core);
+  if (w != kFastWidth || c->pois == 0) { /* same decision on every core */
+    team_sync();
+    return;
+  }
   if (core == 0) {
     if (!g_fast.tried) {
       g_fast.tried = 1;

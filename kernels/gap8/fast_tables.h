@@ -11,6 +11,7 @@
 #ifndef PXFLOW_GAP8_FAST_TABLES_H
 #define PXFLOW_GAP8_FAST_TABLES_H
 
+#include <pmsis.h>
 #include <stdint.h>
 
 #include "flow_kernel.h"
@@ -26,5 +27,16 @@ typedef struct {
 
 /* In L1 (PI_L1 data): read by every core for every POI. */
 extern fast_tables g_fast;
+
+/* Every core first, at the start of the fork (fast_serial.c): its share of the records cleared,
+ * its histogram row and sums zeroed. The callers' next barrier orders it before any POI. */
+void fast_team_begin(const flow_ctx *c, uint32_t core);
+
+/* A team barrier that is also a compiler barrier: pmsis.h's is a volatile register read, across
+ * which GCC may move ordinary loads (of g_fast, of the tables and histograms other cores wrote). */
+static inline void team_sync(void) {
+  pi_cl_team_barrier();
+  __asm__ volatile("" ::: "memory");
+}
 
 #endif

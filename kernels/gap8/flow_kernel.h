@@ -38,11 +38,21 @@ uint32_t flow_integer_search(const flow_ctx *c, const uint8_t *blk, uint32_t x, 
 /* The team's entry point: every POI of this core, as flow_poi.c computes it. */
 void flow_team_entry(void *ctx);
 
-/* Hooks with a plain default (weak, in flow_main.c) that the fast variant
- * replaces: clearing `bytes` (a multiple of 4) of words, and HF's V / Wt over bins lo..hi
- * (SPEC §5: accumulated in float, but exact, so integer sums converted once give the same
- * bits). */
+/* Hooks with a plain default (weak, in flow_main.c): clearing `bytes` (a multiple of 4) of words
+ * (the fast variant's does nothing: its team clears the records), and HF's V / Wt over bins
+ * lo..hi (SPEC §5: accumulated in float, but exact; no variant replaces it any more). */
 void flow_clear_words(void *dst, uint32_t bytes);
 float flow_window_mean(const uint16_t *hist, int lo, int hi);
+
+/* The fast variant's hooks (fast_serial.c), compiled in only where PXFLOW_GAP8_FAST_HOOKS is
+ * defined (fast_main.c, fast_poi.c), so that the other variants' code stays byte for byte what it
+ * was: after each accepted POI's record, on its core; every core at the end of the team's work;
+ * SPEC §5 on core 0 after the join (else flow_main.c's, the spec core's in soft-float). */
+#ifdef PXFLOW_GAP8_FAST_HOOKS
+void variant_accepted(const flow_ctx *c, const pxflow_poi_record *rec);
+void variant_finish(const flow_ctx *c, uint32_t core);
+void flow_estimate(const pxflow_poi_record *records, uint32_t pois, const pxflow_gap8_params *p,
+                   pxflow_gap8_result *out);
+#endif
 
 #endif

@@ -23,17 +23,18 @@ static void build_grid(const pxflow_param_block *p, uint16_t *xy) {
   }
 }
 
-/* Weak: the fast variant brings a hardware-loop version (flow_kernel.h). */
+/* Weak: the fast variant's does nothing, its team clears the records (flow_kernel.h). */
 __attribute__((weak)) void flow_clear_words(void *dst, uint32_t bytes) {
   uint32_t *w = dst;
   for (uint32_t n = 0; n < bytes / 4; ++n) w[n] = 0;
 }
 
-/* Weak: the fast variant sums HF's window in integers and converts once (flow_kernel.h). */
+/* Weak (a hook of the past: the fast variant now brings its whole estimate, flow_kernel.h). */
 __attribute__((weak)) float flow_window_mean(const uint16_t *hist, int lo, int hi) {
   return pxflow_window_mean_float(hist, lo, hi);
 }
 
+#ifndef PXFLOW_GAP8_FAST_HOOKS
 /* SPEC §5 on core 0 after the join (the spec core's estimate). The cores have no FPU: every float
  * operation is a libgcc soft-float call, correctly rounded, so the bits match the host's
  * estimate_flow (both built with -ffp-contract=off). Not inlined: its cycles are the
@@ -43,6 +44,7 @@ static __attribute__((noinline)) void flow_estimate(const pxflow_poi_record *rec
                                                     pxflow_gap8_result *out) {
   pxflow_estimate_flow(records, pois, &p->spec, flow_window_mean, &out->estimate);
 }
+#endif
 
 static void run_pair(const pxflow_gap8_params *p, flow_ctx *c, uint32_t pair) {
   const uint32_t frame = p->spec.width * p->spec.height;

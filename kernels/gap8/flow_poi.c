@@ -67,6 +67,9 @@ static void flow_poi(const flow_ctx *c, uint32_t n) {
   uint32_t sub[8];
   variant_half_sads(c, blk, x + bx, y + by, sub);
   select_direction(rec, best, sub);
+#ifdef PXFLOW_GAP8_FAST_HOOKS
+  variant_accepted(c, rec);
+#endif
 }
 
 void flow_team_entry(void *arg) {
@@ -80,4 +83,7 @@ void flow_team_entry(void *arg) {
   } else {
     for (uint32_t n = core; n < c->pois; n += c->cores) flow_poi(c, n);
   }
+#ifdef PXFLOW_GAP8_FAST_HOOKS
+  variant_finish(c, core);
+#endif
 }

@@ -1,6 +1,7 @@
 // The GAP8 kernel's records are ref-original's, byte for byte, on random, hostile and real pairs
 // at px4flow-64 and px4flow-head, on 1 and 8 cores, in every variant; and on a larger frame that
 // still fits L1.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include "exact_check.hpp"
@@ -42,6 +43,51 @@ TEST_CASE("gap8 is bit-exact on a larger frame that fits L1, odd width included"
   validate(p);
   for (const Gap8VariantInfo& v : gap8_variants())
     check_variant(v, 8, "101x72 S=7 B=6", p, 3, 3000);
+}
+
+namespace {
+
+// prev(x, y) = floor((next(x + bx, y) + next(x + bx + 1, y)) / 2) over a noise texture: every
+// POI's integer match is bx (at the window's edge when |bx| = S) and its half-pixel step in x is
+// exact, so the frame's flow is bx + 0.5: the histogram's peak at an outermost bin when bx = S
+// (top bin) or bx = -S - 1 (bin 0).
+OwnedPair half_pixel_edge_pair(int w, int h, int bx, std::uint64_t seed) {
+  OwnedPair o{"half-pixel edge bx=" + std::to_string(bx), w, h, {}, {}};
+  Rng rng(seed);
+  o.next.resize(static_cast<std::size_t>(w * h));
+  for (auto& v : o.next) v = static_cast<std::uint8_t>(rng.uniform(0, 255));
+  o.prev.assign(o.next.size(), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int a = std::clamp(x + bx, 0, w - 1), b = std::clamp(x + bx + 1, 0, w - 1);
+      o.prev[y * w + x] = static_cast<std::uint8_t>((o.next[y * w + a] + o.next[y * w + b]) / 2);
+    }
+  return o;
+}
+
+}  // namespace
+
+// HF's window at the histogram's ends (SPEC §5's clamp): the fast variant's team estimate sums
+// p - 2 .. p + 2 over two bins of zeros on each side, also at S = 31 (the largest histogram).
+TEST_CASE("gap8 fast: flows at the histogram's outermost bins", "[gap8][no-sanitizer]") {
+  const Gap8VariantInfo* fast = nullptr;
+  for (const Gap8VariantInfo& v : gap8_variants())
+    if (std::string(v.name) == "fast") fast = &v;
+  REQUIRE(fast != nullptr);
+  Gap8Backend backend(fast->id, gap8_host::RunOptions{8, true, false});
+  const Params p64 = profile("px4flow-64");
+  const std::vector<OwnedPair> low{half_pixel_edge_pair(64, 64, -p64.search_radius - 1, 1),
+                                   half_pixel_edge_pair(64, 64, p64.search_radius, 2)};
+  require_exact({"gap8-fast on 8 cores", "half-pixel edge", "px4flow-64"}, low, p64,
+                batch_run_of(backend));
+  Params p31 = p64;
+  p31.width = p31.height = 80;
+  p31.search_radius = 31;
+  validate(p31);
+  const std::vector<OwnedPair> wide{half_pixel_edge_pair(80, 80, 31, 3),
+                                    half_pixel_edge_pair(80, 80, -32, 4)};
+  require_exact({"gap8-fast on 8 cores", "half-pixel edge", "80x80 S=31"}, wide, p31,
+                batch_run_of(backend));
 }
 
 }  // namespace pxflow::test

@@ -108,6 +108,7 @@ TARGETS = (
     Target("kernels/gap8/fast_tables.c", "gap8", ("gap8-fast",)),
     Target("kernels/gap8/fast_tables.h", "gap8", ("gap8-fast",)),
     Target("kernels/gap8/fast_serial.c", "gap8", ("gap8-fast",)),
+    Target("kernels/gap8/fast_float.h", "gap8", ("gap8-fast",)),
     Target("kernels/gap8/half_fast.c", "gap8", ("gap8-fast",)),
     Target("kernels/cortex-m4/m4_flow_poi.c", "cortex-m4", ("m4-qemu",)),
     Target("kernels/cortex-m4/m4_flow_frame.c", "cortex-m4", ("m4-qemu",)),
