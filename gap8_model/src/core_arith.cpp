@@ -30,7 +30,7 @@ uint32_t Core::ExecuteMulDiv(const Decoded& d) {
     case Op::kMul:
       result = a * b;
       cost = timing::kAlu;
-      SetHazard(Hazard::kMul, d.rd);
+      SetHazardBit(Hazard::kMul, d.rd_bit);
       break;
     case Op::kMulh:
       result = static_cast<uint32_t>(static_cast<uint64_t>(sa * sb) >> 32);

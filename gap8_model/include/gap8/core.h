@@ -95,7 +95,6 @@ class Core {
   }
   // The result of the instruction just executed (register rd) is pending, as `kind`: a load or
   // mul result stalls any reader, an ALU result only a jalr.
-  void SetHazard(Hazard kind, uint8_t rd) { SetHazardBit(kind, (1u << rd) & ~1u); }
   void SetHazardBit(Hazard kind, uint32_t bit) {  // bit: Decoded::rd_bit (x0 never stalls)
     hazard_ = kind;
     data_hazard_mask_ = (kind == Hazard::kLoad || kind == Hazard::kMul) ? bit : 0u;

@@ -21,7 +21,8 @@ typedef struct {
 typedef float (*pxflow_window_mean_fn)(const uint16_t *hist, int lo, int hi);
 
 /* The firmware's way: value and weight accumulated in float (exact: small integers). A kernel
- * may pass its own (the GAP8 fast variant sums in integers and converts once: same bits). */
+ * may pass its own that gives the same bits (none does today: the GAP8 fast variant brings its
+ * whole estimate, kernels/gap8/fast_serial.c). */
 static inline float pxflow_window_mean_float(const uint16_t *hist, int lo, int hi) {
   float value = 0.0f, weight = 0.0f;
   for (int b = lo; b <= hi; ++b) {
