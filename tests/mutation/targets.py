@@ -34,8 +34,9 @@ class Family:
 
 GAP8_ELVES = tuple(f"kernels/gap8/pxflow_gap8_{v}.elf" for v in ("original", "local", "global", "fast"))
 REF_OBJECTS = ("reference/CMakeFiles/pxflow_reference.dir/*.o",)
-# tests/harness/CMakeLists.txt: the reference and CPU rows on the whole default corpus.
-CPU_ROWS_UNDER_ASAN = ("sanitizer", "check_cpu_rows_fixed_corpus")
+# tests/conformance: the reference and CPU rows on the whole default corpus, one test per row (a
+# ctest -R regex; ref-original runs in each as the reference).
+CPU_ROWS_UNDER_ASAN = ("sanitizer", r"conformance\.(ref-local|ref-global|swar|sse2|sse41|avx2|avx512bw|cpu)")
 
 FAMILIES = {
     f.name: f

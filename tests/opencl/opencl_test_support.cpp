@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <map>
 #include <memory>
+#include <stdexcept>
 
 #include "exactness.hpp"
 #include "frame_io.hpp"
@@ -19,20 +20,9 @@ struct Shape {
 };
 
 Shape shape_of(const std::string& profile) {
-  if (profile == "px4flow-64" || profile == "px4flow-head")
-    return {pxflow::profile(profile), 300, 61};
-  Params p;
-  p.search_radius = 7;
-  if (profile == "128x128-S31") {  // the largest radius: 63x63 candidates, a 72x72 window
-    p.width = 128, p.height = 128, p.search_radius = 31, p.blocks = 4;
-    return {p, 20, 200};
-  }
-  if (profile == "320x240") {
-    p.width = 320, p.height = 240, p.blocks = 16;
-    return {p, 24, 131};
-  }
-  p.width = 640, p.height = 480, p.blocks = 32;
-  return {p, 3, 1000};
+  if (profile != "px4flow-64" && profile != "px4flow-head")
+    throw std::invalid_argument("opencl tests: no corpus for profile " + profile);
+  return {pxflow::profile(profile), 300, 61};
 }
 
 // Real frames stay loaded for the whole run: corpus pairs are views into them.
@@ -88,10 +78,6 @@ void require_opencl_device() {
   INFO("the opencl backend cannot run here: "
        << why << " (install pocl-opencl-icd, or configure with -DPXFLOW_WITH_OPENCL=OFF)");
   REQUIRE(why.empty());
-}
-
-std::vector<std::string> corpus_profiles() {
-  return {"px4flow-64", "px4flow-head", "128x128-S31", "320x240", "640x480"};
 }
 
 const Corpus& corpus(const std::string& profile) {

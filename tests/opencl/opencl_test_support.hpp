@@ -1,5 +1,5 @@
-// Shared by the opencl tests: the device requirement, the corpus per profile (what is
-// opencl-specific: frame strides, S = 31, sizes up to 640x480), and the bit-exact comparison of
+// Shared by the opencl tests: the device requirement, the corpus per profile (with
+// frame strides: real-frame windows), and the bit-exact comparison of
 // a batch against ref-original through the shared exactness checker.
 #pragma once
 #include <string>
@@ -26,10 +26,8 @@ struct Corpus {
   std::vector<FramePair> pairs;
 };
 
-// px4flow-64, px4flow-head (64x64), 128x128 S=31 B=4, 320x240 S=7 B=16 and 640x480 S=7 B=32:
-// seeded random pairs, every hostile pair, and windows of the real OpenCV sample frames (stride
-// = the full image).
-std::vector<std::string> corpus_profiles();
+// px4flow-64 or px4flow-head (64x64): seeded random pairs, every hostile pair, and windows of the
+// real OpenCV sample frames (stride = the full image).
 const Corpus& corpus(const std::string& profile);
 
 // ref-original's answer for every pair of the corpus, computed once.

@@ -1,6 +1,7 @@
-// Bit-exact: the opencl backend's records equal ref-original's, byte for byte, on the corpus at
-// every profile, for both kernel layouts (the rows opencl-item and opencl-group), several
-// work-group sizes and forced chunking. Mismatches print in `pxflow check`'s format.
+// Bit-exact where the layouts differ from a plain run: several work-group sizes and forced
+// chunking, for both kernel layouts (the rows opencl-item and opencl-group), whose records must
+// equal ref-original's byte for byte. The fixed corpus on each row is its conformance test
+// (tests/conformance). Mismatches print in `pxflow check`'s format.
 #include <catch2/catch.hpp>
 
 #include "opencl_test_support.hpp"
@@ -25,33 +26,7 @@ void check_corpus(const std::string& profile, const OpenclTuning& tuning) {
   CHECK(c.ok());
 }
 
-void check_both_layouts(const std::string& profile) {
-  require_opencl_device();
-  check_corpus(profile, {OpenclLayout::kGroupPerPoi, 0, 0});
-  check_corpus(profile, {OpenclLayout::kItemPerPoi, 0, 0});
-}
-
 }  // namespace
-
-TEST_CASE("opencl: is bit-exact on the px4flow-64 corpus", "[opencl]") {
-  check_both_layouts("px4flow-64");
-}
-
-TEST_CASE("opencl: is bit-exact on the px4flow-head corpus", "[opencl]") {
-  check_both_layouts("px4flow-head");
-}
-
-TEST_CASE("opencl: is bit-exact at the largest search radius, S=31", "[opencl]") {
-  check_both_layouts("128x128-S31");
-}
-
-TEST_CASE("opencl: is bit-exact on the 320x240 S=7 B=16 corpus", "[opencl]") {
-  check_both_layouts("320x240");
-}
-
-TEST_CASE("opencl: is bit-exact on the 640x480 S=7 B=32 corpus", "[opencl]") {
-  check_both_layouts("640x480");
-}
 
 TEST_CASE("opencl: is bit-exact at any work-group size", "[opencl]") {
   require_opencl_device();
