@@ -75,6 +75,13 @@ std::string IsolatedRow::unsupported(const Params& p) {
   return "its check worker did not answer whether it supports these parameters";
 }
 
+bool IsolatedRow::outside_limits(const Params& p) {
+  if (dead_ || !worker_) return false;
+  const Reply r = worker_->run(p, {}, after(kOpenSeconds));
+  if (r.kind != Reply::Kind::kNotApplicable) worker_.reset();  // restarted by the next run()
+  return r.kind == Reply::Kind::kNotApplicable && !r.text.empty();
+}
+
 IsolatedRow::PairsRun IsolatedRow::run_pairs(std::span<const FramePair> pairs, const Params& p) {
   if (!worker_) return {{}, "its check worker is not running"};
   const Reply r = worker_->run(p, pairs, after(allowance(p, pairs.size(), 1.0)));

@@ -57,6 +57,10 @@ class IsolatedRow {
   // supports p; a worker that is not running, or fails to answer, supports nothing.
   std::string unsupported(const Params& p);
 
+  // Whether the row's worker answers that `p` is outside its limits: false when it supports `p`,
+  // is not running or does not answer (its next run() then reports that).
+  bool outside_limits(const Params& p);
+
   // The records of `pairs` (any size), for the reproducer's shrinking: the case's error, crash
   // or "n/a" as its `error`. Never restarts a worker.
   struct PairsRun {
