@@ -13,6 +13,8 @@ op's class, path or semantics, so that the decoder can take the first matching r
 import os
 import sys
 
+import isa_format
+
 IMM_KINDS = {
     "-": "kNone", "simm6": "kSimm6", "uimm6": "kUimm6", "lane6": "kLane6", "shufh": "kShufH",
     "shufi0": "kShufI0", "shufi1": "kShufI1", "shufi2": "kShufI2", "shufi3": "kShufI3",
@@ -31,20 +33,18 @@ class TableError(Exception):
 
 def parse(path):
     rows = []
-    with open(path, encoding="utf-8") as f:
-        for number, line in enumerate(f, 1):
-            if not line.strip() or line.startswith("#"):
-                continue
-            cols = line.split(None, 11)
-            if len(cols) != 12:
-                raise TableError(f"{path}:{number}: 12 columns expected, got {len(cols)}")
-            mn, match, mask, op, reads, writes, imm, width, b, cls, path_, sem = cols
-            row = dict(mnemonic=mn, match=int(match, 16), mask=int(mask, 16), op=op,
+    try:
+        for number, cols in isa_format.table_rows(path, 13):
+            mn, match, mask, op, fmt, reads, writes, imm, width, b, cls, path_, sem = cols
+            row = dict(mnemonic=mn, match=int(match, 16), mask=int(mask, 16), op=op, fmt=fmt,
                        reads=[] if reads == "-" else reads.split(","),
                        writes=[] if writes == "-" else writes.split(","), imm=imm,
-                       width=width, b=b, cls=cls, path=path_, sem=sem.strip(), line=number)
+                       width=width, b=b, cls=cls, path=path_, sem=sem, line=number)
             check_row(path, row)
+            check_format(path, row)
             rows.append(row)
+    except isa_format.FormatError as e:
+        raise TableError(str(e)) from e
     check_table(path, rows)
     return rows
 
@@ -67,6 +67,18 @@ def check_row(path, r):
         raise TableError(f"{where}: alu and branch rows have semantics, the others -")
     if r["b"] in ("rs2", "sc") and "rs2" not in r["reads"]:
         raise TableError(f"{where}: operand b from rs2 but rs2 not read")
+
+
+def check_format(path, r):
+    """The registers the format reads and writes are the hand-set reads and writes columns."""
+    where = f"{path}:{r['line']}: {r['mnemonic']}"
+    try:
+        reads, writes = isa_format.reads_writes(isa_format.concrete(r["fmt"], r["imm"]))
+    except isa_format.FormatError as e:
+        raise TableError(f"{where}: {e}") from e
+    if sorted(reads) != sorted(r["reads"]) or sorted(writes) != sorted(r["writes"]):
+        raise TableError(f"{where}: format {r['fmt']} reads {reads} and writes {writes}, the "
+                         f"columns say {r['reads']} and {r['writes']}")
 
 
 def check_table(path, rows):
