@@ -66,7 +66,8 @@ class Cluster {
 
  private:
   enum class Wait : uint8_t { kNone, kDispatch, kBarrier, kEvent };
-  struct CoreSide {  // event-unit and DMA state private to one core
+  static constexpr uint64_t kNever = ~0ull;  // the next issue cycle of a core asleep or absent
+  struct CoreSide {                          // event-unit and DMA state private to one core
     Wait wait = Wait::kNone;
     uint32_t wait_pc = 0, wait_insn = 0;
     std::deque<uint32_t> dispatch;  // values pushed to this core, not yet popped
