@@ -1,7 +1,8 @@
 // gap8-run: runs a RISC-V ELF on the simulated GAP8 cluster and prints per-core counters.
-//   gap8-run [--cores N] [--no-contention] [--max-cycles N] [--bench] prog.elf
+//   gap8-run [--cores N] [--no-contention] [--max-cycles N] [--bench] [--trace] prog.elf
+// --trace: one line per executed instruction on stderr (cycle, core, pc, bits, assembly).
 // Exit status: the program's (0 / 1 when non-zero), 2 bad arguments or ELF, 3 illegal
-// instruction, 4 memory fault, 5 cycle budget exceeded, 6 deadlock.
+// instruction, 4 memory fault, 5 cycle budget exceeded, 6 deadlock, 7 hardware loop rule.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "gap8/cluster.h"
+#include "gap8/disasm.h"
 #include "gap8/elf_loader.h"
 
 namespace {
@@ -17,16 +19,35 @@ struct Options {
   int cores = 8;
   bool contention = true;
   bool bench = false;
+  bool trace = false;
   uint64_t max_cycles = 4'000'000'000ull;
   std::string elf;
 };
 
+constexpr const char* kUsage =
+    "usage: gap8-run [--cores 1..8] [--no-contention] [--max-cycles N] [--bench] [--trace] "
+    "prog.elf";
+
 [[noreturn]] void Usage(const std::string& why) {
-  std::fprintf(stderr,
-               "gap8-run: %s (usage: gap8-run [--cores 1..8] [--no-contention] "
-               "[--max-cycles N] [--bench] prog.elf)\n",
-               why.c_str());
+  std::fprintf(stderr, "gap8-run: %s (%s)\n", why.c_str(), kUsage);
   std::exit(2);
+}
+
+[[noreturn]] void Help() {
+  std::printf(
+      "%s\n"
+      "Runs a RISC-V ELF on the simulated GAP8 cluster and prints per-core counters.\n"
+      "  --cores N        cluster cores, 1..8 (default 8)\n"
+      "  --no-contention  no TCDM bank conflicts\n"
+      "  --max-cycles N   cycle budget (default 4e9)\n"
+      "  --bench          also print simulated instructions per host second\n"
+      "  --trace          one line per executed instruction on stderr: the cycle it issues\n"
+      "                   at (before its fetch wait), core, pc, bits and assembly, e.g.\n"
+      "                   cycle 220 core 0 pc 0x1c000356 insn 0x0016c58b p.lbu a1,1(a3!)\n"
+      "Exit status: the program's (0, or 1 for non-zero), 2 bad arguments or ELF, 3 illegal\n"
+      "instruction, 4 memory fault, 5 cycle budget, 6 deadlock, 7 hardware loop rule.\n",
+      kUsage);
+  std::exit(0);
 }
 
 uint64_t ParseNumber(const char* text, const char* flag) {
@@ -51,6 +72,10 @@ Options Parse(int argc, char** argv) {
       o.contention = false;
     } else if (a == "--bench") {
       o.bench = true;
+    } else if (a == "--trace") {
+      o.trace = true;
+    } else if (a == "--help" || a == "-h") {
+      Help();
     } else if (!a.empty() && a[0] == '-') {
       Usage("unknown or incomplete option " + a);
     } else if (o.elf.empty()) {
@@ -96,6 +121,16 @@ void PrintCounters(gap8::Cluster& cluster) {
   }
 }
 
+// --trace's line: "cycle 1204 core 3 pc 0x1c000104 insn 0x0005a503 lw a0,0(a1)".
+void TraceLine(int core, uint64_t cycle, uint32_t pc, uint32_t bits) {
+  const bool rvc = gap8::IsCompressed(bits & 0xFFFFu);
+  std::fprintf(stderr,
+               rvc ? "cycle %llu core %d pc 0x%08x insn     0x%04x %s\n"
+                   : "cycle %llu core %d pc 0x%08x insn 0x%08x %s\n",
+               static_cast<unsigned long long>(cycle), core, pc, bits,
+               gap8::DisassembleText(bits, pc).c_str());
+}
+
 uint64_t TotalInstructions(gap8::Cluster& cluster) {
   uint64_t n = 0;
   for (int i = 0; i < cluster.num_cores(); ++i) n += cluster.core(i).Totals()[GAP8_EVT_INSTR];
@@ -106,7 +141,9 @@ uint64_t TotalInstructions(gap8::Cluster& cluster) {
 
 int main(int argc, char** argv) {
   const Options opt = Parse(argc, argv);
-  gap8::Cluster cluster({opt.cores, opt.contention, opt.max_cycles, {}});
+  gap8::ClusterConfig config{opt.cores, opt.contention, opt.max_cycles, {}, {}};
+  if (opt.trace) config.trace = TraceLine;
+  gap8::Cluster cluster(config);
   gap8::ElfImage image;
   try {
     image = gap8::LoadElf(opt.elf, cluster.memory());

@@ -14,8 +14,8 @@ else()
                  "not built, their tests report SKIPPED (install gcc-riscv64-unknown-elf)")
 endif()
 
-# xpulp.h takes every instruction's fields from xpulp_fields.h, generated from the model's
-# table (../isa/xpulp.tbl). A target, not a custom command, so that programs of any directory
+# xpulp.h takes every instruction's fields from xpulp_fields.h and its C function wrappers from
+# xpulp_functions.h, both generated from the model's table (../isa/xpulp.tbl). A target, not a custom command, so that programs of any directory
 # can wait for it; the generator leaves an unchanged header's time alone.
 if(PXFLOW_GAP8_HAVE_CC)
   find_package(Python3 REQUIRED COMPONENTS Interpreter GLOBAL)
@@ -24,8 +24,8 @@ if(PXFLOW_GAP8_HAVE_CC)
     COMMAND Python3::Interpreter ${CMAKE_CURRENT_LIST_DIR}/../isa/gen_xpulp.py
             ${CMAKE_CURRENT_LIST_DIR}/../isa/xpulp.tbl
             --runtime-header ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_fields.h
-    BYPRODUCTS ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_fields.h
-    COMMENT "xpulp_fields.h from gap8_model/isa/xpulp.tbl"
+    BYPRODUCTS ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_fields.h ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_functions.h
+    COMMENT "xpulp_fields.h and xpulp_functions.h from gap8_model/isa/xpulp.tbl"
     VERBATIM)
 endif()
 
@@ -51,6 +51,7 @@ function(pxflow_gap8_program name)
             ${rt}/crt0.S ${rt}/runtime.c ${sources} -lgcc -o ${elf}
     DEPENDS ${sources} ${rt}/crt0.S ${rt}/runtime.c ${rt}/link.ld ${rt}/pmsis.h
             ${rt}/gap8_regs.h ${rt}/xpulp.h ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_fields.h
+            ${PXFLOW_GAP8_FIELDS_DIR}/xpulp_functions.h
     COMMENT "RISC-V ${name}.elf")
   add_custom_target(gap8_prog_${name} ALL DEPENDS ${elf})
   add_dependencies(gap8_prog_${name} pxflow_gap8_xpulp_fields)

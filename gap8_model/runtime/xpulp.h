@@ -21,56 +21,29 @@
 #define GAP8_INSN_I(kind, M) \
   ".insn " kind " " GAP8_STR(GAP8_XPULP_OPC_##M) ", " GAP8_STR(GAP8_XPULP_F3_##M) ", "
 
+/* The C function wrappers: xpulp_functions.h, generated from the table, defines one per
+ * instruction whose operands are registers only (gap8_<mnemonic>, dots as _) with these. */
 #define GAP8_XPULP_RR(name, M)                                                \
   static inline uint32_t name(uint32_t a, uint32_t b) {                       \
     uint32_t r;                                                               \
     __asm__ volatile(GAP8_INSN_R(M) "%0, %1, %2" : "=r"(r) : "r"(a), "r"(b)); \
     return r;                                                                 \
   }
-
-GAP8_XPULP_RR(gap8_pv_add_b, PV_ADD_B)
-GAP8_XPULP_RR(gap8_pv_add_sc_b, PV_ADD_SC_B)
-GAP8_XPULP_RR(gap8_pv_sub_b, PV_SUB_B)
-GAP8_XPULP_RR(gap8_pv_sub_sc_b, PV_SUB_SC_B)
-GAP8_XPULP_RR(gap8_pv_avgu_b, PV_AVGU_B)
-GAP8_XPULP_RR(gap8_pv_avgu_sc_b, PV_AVGU_SC_B)
-GAP8_XPULP_RR(gap8_pv_minu_b, PV_MINU_B)
-GAP8_XPULP_RR(gap8_pv_minu_sc_b, PV_MINU_SC_B)
-GAP8_XPULP_RR(gap8_pv_maxu_b, PV_MAXU_B)
-GAP8_XPULP_RR(gap8_pv_maxu_sc_b, PV_MAXU_SC_B)
-GAP8_XPULP_RR(gap8_pv_dotup_b, PV_DOTUP_B)
-GAP8_XPULP_RR(gap8_pv_dotup_sc_b, PV_DOTUP_SC_B)
-GAP8_XPULP_RR(gap8_pv_dotusp_b, PV_DOTUSP_B)
-GAP8_XPULP_RR(gap8_pv_dotusp_sc_b, PV_DOTUSP_SC_B)
-
-/* pv.sdot*: acc + dot product; the accumulator is rd (read and written). */
+/* The accumulator is rd (read and written): pv.sdot*, p.mac. */
 #define GAP8_XPULP_ACC(name, M)                                                 \
   static inline uint32_t name(uint32_t acc, uint32_t a, uint32_t b) {           \
     __asm__ volatile(GAP8_INSN_R(M) "%0, %1, %2" : "+r"(acc) : "r"(a), "r"(b)); \
     return acc;                                                                 \
   }
+/* One source, the rs2 field x0: pv.abs, p.abs, p.ext*. */
+#define GAP8_XPULP_UNARY(name, M)                                     \
+  static inline uint32_t name(uint32_t a) {                           \
+    uint32_t r;                                                       \
+    __asm__ volatile(GAP8_INSN_R(M) "%0, %1, x0" : "=r"(r) : "r"(a)); \
+    return r;                                                         \
+  }
 
-GAP8_XPULP_ACC(gap8_pv_sdotup_b, PV_SDOTUP_B)
-GAP8_XPULP_ACC(gap8_pv_sdotup_sc_b, PV_SDOTUP_SC_B)
-GAP8_XPULP_ACC(gap8_pv_sdotusp_b, PV_SDOTUSP_B)
-GAP8_XPULP_ACC(gap8_pv_sdotusp_sc_b, PV_SDOTUSP_SC_B)
-
-static inline uint32_t gap8_pv_abs_b(uint32_t a) {
-  uint32_t r;
-  __asm__ volatile(GAP8_INSN_R(PV_ABS_B) "%0, %1, x0" : "=r"(r) : "r"(a));
-  return r;
-}
-
-GAP8_XPULP_RR(gap8_p_min, P_MIN)
-GAP8_XPULP_RR(gap8_p_minu, P_MINU)
-GAP8_XPULP_RR(gap8_p_max, P_MAX)
-GAP8_XPULP_RR(gap8_p_maxu, P_MAXU)
-
-static inline uint32_t gap8_p_abs(uint32_t a) {
-  uint32_t r;
-  __asm__ volatile(GAP8_INSN_R(P_ABS) "%0, %1, x0" : "=r"(r) : "r"(a));
-  return r;
-}
+#include "xpulp_functions.h"
 
 /* Post-increment loads: returns **p and advances *p by one element (p.lbu / p.lw rd, imm(rs1!)). */
 #define GAP8_LOAD_POST(name, type, M)                 \

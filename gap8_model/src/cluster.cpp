@@ -6,16 +6,13 @@
 #include <algorithm>
 #include <bit>
 #include <cstdio>
-#include <limits>
 
 #include "core_execute_inline.h"
 #include "gap8/timing.h"
 
 namespace gap8 {
 
-namespace {
-constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
-}
+namespace {}
 
 Cluster::Cluster(ClusterConfig config) : config_(std::move(config)) {
   config_.cores = std::clamp(config_.cores, 1, static_cast<int>(GAP8_MAX_CORES));
@@ -97,12 +94,15 @@ void Cluster::Advance() {
     throw Fault{FaultKind::kCycleBudget, first.id(), first.pc(), d.raw,
                 "cycle budget of " + std::to_string(config_.max_cycles) + " cycles exceeded"};
   }
-  if (second_time == first_time) return RunShared(ready, first_time);
+  const bool trace = static_cast<bool>(config_.trace);
+  if (second_time == first_time)
+    return trace ? RunShared<true>(ready, first_time) : RunShared<false>(ready, first_time);
   uint64_t limit = std::min(second_time, config_.max_cycles + 1);
   if (!dma_.Idle()) limit = std::min(limit, dma_.NextCompletion());
-  RunSolo(first, limit);
+  trace ? RunSolo<true>(first, limit) : RunSolo<false>(first, limit);
 }
 
+template <bool kTrace>
 void Cluster::RunSolo(Core& core, uint64_t limit) {
   schedule_changed_ = false;  // a DMA push sets it, so dma_end stays right
   retry_mask_ &= ~(1u << core.id());
@@ -118,120 +118,14 @@ void Cluster::RunSolo(Core& core, uint64_t limit) {
       continue;
     }
     if (const uint32_t fetch = FetchStall(core)) [[unlikely]] {
+      Trace<kTrace>(core, d);
       core.time += core.ExecuteInline(d) + fetch;
       core.event(GAP8_EVT_IMISS) += fetch;
       continue;
     }
+    Trace<kTrace>(core, d);
     core.time += core.ExecuteInline(d);
   }
-}
-
-// Shared cycles, one after the other while the earliest cycle has two or more cores: the cores
-// in `ready` (all issuing at `cycle`) issue, in id order: hazards first, then the TCDM bank
-// arbiter, then execution. Within the loop only the issuing cores' next issue cycles change, so
-// the loop keeps every core's in `t` and finds the next cycle there. It stops where Advance must
-// decide: one core alone, a DMA completion, the cycle budget, a wake-up or DMA push, the exit.
-// The bank bookkeeping has few data-dependent branches: with eight cores interleaved the host's
-// branch predictor guesses poorly.
-void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
-  std::array<uint64_t, GAP8_MAX_CORES> t;  // next issue cycle per core, kNever asleep or absent
-  t.fill(kNever);
-  for (int i = 0; i < num_cores(); ++i) t[i] = cores_[i].asleep ? kNever : cores_[i].time;
-  const auto issued = [&](const Core& c, int id) { t[id] = c.asleep ? kNever : c.time; };
-  schedule_changed_ = false;  // a wake-up or a DMA push sets it
-  for (;;) {
-    IssueCycle(ready, cycle, issued);
-    if (exited_ || schedule_changed_) return;
-    uint64_t next = kNever;  // all GAP8_MAX_CORES entries: the compiler unrolls both loops
-    for (uint64_t ti : t) next = std::min(next, ti);
-    uint32_t next_ready = 0;
-    for (uint32_t i = 0; i < GAP8_MAX_CORES; ++i)
-      next_ready |= static_cast<uint32_t>(t[i] == next) << i;
-    if ((next_ready & (next_ready - 1)) == 0 || next == kNever || next > config_.max_cycles) return;
-    if (!dma_.Idle() && dma_.NextCompletion() <= next) return;
-    cycle = next;
-    ready = next_ready;
-  }
-}
-
-template <typename Issued>
-inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle, const Issued& issued) {
-  std::array<const Decoded*, GAP8_MAX_CORES> insn;  // valid for the cores in `issuing`
-  std::array<uint32_t, GAP8_MAX_CORES> bank_of;     // likewise: the bank bit each asks for
-  BankRequests requests{};                          // per bank: bit per requesting core
-  uint32_t issuing = 0, banks = 0, shared_banks = 0;
-  const bool contention = config_.contention;
-  // Retries kept from a cycle before a code change are void: fetch again.
-  if (memory_.code_epoch() != retry_epoch_) retry_mask_ = 0;
-  for (uint32_t m = ready; m != 0; m &= m - 1) {
-    const int id = std::countr_zero(m);
-    Core& c = *core_ptr_[id];
-    uint32_t bank_bit;
-    if ((retry_mask_ >> id) & 1u) {
-      insn[id] = retry_insn_[id];
-      bank_bit = retry_bank_[id];
-    } else {
-      const Decoded& d = c.Fetch();
-      if (const uint32_t stall = c.TakeHazardStall(d)) {
-        c.time += stall;
-        issued(c, id);
-        continue;
-      }
-      insn[id] = &d;
-      bank_bit = contention ? c.TcdmBankBit(d) : 0u;
-    }
-    bank_of[id] = bank_bit;
-    issuing |= 1u << id;
-    requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
-    shared_banks |= banks & bank_bit;
-    banks |= bank_bit;
-  }
-  uint32_t losers = 0;  // each retries next cycle
-  // Banks the DMA takes this cycle: every core requesting one retries (the DMA always wins).
-  if (const uint32_t dma_banks = contention ? dma_.BanksAt(cycle) & banks : 0) {
-    for (uint32_t b = dma_banks; b != 0; b &= b - 1) losers |= requests[std::countr_zero(b)];
-    banks &= ~dma_banks;
-    shared_banks &= ~dma_banks;
-  }
-  // A bank with one requester: it wins, and the round-robin pointer moves past it.
-  for (uint32_t b = banks & ~shared_banks; b != 0; b &= b - 1) {
-    const int bank = std::countr_zero(b);
-    bank_priority_[bank] = NextCore(std::countr_zero(requests[bank]));
-  }
-  if (shared_banks != 0) losers |= ArbitrateSharedBanks(shared_banks, requests);
-  retry_mask_ = (retry_mask_ & ~ready) | losers;
-  retry_epoch_ = memory_.code_epoch();
-  for (uint32_t l = losers; l != 0; l &= l - 1) {
-    const int id = std::countr_zero(l);
-    LoseBank(*core_ptr_[id]);
-    retry_insn_[id] = insn[id];
-    retry_bank_[id] = bank_of[id];
-    issued(*core_ptr_[id], id);
-  }
-  issuing &= ~losers;
-  for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
-    const int id = std::countr_zero(m);
-    Core& c = *core_ptr_[id];
-    const uint32_t fetch = FetchStall(c);
-    c.time += c.ExecuteInline(*insn[id]) + fetch;
-    c.event(GAP8_EVT_IMISS) += fetch;
-    issued(c, id);
-  }
-}
-
-// Banks requested by two or more cores: round robin, the first requester at or after the bank's
-// priority pointer wins; each loser stalls one cycle and retries. Returns the losers.
-uint32_t Cluster::ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests) {
-  uint32_t all_losers = 0;
-  for (; shared_banks != 0; shared_banks &= shared_banks - 1) {
-    const int b = std::countr_zero(shared_banks);
-    const uint32_t mask = requests[b];
-    const uint32_t from_pointer = mask & ~((1u << bank_priority_[b]) - 1u);
-    const int winner = std::countr_zero(from_pointer ? from_pointer : mask);
-    bank_priority_[b] = NextCore(winner);
-    all_losers |= mask & ~(1u << winner);
-  }
-  return all_losers;
 }
 
 // The transfer's event goes to every core (broadcast, as PMSIS asks) or to the one that queued

@@ -1,4 +1,5 @@
-// The interpreter's main switch: RV32I, the control flow and the Xpulp arithmetic, inline so
+// The interpreter's main switch (generated from isa/rv32imc.tbl and isa/xpulp.tbl): RV32I, the
+// control flow and the Xpulp arithmetic, inline so
 // that the cluster's issue loops run it without a call (Core::Execute is the same, out of line).
 // The TCDM path of loads and stores too; M-extension, branches, hardware-loop set-up and the rest
 // of the memory path live in their own functions.
@@ -102,6 +103,19 @@ inline uint32_t Core::ExecuteMemory(const Decoded& d) {
   return cost;
 }
 
+// jal and jalr (a: rs1's value, imm: the offset).
+[[gnu::always_inline]] inline uint32_t Core::ExecuteJump(const Decoded& d, uint32_t a,
+                                                         uint32_t imm) {
+  if (loops_armed_ && AtActiveLoopEnd())
+    RaiseHwLoop("the last instruction of a hardware loop must not be a jump");
+  ++events_[GAP8_EVT_JUMP];
+  const uint32_t target = d.op == Op::kJal ? pc_ + imm : (a + imm) & ~1u;
+  regs_[d.rd] = pc_ + d.size;
+  regs_[0] = 0;
+  pc_ = target;
+  return timing::kJump;
+}
+
 [[gnu::always_inline]] inline uint32_t Core::ExecuteInline(const Decoded& d) {
   using execute_detail::OperandB;
   current_ = &d;
@@ -112,111 +126,10 @@ inline uint32_t Core::ExecuteMemory(const Decoded& d) {
   const uint32_t imm = static_cast<uint32_t>(d.imm);
   uint32_t result;
   switch (d.op) {
-    case Op::kLui:
-      result = imm;
-      break;
-    case Op::kAuipc:
-      result = pc_ + imm;
-      break;
-    case Op::kAddi:
-      result = a + imm;
-      break;
-    case Op::kSlti:
-      result = static_cast<int32_t>(a) < d.imm;
-      break;
-    case Op::kSltiu:
-      result = a < imm;
-      break;
-    case Op::kXori:
-      result = a ^ imm;
-      break;
-    case Op::kOri:
-      result = a | imm;
-      break;
-    case Op::kAndi:
-      result = a & imm;
-      break;
-    case Op::kSlli:
-      result = a << (imm & 31);
-      break;
-    case Op::kSrli:
-      result = a >> (imm & 31);
-      break;
-    case Op::kSrai:
-      result = static_cast<uint32_t>(static_cast<int32_t>(a) >> (imm & 31));
-      break;
-    case Op::kAdd:
-      result = a + b;
-      break;
-    case Op::kSub:
-      result = a - b;
-      break;
-    case Op::kSll:
-      result = a << (b & 31);
-      break;
-    case Op::kSlt:
-      result = static_cast<int32_t>(a) < static_cast<int32_t>(b);
-      break;
-    case Op::kSltu:
-      result = a < b;
-      break;
-    case Op::kXor:
-      result = a ^ b;
-      break;
-    case Op::kSrl:
-      result = a >> (b & 31);
-      break;
-    case Op::kSra:
-      result = static_cast<uint32_t>(static_cast<int32_t>(a) >> (b & 31));
-      break;
-    case Op::kOr:
-      result = a | b;
-      break;
-    case Op::kAnd:
-      result = a & b;
-      break;
-    case Op::kCsrRead:
-      result = static_cast<uint32_t>(id_);
-      break;  // mhartid: cluster 0
-    case Op::kFence:
-      result = 0;
-      break;
-    case Op::kJal:
-    case Op::kJalr: {
-      if (loops_armed_ && AtActiveLoopEnd())
-        RaiseHwLoop("the last instruction of a hardware loop must not be a jump");
-      ++events_[GAP8_EVT_JUMP];
-      const uint32_t target = d.op == Op::kJal ? pc_ + imm : (a + imm) & ~1u;
-      regs_[d.rd] = pc_ + d.size;
-      regs_[0] = 0;
-      pc_ = target;
-      return timing::kJump;
-    }
-    case Op::kBeq:
-      return ExecuteBranch(d, a == b);
-    case Op::kBne:
-      return ExecuteBranch(d, a != b);
-    case Op::kBlt:
-      return ExecuteBranch(d, static_cast<int32_t>(a) < static_cast<int32_t>(b));
-    case Op::kBge:
-      return ExecuteBranch(d, static_cast<int32_t>(a) >= static_cast<int32_t>(b));
-    case Op::kBltu:
-      return ExecuteBranch(d, a < b);
-    case Op::kBgeu:
-      return ExecuteBranch(d, a >= b);
-    case Op::kLoad:
-    case Op::kStore:
-      return ExecuteMemory(d);
-    case Op::kMul:
-    case Op::kMulh:
-    case Op::kMulhsu:
-    case Op::kMulhu:
-    case Op::kDiv:
-    case Op::kDivu:
-    case Op::kRem:
-    case Op::kRemu:
-      return ExecuteMulDiv(d);
-      // Xpulp: one generated case per op of gap8_model/isa/xpulp.tbl, by its class and path.
+    // RV32IMC: one generated case per op of gap8_model/isa/rv32imc.tbl, by its class and
+    // semantics.
+#include "gap8/rv32imc_execute.inc"
+    // Xpulp: one generated case per op of gap8_model/isa/xpulp.tbl, by its class and path.
 #include "gap8/xpulp_execute.inc"
     default:  // kIllegal, kUndecoded
       Raise(FaultKind::kIllegalInstruction, "illegal instruction");

@@ -7,8 +7,12 @@
 namespace gap8 {
 
 void Core::RaiseFetchFault() const {
-  throw Fault{FaultKind::kMemory, id_, pc_, 0,
-              "instruction fetch from unmapped address " + Hex(pc_)};
+  throw Fault{FaultKind::kMemory,
+              id_,
+              pc_,
+              0,
+              "instruction fetch from unmapped address " + Hex(pc_),
+              false};
 }
 
 // The next instruction stalls on the pending result: count the stall, consume the hazard and

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "gap8/disasm.h"
+
 namespace gap8 {
 
 std::string Hex(uint32_t value) {
@@ -11,7 +13,8 @@ std::string Hex(uint32_t value) {
 }
 
 std::string Fault::Message() const {
-  return "core " + std::to_string(core) + " at pc " + Hex(pc) + " (insn " + Hex(insn) +
+  const std::string assembly = fetched ? ": " + DisassembleText(insn, pc) : "";
+  return "core " + std::to_string(core) + " at pc " + Hex(pc) + " (insn " + Hex(insn) + assembly +
          "): " + what;
 }
 

@@ -10,9 +10,9 @@ gap8::Fault ExpectFault(const std::string& name, RunOptions options, gap8::Fault
   INFO(run.Describe());
   REQUIRE(run.result.fault);
   CHECK(run.result.fault->kind == kind);
-  CHECK_THAT(
-      run.result.fault->Message(),
-      Catch::Matchers::Matches("core [0-7] at pc 0x1c[0-9a-f]{6} \\(insn 0x[0-9a-f]{8}\\): .+"));
+  CHECK_THAT(run.result.fault->Message(),
+             Catch::Matchers::Matches(
+                 "core [0-7] at pc 0x1c[0-9a-f]{6} \\(insn 0x[0-9a-f]{8}: [a-z].*\\): .+"));
   return *run.result.fault;
 }
 

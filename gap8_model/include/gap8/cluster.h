@@ -24,6 +24,9 @@ struct ClusterConfig {
   bool contention = true;                  // model TCDM bank conflicts
   uint64_t max_cycles = 4'000'000'000ull;  // a runaway program faults past this
   std::function<void(char)> putc;          // program output; stdout when empty
+  // Called before each instruction executes (gap8-run --trace): its core, issue cycle, pc and
+  // bits. Empty: no tracing, and the issue loops run without the test.
+  std::function<void(int core, uint64_t cycle, uint32_t pc, uint32_t bits)> trace;
 };
 
 struct RunResult {
@@ -63,7 +66,8 @@ class Cluster {
 
  private:
   enum class Wait : uint8_t { kNone, kDispatch, kBarrier, kEvent };
-  struct CoreSide {  // event-unit and DMA state private to one core
+  static constexpr uint64_t kNever = ~0ull;  // the next issue cycle of a core asleep or absent
+  struct CoreSide {                          // event-unit and DMA state private to one core
     Wait wait = Wait::kNone;
     uint32_t wait_pc = 0, wait_insn = 0;
     std::deque<uint32_t> dispatch;  // values pushed to this core, not yet popped
@@ -74,17 +78,24 @@ class Cluster {
   };
 
   void Advance();
+  // kTrace: config_.trace is set (Advance picks the instance once, not per instruction).
+  template <bool kTrace>
   void RunSolo(Core& core, uint64_t limit);
   // Per TCDM bank, bit per core requesting it; the spare slot kNoBank collects the cores making
   // no TCDM access (so recording a request needs no branch) and is never read.
   static constexpr int kNoBank = GAP8_L1_BANKS;
   using BankRequests = std::array<uint32_t, GAP8_L1_BANKS + 1>;
 
+  template <bool kTrace>
   void RunShared(uint32_t ready, uint64_t cycle);
   // One shared cycle; issued(core, id) is called for each core of `ready` whose next issue cycle
   // is known (all but those after an exit).
-  template <typename Issued>
+  template <bool kTrace, typename Issued>
   void IssueCycle(uint32_t ready, uint64_t cycle, const Issued& issued);
+  template <bool kTrace>
+  void Trace(const Core& core, const Decoded& d) const {
+    if constexpr (kTrace) config_.trace(core.id(), core.time, core.pc(), d.raw);
+  }
   // Cycles the core waits for the instruction at its pc: 0 while the prefetch buffer holds it
   // (the fast path), else the instruction-cache accesses of FetchLines. Counted in IMISS after
   // the instruction executed (it may read the counters itself).

@@ -112,6 +112,7 @@ class Core {
   uint32_t ExecuteMulDiv(const Decoded& d);
   uint32_t ExecuteHwLoopSetup(const Decoded& d);
   uint32_t ExecuteBranch(const Decoded& d, bool taken);
+  uint32_t ExecuteJump(const Decoded& d, uint32_t a, uint32_t imm);
   uint32_t NextSequentialPc(uint32_t next);
   bool AtActiveLoopEnd() const;
   [[noreturn]] void RaiseHwLoop(const char* rule) const;

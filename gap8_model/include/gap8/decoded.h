@@ -8,49 +8,12 @@ namespace gap8 {
 enum class Op : uint8_t {
   kUndecoded = 0,  // decode-cache slot not filled yet; must stay zero
   kIllegal,
-  // RV32I
-  kLui,
-  kAuipc,
-  kJal,
-  kJalr,
-  kBeq,
-  kBne,
-  kBlt,
-  kBge,
-  kBltu,
-  kBgeu,
-  kLoad,   // width in Decoded::width: 0 lb, 1 lh, 2 lw, 4 lbu, 5 lhu (RISC-V funct3)
-  kStore,  // width: 0 sb, 1 sh, 2 sw
-  kAddi,
-  kSlti,
-  kSltiu,
-  kXori,
-  kOri,
-  kAndi,
-  kSlli,
-  kSrli,
-  kSrai,
-  kAdd,
-  kSub,
-  kSll,
-  kSlt,
-  kSltu,
-  kXor,
-  kSrl,
-  kSra,
-  kOr,
-  kAnd,
-  kFence,
-  kCsrRead,  // only reads of mhartid (csrrs rd, mhartid, x0) are modelled
-  // RV32M
-  kMul,
-  kMulh,
-  kMulhsu,
-  kMulhu,
-  kDiv,
-  kDivu,
-  kRem,
-  kRemu,
+// RV32IMC: one entry per op of gap8_model/isa/rv32imc.tbl (an RVC instruction decodes to the
+// op of its expansion), generated. kLoad / kStore: the width in Decoded::width; kCsrRead: only
+// reads of mhartid (csrrs rd, mhartid, x0) are modelled.
+#define GAP8_RV32IMC_OP(name) k##name,
+#include "gap8/rv32imc_ops.inc"
+#undef GAP8_RV32IMC_OP
 // Xpulp (PULPv2 and GAP8's own extensions): one entry per op of gap8_model/isa/xpulp.tbl,
 // generated. Their order means nothing: IsXpulp tells them from the RV32IM ops.
 #define GAP8_XPULP_OP(name) k##name,
