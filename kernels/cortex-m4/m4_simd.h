@@ -52,4 +52,9 @@ static inline uint32_t m4_sad4_acc(uint32_t a, uint32_t b, uint32_t acc) {
 /* UHADD8: floor((a_i + b_i) / 2) per byte */
 static inline uint32_t m4_avg4(uint32_t a, uint32_t b) { return __uhadd8(a, b); }
 
+/* The primitives of the shared per-POI kernel (pxflow_spec/poi_kernel.h). */
+#define PXFLOW_POI_LD4(p) m4_ld4(p)
+#define PXFLOW_POI_SAD4_ACC(acc, a, b) m4_sad4_acc(a, b, acc)
+#define PXFLOW_POI_AVG4(a, b) m4_avg4(a, b)
+
 #endif

@@ -87,4 +87,9 @@ static inline uint32_t avg4(uint32_t a, uint32_t b) {
   "\n\t"                          \
   "xor " d ", " a ", " b "\n\t" PV_SRL1_B_ASM(d, d) "add " d ", " d ", " t "\n\t"
 
+/* The primitives of the shared per-POI kernel (pxflow_spec/poi_kernel.h). */
+#define PXFLOW_POI_LD4(p) ld4(p)
+#define PXFLOW_POI_SAD4_ACC(acc, a, b) sad4_acc(acc, a, b)
+#define PXFLOW_POI_AVG4(a, b) avg4(a, b)
+
 #endif

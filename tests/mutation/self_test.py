@@ -84,7 +84,7 @@ def compile_object(cc, source, text, folder, name, flags):
     with open(src, "w") as f:
         f.write(text)
     obj = os.path.join(folder, name, "kernel.o")
-    includes = [f"-I{os.path.join(source, d)}" for d in ("dut/include", "spec/include")]
+    includes = [f"-I{os.path.join(source, d)}" for d in ("dut/include", "dut/src", "spec/include")]
     subprocess.run([cc, "-std=c99", "-O2", *flags, *includes, "-c", src, "-o", obj], check=True)
     return tce.digest(obj)
 

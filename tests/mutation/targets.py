@@ -37,6 +37,11 @@ REF_OBJECTS = ("reference/CMakeFiles/pxflow_reference.dir/*.o",)
 # tests/conformance: the reference and CPU rows on the whole default corpus, one test per row (a
 # ctest -R regex; ref-original runs in each as the reference).
 CPU_ROWS_UNDER_ASAN = ("sanitizer", r"conformance\.(ref-local|ref-global|swar|sse2|sse41|avx2|avx512bw|cpu)")
+M4_ELF = ("hosts/m4qemu/pxflow_m4_dut.elf",)
+DUT_OBJECT = ("dut/CMakeFiles/pxdut_algo.dir/src/pxdut_kernel.c.o",)
+DUT_REF_ARGS = ("--dut", "dutref=exec:{build}/pxflow-dut-ref")
+DUT_REF_UNDER_ASAN = ("sanitizer", "dut_ref_check_fixed_corpus")
+POI_KERNEL_OUTPUTS = GAP8_ELVES + M4_ELF + DUT_OBJECT
 
 FAMILIES = {
     f.name: f
@@ -56,13 +61,17 @@ FAMILIES = {
         Family("vulkan", "vulkan", ("kernels/vulkan/generated/flow.spv",),
                ("kernels/vulkan/generated/flow.spv",)),
         Family("gap8", "gap8", GAP8_ELVES, GAP8_ELVES),
-        Family("cortex-m4", "m4qemu", ("hosts/m4qemu/pxflow_m4_dut.elf",),
-               ("hosts/m4qemu/pxflow_m4_dut.elf",)),
+        Family("cortex-m4", "m4qemu", M4_ELF, M4_ELF),
         # tests/dut/CMakeLists.txt: the dut reference device on the whole default corpus.
-        Family("dut", "", ("dut/CMakeFiles/pxdut_algo.dir/src/pxdut_kernel.c.o",),
-               ("dut/CMakeFiles/pxdut_algo.dir/src/pxdut_kernel.c.o",),
-               ("pxflow", "pxflow-dut-ref"), ("--dut", "dutref=exec:{build}/pxflow-dut-ref"),
-               memory_test=("sanitizer", "dut_ref_check_fixed_corpus")),
+        Family("dut", "", DUT_OBJECT, DUT_OBJECT, ("pxflow", "pxflow-dut-ref"), DUT_REF_ARGS,
+               memory_test=DUT_REF_UNDER_ASAN),
+        # The shared per-POI kernel (spec/include/pxflow_spec/poi_kernel.h): compiled into every
+        # GAP8 ELF, the Cortex-M4 firmware and the dut reference device. Its rows span the gap8
+        # and m4qemu registry families and the dutref option row, so no one registry family
+        # names them (""): self_test.py checks the same row names through the gap8, cortex-m4
+        # and dut entries.
+        Family("poi-kernel", "", POI_KERNEL_OUTPUTS, POI_KERNEL_OUTPUTS,
+               ("pxflow", "pxflow-dut-ref"), DUT_REF_ARGS, memory_test=DUT_REF_UNDER_ASAN),
     )
 }
 
@@ -115,6 +124,8 @@ TARGETS = (
     Target("kernels/cortex-m4/m4_flow_frame.c", "cortex-m4", ("m4-qemu",)),
     Target("kernels/cortex-m4/m4_simd.h", "cortex-m4", ("m4-qemu",)),
     Target("dut/src/pxdut_kernel.c", "dut", ("dutref",)),
+    Target("dut/src/pxdut_primitives.h", "dut", ("dutref",)),
+    Target("spec/include/pxflow_spec/poi_kernel.h", "poi-kernel", GAP8_ALL + ("m4-qemu", "dutref")),
 )
 
 # Rows that are not registry rows of the binary but made by a family option (check_args).
