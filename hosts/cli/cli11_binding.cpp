@@ -39,8 +39,11 @@ CLI::Option* add_target(CLI::App& app, const OptionSpec& o) {
             CLI::Option* opt = app.add_option(o.names, *target, o.help);
             // An integer's bounds in the target's own type: a value beyond that type is refused
             // as out of range, as CLI11's Range of it does.
-            if constexpr (std::is_same_v<T, int> || std::is_same_v<T, long>)
+            if constexpr (std::is_same_v<T, int> || std::is_same_v<T, long>) {
               if (o.range) opt->check(CLI::Range(T(o.range->first), T(o.range->second)));
+            } else if (o.range) {  // a real's range is real_in(): nan and inf refused too
+              throw std::logic_error("option " + o.names + ": in_range() on a non-integer");
+            }
             return opt;
           }
         }
@@ -72,7 +75,7 @@ CLI::Option* add(CLI::App& app, const OptionSpec& o) {
   if (o.repeat != OptionSpec::Repeat::Type)
     opt->multi_option_policy(o.repeat == OptionSpec::Repeat::Each ? CLI::MultiOptionPolicy::TakeAll
                                                                   : CLI::MultiOptionPolicy::Throw);
-  if (o.hidden || !o.renamed_to.empty()) opt->group("");
+  if (o.hidden) opt->group("");
   return opt;
 }
 

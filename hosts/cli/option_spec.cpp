@@ -44,6 +44,7 @@ OptionSpec& CommandSpec::flag_callback(std::string n, std::function<void()> call
 OptionSpec& CommandSpec::renamed(std::string old_name, std::string new_name) {
   OptionSpec& o = add(std::move(old_name), std::monostate{});
   o.renamed_to = std::move(new_name);
+  o.hidden = true;
   return o;
 }
 

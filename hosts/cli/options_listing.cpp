@@ -43,7 +43,7 @@ Json option_json(const OptionSpec& o) {
          {"takes_value", most_values(o) > 0},
          {"type_name", shown_type(o)},
          {"required", o.required},
-         {"hidden", o.hidden || !o.renamed_to.empty()},
+         {"hidden", o.hidden},
          {"repeatable", most_values(o) > 1 || o.repeat == OptionSpec::Repeat::Each}};
   if (o.real) j["real"] = {o.real->first, o.real->second};
   if (o.path) {

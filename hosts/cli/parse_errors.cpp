@@ -73,7 +73,7 @@ std::vector<std::string> listed_names(const CommandSpec& app) {
   std::vector<std::string> names = {"--help"};
   if (app.parent == nullptr) names.push_back("--version");
   for (const OptionSpec& opt : app.options) {
-    if (opt.hidden || !opt.renamed_to.empty()) continue;  // hidden: old spellings
+    if (opt.hidden) continue;  // old spellings, the worker mode
     for (std::size_t start = 0; start < opt.names.size();) {
       const std::size_t end = std::min(opt.names.find(',', start), opt.names.size());
       const std::string name = opt.names.substr(start, end - start);
