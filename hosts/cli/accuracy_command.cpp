@@ -46,29 +46,29 @@ const std::vector<std::string> kAccuracyExamples = {
     "accuracy  # error against true motion, beside OpenCV's LK and DIS",
 };
 
-Command add_accuracy_command(CLI::App& app) {
+Command add_accuracy_command(CommandSpec& app) {
   auto a = std::make_shared<AccuracyArgs>();
   accuracy::AccuracyOptions* const o = &a->options;
   o->backend = default_backend().name;
-  CLI::App* sub = app.add_subcommand(
+  CommandSpec* sub = &app.add_subcommand(
       "accuracy",
       "pxflow vs OpenCV's Lucas-Kanade and DIS flow: error against known motion, time per frame");
   add_backend_option(*sub, o->backend, "for pxflow's flow");
   add_device_option(*sub, o->backend_options.device);
-  sub->add_option("--cases", o->pairs, "Synthetic pairs at 64x64 (a quarter as many at 320x240)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
-  sub->add_option("--video-pairs", o->video_pairs,
-                  "Real frame pairs per video (vtest.avi, tree.avi); 0 = none")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 40));
+  sub->add("--cases", &o->pairs, "Synthetic pairs at 64x64 (a quarter as many at 320x240)")
+      .with_default()
+      .in_range(1, 100000);
+  sub->add("--video-pairs", &o->video_pairs,
+           "Real frame pairs per video (vtest.avi, tree.avi); 0 = none")
+      .with_default()
+      .in_range(0, 40);
   add_seed_option(*sub, o->seed, "of the synthetic motions");
   add_threads_option(*sub, o->threads, "for OpenCV and the backend alike");
   add_data_option(*sub, o->data_dir);
   add_json_option(*sub, a->json_path,
                   "the rows, as in the report's results.json; with '-' the "
                   "table goes to stderr");
-  sub->add_flag("--by-kind", o->by_kind, "Also one block of rows per kind of motion");
+  sub->flag("--by-kind", o->by_kind, "Also one block of rows per kind of motion");
   add_progress_flag(*sub);
   // Old spellings: --pairs is a list file of pairs in flow; --data is every command's folder.
   add_renamed_option(*sub, "--pairs", "--cases N");

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <new>
 
+#include "cli11_binding.hpp"
 #include "cli_extension.hpp"
 #include "commands.hpp"
 #include "device_wait.hpp"
@@ -15,7 +16,6 @@
 #include "options_listing.hpp"
 #include "output_plan.hpp"
 #include "parse_errors.hpp"
-#include "path_options.hpp"
 #include "pxflow_app.hpp"
 #include "pxflow_version.h"
 #include "registry.hpp"
@@ -37,11 +37,8 @@ std::string version_text() {
 
 int run_pxflow(int argc, char** argv) {
   install_interrupt_handlers();
-  CLI::App app{
-      "pxflow: the PX4FLOW optical-flow kernel, cross-checked bit for bit across backends"};
-  app.set_version_flag("--version", version_text);
-  app.require_subcommand(1);
-  app.fallthrough();  // global options may follow the subcommand
+  cli::CommandSpec app{
+      "", "pxflow: the PX4FLOW optical-flow kernel, cross-checked bit for bit across backends"};
   // The families' global options (e.g. the cpu family's --disable-isa), applied before the
   // command runs.
   // --device-timeout first: shared by every family that waits on a device, declared once here.
@@ -50,15 +47,12 @@ int run_pxflow(int argc, char** argv) {
       {&device_timeout, {}}};
   for (const BackendFamily& f : backend_families())
     for (const FamilyOption& opt : f.options) family_options.push_back({&opt, {}});
-  std::vector<CLI::Option*> family_flags;
   for (auto& [opt, values] : family_options) {
     // One value per occurrence; only a repeatable option may occur more than once.
-    CLI::Option* flag =
-        app.add_option(opt->flag, values, opt->help)->expected(1)->type_name(opt->value_name);
-    if (opt->reads_file) cli::declare_path(flag, cli::PathKind::InputFile);
-    flag->multi_option_policy(opt->repeatable ? CLI::MultiOptionPolicy::TakeAll
-                                              : CLI::MultiOptionPolicy::Throw);
-    family_flags.push_back(flag);
+    cli::OptionSpec& flag =
+        app.add(opt->flag, &values, opt->help).value_count(1, 1).type(opt->value_name);
+    if (opt->reads_file) flag.path_kind(cli::PathKind::InputFile);
+    flag.repeats(opt->repeatable ? cli::OptionSpec::Repeat::Each : cli::OptionSpec::Repeat::Once);
   }
   std::vector<cli::Command> commands = {
       cli::add_flow_command(app),   cli::add_check_command(app),    cli::add_bench_command(app),
@@ -71,11 +65,11 @@ int run_pxflow(int argc, char** argv) {
   std::string globals = "Global options (before or after the command; see pxflow --help):";
   for (const auto& [opt, values] : family_options) globals += "\n  " + opt->flag + "  " + opt->help;
   for (const auto& c : commands) {
-    const std::string own = c.app->get_footer();
-    c.app->footer((own.empty() ? "" : own + "\n\n") + globals + "\n\n" +
-                  cli::help_sections(c.examples));
+    const std::string own = c.spec->footer;
+    c.spec->footer =
+        (own.empty() ? "" : own + "\n\n") + globals + "\n\n" + cli::help_sections(c.examples);
   }
-  app.footer(cli::help_sections(cli::first_examples(commands)));
+  app.footer = cli::help_sections(cli::first_examples(commands));
   // For the generated tests (path_options.hpp): every option, its kind, every command's runs.
   if (argc == 2 && std::string(argv[1]) == "--list-options") {
     std::fputs(cli::list_options_json(app, commands).c_str(), stdout);
@@ -84,7 +78,7 @@ int run_pxflow(int argc, char** argv) {
   std::string command;  // the subcommand being parsed, for "see pxflow CMD --help"
   if (argc > 1 && argv[1][0] != '-') {
     for (const auto& c : commands)
-      if (c.app->get_name() == argv[1]) command = argv[1];
+      if (c.spec->name == argv[1]) command = argv[1];
     if (command.empty()) {
       std::fprintf(stderr, "pxflow: error: unknown command '%s' (see pxflow --help)\n", argv[1]);
       return 2;
@@ -94,25 +88,20 @@ int run_pxflow(int argc, char** argv) {
     // command instead of the unknown option).
     const std::string arg = argv[1];
     const std::string name = arg.substr(0, arg.find('='));
-    if (app.get_option_no_throw(name) == nullptr && name != "-h" && name != "--help") {
+    if (!cli::declares_global(app, name)) {
       std::fprintf(stderr, "pxflow: error: unknown option %s%s (see pxflow --help)\n", name.c_str(),
                    cli::nearest_option(name, app).c_str());
       return 2;
     }
   }
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    // A misspelt option is named, whatever CLI11 made of it and of its value.
-    const CLI::App* sub = nullptr;
+  if (const cli::ParseOutcome parse = cli::parse_command_line(app, version_text, argc, argv);
+      parse.exit_code) {
+    return *parse.exit_code;
+  } else if (!parse.error.empty()) {
+    // A misspelt option is named, whatever the parser made of it and of its value.
+    const cli::CommandSpec* sub = nullptr;
     for (const auto& c : commands)
-      if (c.app->get_name() == command) sub = c.app;
+      if (c.spec->name == command) sub = c.spec;
     const std::string unknown =
         cli::unknown_option(std::vector<std::string>(argv + 1, argv + argc), app, sub);
     if (!unknown.empty()) {
@@ -120,7 +109,8 @@ int run_pxflow(int argc, char** argv) {
                    command.empty() ? "" : (command + " ").c_str());
       return 2;
     }
-    std::fprintf(stderr, "pxflow: error: %s\n", cli::describe_parse_error(e, command).c_str());
+    std::fprintf(stderr, "pxflow: error: %s\n",
+                 cli::describe_parse_error(parse.error, command).c_str());
     return 2;
   }
   try {
@@ -130,10 +120,11 @@ int run_pxflow(int argc, char** argv) {
       for (const std::string& value : family_options[i].second)
         family_options[i].first->apply(value);
     for (const auto& c : commands)
-      if (c.app->parsed()) {
+      if (c.spec->parsed) {
         cli::note_given_inputs(app);  // before any plan: its outputs are checked against them
-        cli::note_given_inputs(*c.app);
-        for (const CLI::App* sub : c.app->get_subcommands()) cli::note_given_inputs(*sub);
+        cli::note_given_inputs(*c.spec);
+        for (const cli::CommandSpec& sub : c.spec->subcommands)
+          if (sub.parsed) cli::note_given_inputs(sub);
         const int code = c.run();
         check_stdout();  // output that was lost is a failure, never a silent exit 0
         return code;

@@ -42,10 +42,10 @@ const std::vector<std::string> kBackendsExamples = {
     "backends --json -  # the same as JSON",
 };
 
-Command add_backends_command(CLI::App& app) {
+Command add_backends_command(CommandSpec& app) {
   auto json_path = std::make_shared<std::string>();
-  CLI::App* sub =
-      app.add_subcommand("backends", "List the compiled backends and whether each can run here");
+  CommandSpec* sub =
+      &app.add_subcommand("backends", "List the compiled backends and whether each can run here");
   add_json_option(*sub, *json_path,
                   "the rows: name, family, available, reason, needs, has_devices, preferred; "
                   "with '-' instead of the table");

@@ -18,7 +18,6 @@
 #include "output_plan.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
-#include "real_options.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -32,8 +31,7 @@ struct BenchArgs {
   int processes = kDefaultProcesses;
   bool quick = false, no_bound = false;
   // --threads: the host threads of every point but the thread sweep's (0 = all cores).
-  CLI::Option *min_time_opt = nullptr, *threads_opt = nullptr;
-  CLI::App* sub = nullptr;
+  const CommandSpec* sub = nullptr;
   BackendOptions backend_options;
 };
 
@@ -52,7 +50,7 @@ std::vector<BenchPoint> bench_points(const BenchArgs& a) {
     throw InputError("--sizes and --set width/height both set the frame size; give one");
   const Params base = a.problem.resolve(std::nullopt);
   const int threads_given = a.backend_options.threads;
-  if (!a.thread_sweep.empty() && a.threads_opt->count() > 0)
+  if (!a.thread_sweep.empty() && a.sub->count("--threads") > 0)
     throw InputError("--threads " + std::to_string(threads_given) + ": given with --thread-sweep " +
                      a.thread_sweep + ": give one of them (see pxflow bench --help)");
   const bool custom =
@@ -121,7 +119,7 @@ std::string joined(const std::vector<std::string>& names) {
 // first process alone. A signal, or a process that fails, keeps the processes finished so far.
 BenchReport bench_in_processes(const BenchArgs& a, const BenchOptions& o, std::ostream& out) {
   std::vector<std::string> argv = {own_executable()};
-  for (const auto& [name, value] : given_option_list(*a.sub->get_parent()))
+  for (const auto& [name, value] : given_option_list(*a.sub->parent))
     argv.push_back(name), value ? argv.push_back(*value) : void();
   argv.push_back("bench");
   for (const auto& [name, value] : given_option_list(*a.sub)) {
@@ -198,7 +196,7 @@ int run_bench_command(const BenchArgs& a) {
   o.backends = split_list(a.backend.empty() ? a.backends : a.backend);
   for (const std::string& name : o.backends) (void)find_backend(name);  // before any output
   o.points = bench_points(a);
-  o.min_seconds = a.quick && a.min_time_opt->count() == 0 ? kQuickMinSeconds : a.min_time;
+  o.min_seconds = a.quick && a.sub->count("--min-time") == 0 ? kQuickMinSeconds : a.min_time;
   o.max_samples = a.max_samples;
   o.backend_options = a.backend_options;
   o.backend_options.threads = 0;  // each point's own threads (bench_points)
@@ -242,48 +240,46 @@ const std::vector<std::string> kBenchExamples = {
     "bench --backends cpu,opencl --json bench.json",
 };
 
-Command add_bench_command(CLI::App& app) {
+Command add_bench_command(CommandSpec& app) {
   auto a = std::make_shared<BenchArgs>();
-  CLI::App* sub = app.add_subcommand(
+  CommandSpec* sub = &app.add_subcommand(
       "bench", "Time the backends over batch, frame-size, radius and thread sweeps");
   a->sub = sub;
   a->problem.add_to(*sub);
   add_backends_option(*sub, a->backends);
   add_backend_option(*sub, a->backend);
-  sub->add_option("--batch", a->batches, "Batch sizes, N[,N...] (frame pairs per run)")
-      ->check(non_empty_list());
-  a->threads_opt =
-      add_threads_option(*sub, a->backend_options.threads,
-                         "of every point but the thread sweep's (what report --threads N runs)");
-  sub->add_option("--thread-sweep", a->thread_sweep,
-                  "Thread counts to sweep, N[,N...] (0 = all cores), instead of --threads")
-      ->check(non_empty_list());
-  sub->add_option("--sizes", a->sizes, "Frame sizes, WxH[,WxH...]")->check(non_empty_list());
-  sub->add_option("--radius", a->radii, "Search radii, S[,S...]")->check(non_empty_list());
-  a->min_time_opt = declare_real(
-      sub->add_option("--min-time", a->min_time,
-                      "Seconds of measured samples per point and backend, at least, split over "
-                      "the processes (5 samples in each at least, however long)")
-          ->capture_default_str(),
-      0, 600);
-  sub->add_option("--processes", a->processes,
-                  "Measure each point in R processes of this binary, each after its own warm-up: "
-                  "a row's median and interval are over the processes' medians, so that "
-                  "run-to-run variance is in them (1: one process, the samples' statistics; "
-                  "pxflow compare then calls a change inconclusive)")
-      ->type_name("R")
-      ->check(CLI::Range(1, 100))
-      ->capture_default_str();
-  sub->add_option("--max-samples", a->max_samples,
-                  "Stop a point after N samples even before --min-time (0 = no cap)")
-      ->check(CLI::Range(0, 1000000))
-      ->capture_default_str();
-  sub->add_flag("--quick", a->quick,
-                "The default sweeps' quick subset: batch <= 256 and the frame sizes, no radius or "
-                "thread sweep, --min-time 0.05 unless given (what report --quick runs)");
-  sub->add_flag("--no-bound", a->no_bound,
-                "Do not measure the bound (about half a second per process; no x bound column): "
-                "for gates that compare builds, not kernels with their bound");
+  sub->add("--batch", &a->batches, "Batch sizes, N[,N...] (frame pairs per run)")
+      .checked(non_empty_list());
+  add_threads_option(*sub, a->backend_options.threads,
+                     "of every point but the thread sweep's (what report --threads N runs)");
+  sub->add("--thread-sweep", &a->thread_sweep,
+           "Thread counts to sweep, N[,N...] (0 = all cores), instead of --threads")
+      .checked(non_empty_list());
+  sub->add("--sizes", &a->sizes, "Frame sizes, WxH[,WxH...]").checked(non_empty_list());
+  sub->add("--radius", &a->radii, "Search radii, S[,S...]").checked(non_empty_list());
+  sub->add("--min-time", &a->min_time,
+           "Seconds of measured samples per point and backend, at least, split over "
+           "the processes (5 samples in each at least, however long)")
+      .with_default()
+      .real_in(0, 600);
+  sub->add("--processes", &a->processes,
+           "Measure each point in R processes of this binary, each after its own warm-up: "
+           "a row's median and interval are over the processes' medians, so that "
+           "run-to-run variance is in them (1: one process, the samples' statistics; "
+           "pxflow compare then calls a change inconclusive)")
+      .type("R")
+      .in_range(1, 100)
+      .with_default();
+  sub->add("--max-samples", &a->max_samples,
+           "Stop a point after N samples even before --min-time (0 = no cap)")
+      .in_range(0, 1000000)
+      .with_default();
+  sub->flag("--quick", a->quick,
+            "The default sweeps' quick subset: batch <= 256 and the frame sizes, no radius or "
+            "thread sweep, --min-time 0.05 unless given (what report --quick runs)");
+  sub->flag("--no-bound", a->no_bound,
+            "Do not measure the bound (about half a second per process; no x bound column): "
+            "for gates that compare builds, not kernels with their bound");
   add_device_option(*sub, a->backend_options.device);
   add_json_option(*sub, a->json_path,
                   "the table then goes to stderr; a bench a signal stops writes the rows it "

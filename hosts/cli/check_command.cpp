@@ -18,9 +18,7 @@
 #include "json_document.hpp"
 #include "list_option.hpp"
 #include "output_plan.hpp"
-#include "path_options.hpp"
 #include "progress.hpp"
-#include "real_options.hpp"
 #include "shard_auto.hpp"
 
 namespace pxflow::cli {
@@ -43,14 +41,12 @@ struct CheckArgs {
   ParamOverride params;  // --profile, --set: the corpus at other parameters
   BackendOptions backend_options;
   std::string globals;  // the global options given (--dut, --disable-isa ...): they shape the run
-  CLI::Option *backend_opt = nullptr, *backends_opt = nullptr, *data_opt = nullptr,
-              *shard_opt = nullptr, *repro_dir_opt = nullptr;
-  const CLI::App* sub = nullptr;
+  const CommandSpec* sub = nullptr;
 };
 
 // --backend NAME runs one backend, --backends LIST several: one meaning each, never both.
 std::vector<std::string> chosen_backends(const CheckArgs& a) {
-  const bool one = a.backend_opt->count() > 0, list = a.backends_opt->count() > 0;
+  const bool one = a.sub->count("--backend") > 0, list = a.sub->count("--backends") > 0;
   if (one && list)
     throw InputError("--backend " + a.backend + " and --backends " + a.backends +
                      ": give one of them (--backend NAME for one, --backends LIST for several)" +
@@ -70,24 +66,24 @@ std::vector<std::string> chosen_backends(const CheckArgs& a) {
 // auto` resolved), so that pxflow merge and a rerun see K/M.
 std::string command_line(const CheckArgs& a, const Shard& shard) {
   std::string c = "pxflow" + a.globals + " check";
-  if (a.backend_opt->count() > 0) c += " --backend " + a.backend;
-  if (a.backends_opt->count() > 0) c += " --backends " + a.backends;
+  if (a.sub->count("--backend") > 0) c += " --backend " + a.backend;
+  if (a.sub->count("--backends") > 0) c += " --backends " + a.backends;
   if (!a.require.empty()) c += " --require " + a.require;
   if (a.cases > 0) c += " --cases " + std::to_string(a.cases);
   c += " --seed " + std::to_string(a.seed);
-  if (a.shard_opt->count() > 0) c += " --shard " + shard.text();
+  if (a.sub->count("--shard") > 0) c += " --shard " + shard.text();
   if (a.generated_only) c += " --generated-only";
   if (a.limits_only) c += " --limits-only";
   if (!a.params.profile.empty()) c += " --profile " + shell_word(a.params.profile);
   for (const std::string& kv : a.params.sets) c += " --set " + shell_word(kv);
-  if (a.data_opt->count() > 0) c += " --data " + shell_word(a.data_dir);
+  if (a.sub->count("--data") > 0) c += " --data " + shell_word(a.data_dir);
   if (!a.backend_options.device.empty()) c += " --device " + shell_word(a.backend_options.device);
   if (a.backend_options.threads != 0)
     c += " --threads " + std::to_string(a.backend_options.threads);
   if (a.case_timeout > 0) c += " --case-timeout " + setting_text(a.case_timeout);
   if (!a.json_path.empty()) c += " --json " + shell_word(a.json_path);
   if (a.no_repro) c += " --no-repro";
-  if (a.repro_dir_opt->count() > 0) c += " --repro-dir " + shell_word(a.repro_dir);
+  if (a.sub->count("--repro-dir") > 0) c += " --repro-dir " + shell_word(a.repro_dir);
   return c;
 }
 
@@ -96,7 +92,7 @@ std::string command_line(const CheckArgs& a, const Shard& shard) {
 OutputFolder* plan_reproducers(const CheckArgs& a, const std::string& json_path, OutputPlan& plan) {
   if (a.no_repro) return nullptr;
   std::string dir = a.repro_dir;
-  if (a.repro_dir_opt->count() == 0) {
+  if (a.sub->count("--repro-dir") == 0) {
     const std::filesystem::path json(json_path);
     dir = json_path.empty() || json_path == kStdoutPath || !json.has_parent_path()
               ? "."
@@ -113,11 +109,11 @@ CheckOptions options_from_args(const CheckArgs& a) {
   o.require = split_list(a.require);
   o.fuzz_pairs = a.cases;
   std::string shard_source;  // with --shard auto: the engine and variables K/M came from
-  if (a.shard_opt->count() > 0 && a.shard == "auto") {
+  if (a.sub->count("--shard") > 0 && a.shard == "auto") {
     const AutoShard found = shard_from_environment();
     o.shard = found.shard;
     shard_source = " (--shard auto: " + found.source + ")";
-  } else if (a.shard_opt->count() > 0) {
+  } else if (a.sub->count("--shard") > 0) {
     o.shard = parse_shard("--shard", a.shard);
   }
   o.backend_options = a.backend_options;
@@ -154,11 +150,10 @@ constexpr std::string_view kResumeTakes[] = {"--resume",        "--json",    "--
 
 // The stopped check of --resume FILE, refused (one line, exit 2) unless this run can finish it.
 CheckReport read_stopped_check(const CheckArgs& a, const BuildIdentity& built) {
-  for (const CLI::Option* opt : a.sub->get_options())
-    if (opt->count() > 0 &&
-        std::ranges::find(kResumeTakes, opt->get_name()) == std::end(kResumeTakes))
+  for (const OptionSpec& opt : a.sub->options)
+    if (opt.count() > 0 && std::ranges::find(kResumeTakes, opt.name()) == std::end(kResumeTakes))
       throw InputError(
-          opt->get_name() + " given with --resume: the campaign's options come from " +
+          opt.name() + " given with --resume: the campaign's options come from " +
           "the file (only --json, --repro-dir, --no-repro, --repro-seconds, --verbose " +
           "and --progress go with it)" + kHelp);
   const std::string label = "--resume " + a.resume_path;
@@ -281,80 +276,78 @@ const std::vector<std::string> kCheckExamples = {
     "check --backends ref-original,avx2 --set search_radius=20  # the corpus at S = 20",
 };
 
-Command add_check_command(CLI::App& app) {
+Command add_check_command(CommandSpec& app) {
   auto a = std::make_shared<CheckArgs>();
-  CLI::App* sub =
-      app.add_subcommand("check", "Check every backend against ref-original, bit for bit");
-  a->backend_opt = add_backend_option(*sub, a->backend, "the one to check");
-  a->backends_opt = add_backends_option(*sub, a->backends, "the ones to check");
-  sub->add_option("--require", a->require,
-                  "Backends that must run (comma-separated, or 'all': every row but those needing "
-                  "hardware this machine lacks, an ISA extension): their skips fail")
-      ->type_name("LIST|all");
+  CommandSpec* sub =
+      &app.add_subcommand("check", "Check every backend against ref-original, bit for bit");
+  add_backend_option(*sub, a->backend, "the one to check");
+  add_backends_option(*sub, a->backends, "the ones to check");
+  sub->add("--require", &a->require,
+           "Backends that must run (comma-separated, or 'all': every row but those needing "
+           "hardware this machine lacks, an ISA extension): their skips fail")
+      .type("LIST|all");
   add_seed_option(*sub, a->seed, "printed; it reproduces any failure");
-  sub->add_option("--cases", a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
-      ->check(CLI::Range(1L, 100000000L));
-  a->shard_opt = sub->add_option("--shard", a->shard,
-                                 "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
-                                 "`pxflow merge` combines the parts' --json files). auto: K and M "
-                                 "from the CI engine's variables, the first set of GitLab "
-                                 "parallel: (CI_NODE_INDEX/CI_NODE_TOTAL), a Kubernetes Indexed "
-                                 "Job (JOB_COMPLETION_INDEX/PXFLOW_SHARD_TOTAL), a Slurm array "
-                                 "(SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT); the --json file "
-                                 "records the K/M found")
-                     ->type_name("K/M|auto");
+  sub->add("--cases", &a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
+      .in_range(1L, 100000000L);
+  sub->add("--shard", &a->shard,
+           "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
+           "`pxflow merge` combines the parts' --json files). auto: K and M "
+           "from the CI engine's variables, the first set of GitLab "
+           "parallel: (CI_NODE_INDEX/CI_NODE_TOTAL), a Kubernetes Indexed "
+           "Job (JOB_COMPLETION_INDEX/PXFLOW_SHARD_TOTAL), a Slurm array "
+           "(SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT); the --json file "
+           "records the K/M found")
+      .type("K/M|auto");
   add_json_option(*sub, a->json_path,
                   "also written when a signal stops the check: what it checked, \"complete\": "
                   "false; --resume goes on from it");
-  declare_path(sub->add_option("--resume", a->resume_path,
-                               "Finish the check a signal stopped, from its --json FILE: the "
-                               "cases not done, with the file's campaign and options; the "
-                               "result (the uninterrupted run's) replaces FILE, or goes to "
-                               "--json (docs/harness.md, Stopping and resuming a campaign)")
-                   ->type_name("FILE"),
-               PathKind::UpdatedFile);
-  a->data_opt = add_data_option(*sub, a->data_dir);
-  sub->add_flag("--generated-only", a->generated_only,
-                "Skip the real frames (random, hostile, threshold cases only)");
-  sub->add_flag("--limits-only", a->limits_only,
-                "Only the limit cases: each backend at the edges its unsupported() declares, and "
-                "SPEC's corners (docs/harness.md)");
+  sub->add("--resume", &a->resume_path,
+           "Finish the check a signal stopped, from its --json FILE: the "
+           "cases not done, with the file's campaign and options; the "
+           "result (the uninterrupted run's) replaces FILE, or goes to "
+           "--json (docs/harness.md, Stopping and resuming a campaign)")
+      .type("FILE")
+      .path_kind(PathKind::UpdatedFile);
+  add_data_option(*sub, a->data_dir);
+  sub->flag("--generated-only", a->generated_only,
+            "Skip the real frames (random, hostile, threshold cases only)");
+  sub->flag("--limits-only", a->limits_only,
+            "Only the limit cases: each backend at the edges its unsupported() declares, and "
+            "SPEC's corners (docs/harness.md)");
   std::string profiles;
   for (const auto& n : profile_names()) profiles += (profiles.empty() ? "" : ", ") + n;
-  sub->add_option("--profile", a->params.profile,
-                  "Run the corpus at this profile's parameters (" + profiles +
-                      "), each case at its own frame size; the limit cases keep theirs "
-                      "(default: each case's own parameters)")
-      ->type_name("NAME");
-  sub->add_option("--set", a->params.sets,
-                  "Run the corpus with one parameter overridden, KEY=VALUE (repeatable; every "
-                  "key of flow --set but width and height): e.g. --set search_radius=20. Cases "
-                  "whose frames are too small for it are left out, each named")
-      ->type_name("KEY=VALUE")
-      ->allow_extra_args(false);
-  sub->add_flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
-  a->repro_dir_opt = declare_path(
-      sub->add_option("--repro-dir", a->repro_dir,
-                      "Existing folder for the reproducers of mismatches, one pxflow-repro-N per "
-                      "run (default: the --json file's folder, else the working folder)")
-          ->type_name("DIR"),
-      PathKind::OutputFolder);
-  sub->add_flag("--no-repro", a->no_repro,
-                "Write no reproducers (the first differing stage is still named)");
-  declare_real(
-      sub->add_option("--repro-seconds", a->repro_seconds,
-                      "Time each backend's reproducer may spend shrinking its failing pair")
-          ->capture_default_str(),
-      0, 3600);
+  sub->add("--profile", &a->params.profile,
+           "Run the corpus at this profile's parameters (" + profiles +
+               "), each case at its own frame size; the limit cases keep theirs "
+               "(default: each case's own parameters)")
+      .type("NAME");
+  sub->add("--set", &a->params.sets,
+           "Run the corpus with one parameter overridden, KEY=VALUE (repeatable; every "
+           "key of flow --set but width and height): e.g. --set search_radius=20. Cases "
+           "whose frames are too small for it are left out, each named")
+      .type("KEY=VALUE")
+      .one_word_each();
+  sub->flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
+  sub->add("--repro-dir", &a->repro_dir,
+           "Existing folder for the reproducers of mismatches, one pxflow-repro-N per "
+           "run (default: the --json file's folder, else the working folder)")
+      .type("DIR")
+      .path_kind(PathKind::OutputFolder);
+  sub->flag("--no-repro", a->no_repro,
+            "Write no reproducers (the first differing stage is still named)");
+  sub->add("--repro-seconds", &a->repro_seconds,
+           "Time each backend's reproducer may spend shrinking its failing pair")
+      .with_default()
+      .real_in(0, 3600);
   add_progress_flag(*sub);
-  sub->add_option("--case-timeout", a->case_timeout,
-                  "Seconds a backend may take for one case before it is called hung (default: "
-                  "an allowance scaled to the case's work and the backend's measured speed; "
-                  "docs/harness.md, Isolation)")
-      ->type_name("SECONDS");
-  declare_real(sub->get_option("--case-timeout"), 0.001, 1e6);
+  sub->add("--case-timeout", &a->case_timeout,
+           "Seconds a backend may take for one case before it is called hung (default: "
+           "an allowance scaled to the case's work and the backend's measured speed; "
+           "docs/harness.md, Isolation)")
+      .type("SECONDS")
+      .real_in(0.001, 1e6);
   // Hidden: the worker mode of the check's own worker processes (hosts/harness/check_worker.hpp).
-  sub->add_option(worker::kWorkerOption, a->worker_row)->group("");
+  sub->add(worker::kWorkerOption, &a->worker_row).unlisted();
   add_threads_option(*sub, a->backend_options.threads);
   add_device_option(*sub, a->backend_options.device);
   return {sub,

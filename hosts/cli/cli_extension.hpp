@@ -2,7 +2,6 @@
 // section of `pxflow report`. Registered by the family's pxflow_backend_family() call
 // (CLI_EXTENSION); the CLI iterates registered_cli_extensions() and knows no family by name.
 #pragma once
-#include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
 #include <vector>
@@ -13,8 +12,8 @@
 namespace pxflow::cli {
 
 struct CliExtension {
-  std::string family;                             // the BackendFamily name it belongs to
-  std::function<Command(CLI::App&)> add_command;  // e.g. `pxflow gap8`; empty: none
+  std::string family;                                // the BackendFamily name it belongs to
+  std::function<Command(CommandSpec&)> add_command;  // e.g. `pxflow gap8`; empty: none
   // The report section, added when the report's backends include a row of `family` and the
   // user did not pass `report_skip_flag`. It appends to in.sections.
   std::string report_skip_flag, report_skip_help;  // e.g. "--no-gap8"

@@ -2,19 +2,19 @@
 // the one chosen. Actions return the process exit code; bad input is thrown as InputError
 // (main prints it as one line and exits 2).
 #pragma once
-#include <CLI/CLI.hpp>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "option_spec.hpp"
 #include "params.hpp"
 #include "shared_options.hpp"
 
 namespace pxflow::cli {
 
 struct Command {
-  CLI::App* app = nullptr;
+  CommandSpec* spec = nullptr;  // its options, owned by the top level's CommandSpec
   std::function<int()> run;
   // Command lines that show it at work, after "pxflow ", each ending in "  # what it does":
   // the Examples of its --help and man page (help_sections.hpp).
@@ -33,21 +33,21 @@ struct Command {
   std::vector<std::string> long_runs{};
 };
 
-Command add_flow_command(CLI::App& app);
-Command add_merge_command(CLI::App& app);    // pxflow merge: check shards combined
-Command add_compare_command(CLI::App& app);  // pxflow compare: bench files side by side
-Command add_backends_command(CLI::App& app);
-Command add_check_command(CLI::App& app);
-Command add_bench_command(CLI::App& app);
-Command add_report_command(CLI::App& app);
-Command add_accuracy_command(CLI::App& app);
+Command add_flow_command(CommandSpec& app);
+Command add_merge_command(CommandSpec& app);    // pxflow merge: check shards combined
+Command add_compare_command(CommandSpec& app);  // pxflow compare: bench files side by side
+Command add_backends_command(CommandSpec& app);
+Command add_check_command(CommandSpec& app);
+Command add_bench_command(CommandSpec& app);
+Command add_report_command(CommandSpec& app);
+Command add_accuracy_command(CommandSpec& app);
 
 // Options that describe the problem, shared by every command that runs kernels.
 struct ProblemOptions {
   std::string profile{kDefaultProfile};
   std::vector<std::string> sets;  // KEY=VALUE
 
-  void add_to(CLI::App& app);
+  void add_to(CommandSpec& app);
   // The profile with every --set applied in order; width/height default to `frame` when given
   // and not set explicitly (an explicit value that differs from the frame is an error). Valid.
   Params resolve(std::optional<std::pair<int, int>> frame) const;

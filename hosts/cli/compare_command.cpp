@@ -29,7 +29,7 @@ struct CompareArgs {
   std::vector<std::string> run;  // --run OLD NEW: two pxflow binaries
   int rounds = kDefaultRounds;
   std::string bench_args;
-  CLI::App* sub = nullptr;
+  const CommandSpec* sub = nullptr;
   static constexpr int kDefaultRounds = 10;
 };
 
@@ -78,7 +78,7 @@ std::vector<std::string> bench_words(const std::string& text) {
 std::vector<BenchFile> run_two_builds(const CompareArgs& a) {
   const std::vector<std::string> words = bench_words(a.bench_args);
   std::vector<std::string> globals;
-  for (const auto& [name, value] : given_option_list(*a.sub->get_parent()))
+  for (const auto& [name, value] : given_option_list(*a.sub->parent))
     globals.push_back(name), value ? globals.push_back(*value) : void();
   std::vector<BenchReport> runs[2];
   Json built[2];  // each binary's "pxflow" (version, commit), from its first process
@@ -137,7 +137,7 @@ int run_compare(const CompareArgs& a) {
     throw InputError(
         "--run OLD NEW: given with bench files; give one of them (see pxflow "
         "compare --help)");
-  if (a.run.empty() && (a.sub->get_option("--rounds")->count() > 0 || !a.bench_args.empty()))
+  if (a.run.empty() && (a.sub->count("--rounds") > 0 || !a.bench_args.empty()))
     throw InputError("--rounds and --bench-args go with --run OLD NEW (see pxflow compare --help)");
   OutputPlan plan;
   plan.read_all(a.files);
@@ -194,14 +194,14 @@ const std::vector<std::string> kCompareExamples = {
     "compare laptop.json h200.json --across-machines --out cmp  # cmp/compare.json and .csv",
 };
 
-Command add_compare_command(CLI::App& app) {
+Command add_compare_command(CommandSpec& app) {
   auto a = std::make_shared<CompareArgs>();
-  CLI::App* sub = app.add_subcommand(
+  CommandSpec* sub = &app.add_subcommand(
       "compare",
       "Compare bench files (pxflow bench --json) of other machines, builds or drivers with the "
       "first: per backend and point, the ratio of medians and a Mann-Whitney U test");
   a->sub = sub;
-  sub->footer(
+  sub->footer =
       "Rows are compared only when their work is the same: backend, clock, sweep, profile, every "
       "parameter (--set), batch, threads and device; a row that differs in any is listed as not "
       "comparable, with what differs. Files of different machines need --across-machines (then "
@@ -217,40 +217,39 @@ Command add_compare_command(CLI::App& app) {
       "--fail-above: every row passed). 1: a row failed the gate, or no row was compared. 2: a "
       "file is missing, not JSON or not a bench file, files of two machines without "
       "--across-machines, or bad options; nothing is written. 3: the gate was inconclusive (no "
-      "row failed, one could not be decided). See docs/harness.md, \"Comparing bench files\".");
-  declare_path(
-      sub->add_option("FILES", a->files, "Bench files, the first the baseline (A), then B, C, ...")
-          ->type_name("FILE"),
-      PathKind::InputFile);
-  declare_real(sub->add_option("--fail-above", a->fail_above,
-                               "Exit 1 when a row is slower than the baseline by more than PCT "
-                               "percent with its whole 95% interval; 3 when a row cannot be "
-                               "decided (a CI regression gate)")
-                   ->type_name("PCT"),
-               0, 1000);
-  sub->add_flag("--across-machines", a->across_machines,
-                "Compare files measured on different machines (refused otherwise)");
-  declare_path(sub->add_option("--run", a->run,
-                               "Two pxflow binaries, the baseline first: run their benches "
-                               "alternately and compare them (a pull request's gate)")
-                   ->type_name("OLD NEW")
-                   ->expected(2),
-               PathKind::InputFile);
-  sub->add_option("--rounds", a->rounds,
-                  "With --run: bench processes of each binary (A B, B A, ...); 4 at least for a "
-                  "95% interval")
-      ->type_name("N")
-      ->check(CLI::Range(1, 1000))
-      ->capture_default_str();
-  sub->add_option("--bench-args", a->bench_args,
-                  "With --run: the bench options of every process, e.g. \"--backends cpu --batch "
-                  "256 --min-time 0.2\" (--min-time is per process here)")
-      ->type_name("\"OPTIONS\"");
-  sub->add_option("--out", a->out_dir,
-                  "Folder to write compare.json and compare.csv into (created when missing); "
-                  "with --run also bench-A.json and bench-B.json")
-      ->type_name("DIR");
-  declare_path(sub->get_option("--out"), PathKind::OwnedFolder);
+      "row failed, one could not be decided). See docs/harness.md, \"Comparing bench files\".";
+  sub->add("FILES", &a->files, "Bench files, the first the baseline (A), then B, C, ...")
+      .type("FILE")
+      .path_kind(PathKind::InputFile);
+  sub->add("--fail-above", &a->fail_above,
+           "Exit 1 when a row is slower than the baseline by more than PCT "
+           "percent with its whole 95% interval; 3 when a row cannot be "
+           "decided (a CI regression gate)")
+      .type("PCT")
+      .real_in(0, 1000);
+  sub->flag("--across-machines", a->across_machines,
+            "Compare files measured on different machines (refused otherwise)");
+  sub->add("--run", &a->run,
+           "Two pxflow binaries, the baseline first: run their benches "
+           "alternately and compare them (a pull request's gate)")
+      .type("OLD NEW")
+      .value_count(2, 2)
+      .path_kind(PathKind::InputFile);
+  sub->add("--rounds", &a->rounds,
+           "With --run: bench processes of each binary (A B, B A, ...); 4 at least for a "
+           "95% interval")
+      .type("N")
+      .in_range(1, 1000)
+      .with_default();
+  sub->add("--bench-args", &a->bench_args,
+           "With --run: the bench options of every process, e.g. \"--backends cpu --batch "
+           "256 --min-time 0.2\" (--min-time is per process here)")
+      .type("\"OPTIONS\"");
+  sub->add("--out", &a->out_dir,
+           "Folder to write compare.json and compare.csv into (created when missing); "
+           "with --run also bench-A.json and bench-B.json")
+      .type("DIR")
+      .path_kind(PathKind::OwnedFolder);
   return {sub, [a] { return run_compare(*a); }, kCompareExamples, {"{BENCH} {BENCH2}"}};
 }
 

@@ -362,12 +362,12 @@ const std::vector<std::string> kFlowExamples = {
     "flow --backend gap8-fast --crop 64x64+200+150 A.png B.png  # a window that fits GAP8's L1",
 };
 
-Command add_flow_command(CLI::App& app) {
+Command add_flow_command(CommandSpec& app) {
   auto o = std::make_shared<FlowOptions>();
-  CLI::App* sub = app.add_subcommand(
+  CommandSpec* sub = &app.add_subcommand(
       "flow",
       "Estimate the flow between two frames, or between every consecutive pair of a sequence");
-  sub->footer(
+  sub->footer =
       "Forms:\n"
       "  pxflow flow [OPTIONS] PREV NEXT     one pair\n"
       "  pxflow flow [OPTIONS] SOURCE        every consecutive pair of SOURCE: a video file\n"
@@ -386,57 +386,51 @@ Command add_flow_command(CLI::App& app) {
       "keeps its completed pairs in --jsonl and --csv, each file then ending in one marker line\n"
       "(a finished one has none):\n"
       "  --jsonl  {\"incomplete\": {\"records\": 243, \"stopped_by\": \"SIGINT\"}}\n"
-      "  --csv    # incomplete: 243 records, stopped by SIGINT");
+      "  --csv    # incomplete: 243 records, stopped by SIGINT";
   o->problem.add_to(*sub);
-  sub->add_option("--size", o->size,
-                  "Inputs are raw 8-bit frames of WIDTHxHEIGHT (e.g. 64x64), whatever their name")
-      ->type_name("WxH");
-  sub->add_option("--crop", o->crop,
-                  "Use the window WxH+X+Y of every frame (e.g. 64x64+100+40), before --bin")
-      ->type_name("WxH+X+Y");
-  sub->add_option("--bin", o->bin, "Average N x N pixels into one (after --crop)")
-      ->check(CLI::Range(1, 64));
+  sub->add("--size", &o->size,
+           "Inputs are raw 8-bit frames of WIDTHxHEIGHT (e.g. 64x64), whatever their name")
+      .type("WxH");
+  sub->add("--crop", &o->crop,
+           "Use the window WxH+X+Y of every frame (e.g. 64x64+100+40), before --bin")
+      .type("WxH+X+Y");
+  sub->add("--bin", &o->bin, "Average N x N pixels into one (after --crop)").in_range(1, 64);
   add_backend_option(*sub, o->backend);
   add_threads_option(*sub, o->backend_options.threads);
   add_device_option(*sub, o->backend_options.device);
-  CLI::Option* json =
-      add_json_option(*sub, o->json, "one object, of one pair (a sequence: --jsonl)");
-  CLI::Option* jsonl = declare_path(
-      sub->add_option("--jsonl", o->jsonl,
-                      "Write one JSON object per pair, one per line, to FILE (- = stdout)")
-          ->type_name("FILE"),
-      PathKind::OutputFile, ".jsonl");
-  CLI::Option* csv = declare_path(
-      sub->add_option("--csv", o->csv, "Write one CSV row per pair to FILE (- = stdout)")
-          ->type_name("FILE"),
-      PathKind::OutputFile, ".csv");
-  CLI::Option* draw = declare_path(
-      sub->add_option("--draw", o->draw,
-                      "Draw the POIs, their vectors and the frame flow into FILE.png (one pair) "
-                      "or into the folder DIR as pair-NNNNNN.png (a sequence; pictures of an "
-                      "earlier run beyond this run's last are removed)")
-          ->type_name("FILE.png|DIR"),
-      PathKind::OutputFile, ".png");
-  CLI::Option* pairs =
-      declare_path(sub->add_option("--pairs", o->pairs, "A list file of pairs: PREV NEXT a line")
-                       ->type_name("FILE"),
-                   PathKind::InputFile);
-  sub->add_option("--max-pairs", o->max_pairs, "Stop a sequence after N pairs (0 = all)")
-      ->check(CLI::Range(0, 100000000));
+  add_json_option(*sub, o->json, "one object, of one pair (a sequence: --jsonl)");
+  sub->add("--jsonl", &o->jsonl,
+           "Write one JSON object per pair, one per line, to FILE (- = stdout)")
+      .type("FILE")
+      .path_kind(PathKind::OutputFile, ".jsonl");
+  sub->add("--csv", &o->csv, "Write one CSV row per pair to FILE (- = stdout)")
+      .type("FILE")
+      .path_kind(PathKind::OutputFile, ".csv");
+  sub->add("--draw", &o->draw,
+           "Draw the POIs, their vectors and the frame flow into FILE.png (one pair) "
+           "or into the folder DIR as pair-NNNNNN.png (a sequence; pictures of an "
+           "earlier run beyond this run's last are removed)")
+      .type("FILE.png|DIR")
+      .path_kind(PathKind::OutputFile, ".png");
+  sub->add("--pairs", &o->pairs, "A list file of pairs: PREV NEXT a line")
+      .type("FILE")
+      .path_kind(PathKind::InputFile);
+  sub->add("--max-pairs", &o->max_pairs, "Stop a sequence after N pairs (0 = all)")
+      .in_range(0, 100000000);
   add_progress_flag(*sub, &o->progress);
-  declare_path(
-      sub->add_option("PREV", o->first, "First frame (image file, or raw with --size), or SOURCE")
-          ->type_name("PREV|SOURCE"),
-      PathKind::InputSource);
-  declare_path(sub->add_option("NEXT", o->second, "Second frame (same size)")->type_name("NEXT"),
-               PathKind::InputFile);
+  sub->add("PREV", &o->first, "First frame (image file, or raw with --size), or SOURCE")
+      .type("PREV|SOURCE")
+      .path_kind(PathKind::InputSource);
+  sub->add("NEXT", &o->second, "Second frame (same size)")
+      .type("NEXT")
+      .path_kind(PathKind::InputFile);
   return {sub,
-          [o, json, jsonl, csv, draw, pairs] {
-            o->json_given = json->count() > 0;
-            o->jsonl_given = jsonl->count() > 0;
-            o->csv_given = csv->count() > 0;
-            o->draw_given = draw->count() > 0;
-            o->pairs_given = pairs->count() > 0;
+          [o, sub] {
+            o->json_given = sub->count("--json") > 0;
+            o->jsonl_given = sub->count("--jsonl") > 0;
+            o->csv_given = sub->count("--csv") > 0;
+            o->draw_given = sub->count("--draw") > 0;
+            o->pairs_given = sub->count("--pairs") > 0;
             return run_flow(*o);
           },
           kFlowExamples,

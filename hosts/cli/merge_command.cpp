@@ -75,24 +75,24 @@ const std::vector<std::string> kMergeExamples = {
     "merge --json all.json s1.json s2.json s3.json s4.json  # one verdict from four shards",
 };
 
-Command add_merge_command(CLI::App& app) {
+Command add_merge_command(CommandSpec& app) {
   auto a = std::make_shared<MergeArgs>();
-  CLI::App* sub = app.add_subcommand(
+  CommandSpec* sub = &app.add_subcommand(
       "merge",
       "Combine the --json files of a campaign's shards (pxflow check --shard K/M) into one "
       "verdict and check file; exit 0 only when every shard is there and passed");
-  sub->footer(
+  sub->footer =
       "Exit 0: every shard 1..M given and passed. 1: a shard failed, nothing was checked, or "
       "shards are missing (verdict 'incomplete'; --json is written). 2: the files are not the "
       "shards of one campaign (another commit, seed, --cases, corpus, backends, --require or "
-      "M; a shard twice; a merged file); nothing is written. See docs/harness.md.");
+      "M; a shard twice; a merged file); nothing is written. See docs/harness.md.";
   // The output is named by an option: `merge s1.json s2.json` (the output forgotten) would
   // otherwise overwrite a shard with an incomplete merge.
-  add_json_option(*sub, a->out, "the merged check file (required)")->required();
-  declare_path(sub->add_option("FILES", a->files, "The shards' check files, every K of one M once")
-                   ->required()
-                   ->type_name("FILE"),
-               PathKind::InputFile);
+  add_json_option(*sub, a->out, "the merged check file (required)").needed();
+  sub->add("FILES", &a->files, "The shards' check files, every K of one M once")
+      .needed()
+      .type("FILE")
+      .path_kind(PathKind::InputFile);
   return {sub, [a] { return run_merge_command(*a); }, kMergeExamples, {"{CHECK} {CHECK2}"}};
 }
 

@@ -14,8 +14,7 @@ std::string trim_number(std::string n) {
   return n;
 }
 
-std::string reword(const CLI::ParseError& e) {
-  const std::string what = e.what();
+std::string reword(const std::string& what) {
   std::smatch m;
   // CLI::Range: "--cases: Value 1e3 not in range 1 to 100000000"
   static const std::regex range(R"(^(\S+): Value (.*) not in range (\S+) to (\S+)$)");
@@ -62,42 +61,59 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 }
 
 // Whether `command` or one of its own subcommands (vectors verify) declares `name`.
-bool declares(const CLI::App& command, const std::string& name) {
-  if (command.get_option_no_throw(name) != nullptr || name == "--help") return true;
-  for (const CLI::App* sub : command.get_subcommands({}))
-    if (sub->get_option_no_throw(name) != nullptr) return true;
+bool declares(const CommandSpec& command, const std::string& name) {
+  if (command.find(name) != nullptr || name == "--help") return true;
+  for (const CommandSpec& sub : command.subcommands)
+    if (sub.find(name) != nullptr) return true;
   return false;
+}
+
+// The long names --help lists, in its order: --help, the top level's --version, the options.
+std::vector<std::string> listed_names(const CommandSpec& app) {
+  std::vector<std::string> names = {"--help"};
+  if (app.parent == nullptr) names.push_back("--version");
+  for (const OptionSpec& opt : app.options) {
+    if (opt.hidden) continue;  // old spellings, the worker mode
+    for (std::size_t start = 0; start < opt.names.size();) {
+      const std::size_t end = std::min(opt.names.find(',', start), opt.names.size());
+      const std::string name = opt.names.substr(start, end - start);
+      if (name.compare(0, 2, "--") == 0) names.push_back(name);
+      start = end + 1;
+    }
+  }
+  return names;
 }
 
 }  // namespace
 
-std::string nearest_option(const std::string& name, const CLI::App& app) {
+bool declares_global(const CommandSpec& app, const std::string& name) {
+  return app.find(name) != nullptr || name == "-h" || name == "--help" || name == "--version";
+}
+
+std::string nearest_option(const std::string& name, const CommandSpec& app) {
   std::string best;
   std::size_t best_distance = 3;  // within two edits: a slip, not another option
-  for (const CLI::Option* opt : app.get_options()) {
-    if (opt->get_group().empty()) continue;  // hidden: old spellings
-    for (const std::string& long_name : opt->get_lnames()) {
-      const std::size_t d = edit_distance(name, "--" + long_name);
-      if (d < best_distance) best_distance = d, best = "--" + long_name;
-    }
+  for (const std::string& long_name : listed_names(app)) {
+    const std::size_t d = edit_distance(name, long_name);
+    if (d < best_distance) best_distance = d, best = long_name;
   }
   return best.empty() ? "" : " (did you mean " + best + "?)";
 }
 
-std::string unknown_option(const std::vector<std::string>& args, const CLI::App& app,
-                           const CLI::App* command) {
+std::string unknown_option(const std::vector<std::string>& args, const CommandSpec& app,
+                           const CommandSpec* command) {
   for (const std::string& arg : args) {
     if (arg == "--") break;  // what follows are arguments
     if (arg.size() < 3 || arg.compare(0, 2, "--") != 0) continue;
     const std::string name = arg.substr(0, arg.find('='));
-    if ((command && declares(*command, name)) || app.get_option_no_throw(name) != nullptr) continue;
+    if ((command && declares(*command, name)) || declares_global(app, name)) continue;
     return "unknown option " + name + nearest_option(name, command ? *command : app);
   }
   return "";
 }
 
-std::string describe_parse_error(const CLI::ParseError& e, const std::string& command) {
-  return reword(e) + " (see pxflow " + (command.empty() ? "" : command + " ") + "--help)";
+std::string describe_parse_error(const std::string& what, const std::string& command) {
+  return reword(what) + " (see pxflow " + (command.empty() ? "" : command + " ") + "--help)";
 }
 
 }  // namespace pxflow::cli

@@ -1,4 +1,5 @@
-// Every option whose value is a path says, where it is declared, what pxflow does with it. The
+// Every option whose value is a path says, where it is declared (OptionSpec::path_kind), what
+// pxflow does with it. The
 // kind is used twice, so that no command has to remember either:
 //   - before a command runs, every input option's value is noted as an input of the process
 //     (io/file_inputs.hpp), so an output onto it, or inside an input folder, is refused;
@@ -8,10 +9,7 @@
 // An option with a string value that declares neither a path kind nor a type name of its own
 // ("TEXT", CLI11's default) fails that test: every value says what it is.
 #pragma once
-#include <CLI/CLI.hpp>
-#include <optional>
 #include <string>
-#include <vector>
 
 namespace pxflow::cli {
 
@@ -27,17 +25,16 @@ enum class PathKind {
 
 const char* path_kind_name(PathKind kind);  // "input-file", ...
 
-// Declares `option`'s kind; `suffix` is the file name ending a value must have (".png"), for the
-// matrix's file names. Returns the option.
-CLI::Option* declare_path(CLI::Option* option, PathKind kind, const std::string& suffix = "");
-
+// An option's kind; `suffix` is the file name ending a value must have (".png"), for the matrix's
+// file names.
 struct DeclaredPath {
   PathKind kind;
   std::string suffix;
 };
-std::optional<DeclaredPath> declared_path(const CLI::Option* option);
+
+struct CommandSpec;  // option_spec.hpp
 
 // Notes the values of every input option given to `sub` as inputs (io/file_inputs.hpp).
-void note_given_inputs(const CLI::App& sub);
+void note_given_inputs(const CommandSpec& sub);
 
 }  // namespace pxflow::cli

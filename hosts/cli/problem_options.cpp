@@ -5,19 +5,17 @@
 
 namespace pxflow::cli {
 
-void ProblemOptions::add_to(CLI::App& app) {
+void ProblemOptions::add_to(CommandSpec& app) {
   std::string profiles;
   for (const auto& n : profile_names()) profiles += (profiles.empty() ? "" : ", ") + n;
   std::string keys;
   // gyro_comp is a key of the spec's parameters, but pxflow takes no gyro rates (resolve()).
   for (const auto& k : param_keys())
     keys += (keys.empty() ? "" : ", ") + k + (k == "gyro_comp" ? " (0 only)" : "");
-  app.add_option("--profile", profile, "Parameter profile: " + profiles)
-      ->capture_default_str()
-      ->type_name("NAME");
-  app.add_option("--set", sets, "Override one parameter, KEY=VALUE (repeatable). Keys: " + keys)
-      ->type_name("KEY=VALUE")
-      ->allow_extra_args(false);  // one KEY=VALUE each: `--set S=7 video.avi` keeps the file
+  app.add("--profile", &profile, "Parameter profile: " + profiles).with_default().type("NAME");
+  app.add("--set", &sets, "Override one parameter, KEY=VALUE (repeatable). Keys: " + keys)
+      .type("KEY=VALUE")
+      .one_word_each();  // one KEY=VALUE each: `--set S=7 video.avi` keeps the file
 }
 
 Params ProblemOptions::resolve(std::optional<std::pair<int, int>> frame) const {

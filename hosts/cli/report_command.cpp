@@ -476,24 +476,23 @@ const std::vector<std::string> kReportExamples = {
     "report --out out/report  # report.md, report.html, results.json and results.csv",
 };
 
-Command add_report_command(CLI::App& app) {
+Command add_report_command(CommandSpec& app) {
   auto a = std::make_shared<ReportArgs>();
-  CLI::App* sub =
-      app.add_subcommand("report", "Write report.md, report.html, results.json and results.csv");
-  declare_path(sub->add_option("--out", a->out_dir, "Folder to write the report into")
-                   ->required()
-                   ->type_name("DIR"),
-               PathKind::OwnedFolder);
-  declare_path(sub->add_option("--check-json", a->check_json,
-                               "Use this `pxflow check --json` file instead of running the check")
-                   ->type_name("FILE"),
-               PathKind::InputFile);
-  declare_path(
-      sub->add_option("--bench-json", a->bench_files,
-                      "Use this `pxflow bench --json` file instead of running the bench; more "
-                      "than one: the report also compares them with the first (pxflow compare)")
-          ->type_name("FILE"),
-      PathKind::InputFile);
+  CommandSpec* sub =
+      &app.add_subcommand("report", "Write report.md, report.html, results.json and results.csv");
+  sub->add("--out", &a->out_dir, "Folder to write the report into")
+      .needed()
+      .type("DIR")
+      .path_kind(PathKind::OwnedFolder);
+  sub->add("--check-json", &a->check_json,
+           "Use this `pxflow check --json` file instead of running the check")
+      .type("FILE")
+      .path_kind(PathKind::InputFile);
+  sub->add("--bench-json", &a->bench_files,
+           "Use this `pxflow bench --json` file instead of running the bench; more "
+           "than one: the report also compares them with the first (pxflow compare)")
+      .type("FILE")
+      .path_kind(PathKind::InputFile);
   add_backends_option(*sub, a->backends, "of the check, the bench and the family sections");
   add_backend_option(*sub, a->backend, "of the accuracy table and the flow pictures");
   add_threads_option(*sub, a->threads,
@@ -502,22 +501,22 @@ Command add_report_command(CLI::App& app) {
   add_device_option(*sub, a->device);
   add_data_option(*sub, a->data_dir, "for the check, the accuracy table and the pictures");
   add_seed_option(*sub, a->seed, "of the check's random pairs");
-  sub->add_flag("--quick", a->quick,
-                "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
-  sub->add_flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");
+  sub->flag("--quick", a->quick,
+            "A shorter bench (batch <= 256, no radius or thread sweeps) and accuracy run");
+  sub->flag("--no-accuracy", a->no_accuracy, "Leave out the accuracy table and flow pictures");
   add_progress_flag(*sub);
   for (const CliExtension& e : registered_cli_extensions()) a->extensions.push_back({e, false});
   for (auto& [e, skipped] : a->extensions)
     if (e.add_report_section && !e.report_skip_flag.empty())
-      sub->add_flag(e.report_skip_flag, skipped, e.report_skip_help);
+      sub->flag(e.report_skip_flag, skipped, e.report_skip_help);
   return {sub,
           [a, sub] {
             a->bench_json = a->bench_files.empty() ? "" : a->bench_files.front();
             a->command = given_command_line(*sub);
             a->globals = global_options(*sub);
             a->check_workers = check_worker_command(*sub, a->backend_options());
-            for (const CLI::Option* o : sub->get_options())
-              if (o->count() > 0) a->given.insert(o->get_name());
+            for (const OptionSpec& o : sub->options)
+              if (o.count() > 0) a->given.insert(o.name());
             return run_report(*a);
           },
           kReportExamples,

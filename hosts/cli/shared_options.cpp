@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "list_option.hpp"
-#include "path_options.hpp"
 #include "progress.hpp"
 #include "sample_data.hpp"
 
@@ -58,43 +57,44 @@ std::string help(std::string_view name, const std::string& detail) {
   return o.meaning + (detail.empty() ? "" : "; " + detail) + ". Default: " + o.defaults;
 }
 
-CLI::Option* add(CLI::App& sub, std::string_view name, auto& variable, const std::string& detail) {
-  return sub.add_option(std::string(name), variable, help(name, detail))
-      ->type_name(shared_option(name).value);
+OptionSpec& add(CommandSpec& sub, std::string_view name, OptionTarget variable,
+                const std::string& detail) {
+  return sub.add(std::string(name), variable, help(name, detail)).type(shared_option(name).value);
 }
 
 }  // namespace
 
-CLI::Option* add_backend_option(CLI::App& sub, std::string& backend, const std::string& detail) {
-  return add(sub, "--backend", backend, detail);
+OptionSpec& add_backend_option(CommandSpec& sub, std::string& backend, const std::string& detail) {
+  return add(sub, "--backend", &backend, detail);
 }
 
-CLI::Option* add_backends_option(CLI::App& sub, std::string& backends, const std::string& detail) {
-  return add(sub, "--backends", backends, detail);
+OptionSpec& add_backends_option(CommandSpec& sub, std::string& backends,
+                                const std::string& detail) {
+  return add(sub, "--backends", &backends, detail);
 }
 
-CLI::Option* add_threads_option(CLI::App& sub, int& threads, const std::string& detail) {
-  return add(sub, "--threads", threads, detail)->check(CLI::Range(0, 1024));
+OptionSpec& add_threads_option(CommandSpec& sub, int& threads, const std::string& detail) {
+  return add(sub, "--threads", &threads, detail).in_range(0, 1024);
 }
 
-CLI::Option* add_device_option(CLI::App& sub, std::string& device) {
-  return add(sub, "--device", device, "");
+OptionSpec& add_device_option(CommandSpec& sub, std::string& device) {
+  return add(sub, "--device", &device, "");
 }
 
-CLI::Option* add_json_option(CLI::App& sub, std::string& path, const std::string& detail) {
-  return declare_path(add(sub, "--json", path, detail), PathKind::OutputFile, ".json");
+OptionSpec& add_json_option(CommandSpec& sub, std::string& path, const std::string& detail) {
+  return add(sub, "--json", &path, detail).path_kind(PathKind::OutputFile, ".json");
 }
 
-CLI::Option* add_data_option(CLI::App& sub, std::string& dir, const std::string& detail) {
-  return declare_path(add(sub, "--data", dir, detail), PathKind::InputFolder);
+OptionSpec& add_data_option(CommandSpec& sub, std::string& dir, const std::string& detail) {
+  return add(sub, "--data", &dir, detail).path_kind(PathKind::InputFolder);
 }
 
-CLI::Option* add_seed_option(CLI::App& sub, std::uint64_t& seed, const std::string& detail) {
-  return add(sub, "--seed", seed, detail)->check(seed_value());
+OptionSpec& add_seed_option(CommandSpec& sub, std::uint64_t& seed, const std::string& detail) {
+  return add(sub, "--seed", &seed, detail).checked(seed_value());
 }
 
-void add_progress_flag(CLI::App& sub, bool* given) {
-  sub.add_flag_callback(
+void add_progress_flag(CommandSpec& sub, bool* given) {
+  sub.flag_callback(
       "--progress",
       [given] {
         force_progress(true);
@@ -103,15 +103,9 @@ void add_progress_flag(CLI::App& sub, bool* given) {
       help("--progress", ""));
 }
 
-void add_renamed_option(CLI::App& sub, const std::string& old_name, const std::string& new_name) {
-  // Thrown from the callback with its own name: CLI11 names a hidden option's errors "".
-  sub.add_option_function<std::string>(old_name,
-                                       [old_name, new_name](const std::string&) {
-                                         throw CLI::ValidationError(old_name,
-                                                                    "renamed: give " + new_name);
-                                       })
-      ->expected(0, 1)  // alone too: CLI11's "needs a value" would name it ""
-      ->group("");
+void add_renamed_option(CommandSpec& sub, const std::string& old_name,
+                        const std::string& new_name) {
+  sub.renamed(old_name, new_name);
 }
 
 }  // namespace pxflow::cli

@@ -3,11 +3,12 @@
 // the add_* functions below; the README's table of shared options is shared_options_markdown()
 // (tests/cli checks it).
 #pragma once
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "option_spec.hpp"
 
 namespace pxflow::cli {
 
@@ -24,20 +25,20 @@ const std::vector<SharedOption>& shared_options();
 std::string shared_options_markdown();
 
 // `detail` (optional) is appended to the shared help for what only this command adds.
-CLI::Option* add_backend_option(CLI::App& sub, std::string& backend,
+OptionSpec& add_backend_option(CommandSpec& sub, std::string& backend,
+                               const std::string& detail = "");
+OptionSpec& add_backends_option(CommandSpec& sub, std::string& backends,
                                 const std::string& detail = "");
-CLI::Option* add_backends_option(CLI::App& sub, std::string& backends,
-                                 const std::string& detail = "");
-CLI::Option* add_threads_option(CLI::App& sub, int& threads, const std::string& detail = "");
-CLI::Option* add_device_option(CLI::App& sub, std::string& device);
-CLI::Option* add_json_option(CLI::App& sub, std::string& path, const std::string& detail = "");
-CLI::Option* add_data_option(CLI::App& sub, std::string& dir, const std::string& detail = "");
-CLI::Option* add_seed_option(CLI::App& sub, std::uint64_t& seed, const std::string& detail = "");
+OptionSpec& add_threads_option(CommandSpec& sub, int& threads, const std::string& detail = "");
+OptionSpec& add_device_option(CommandSpec& sub, std::string& device);
+OptionSpec& add_json_option(CommandSpec& sub, std::string& path, const std::string& detail = "");
+OptionSpec& add_data_option(CommandSpec& sub, std::string& dir, const std::string& detail = "");
+OptionSpec& add_seed_option(CommandSpec& sub, std::uint64_t& seed, const std::string& detail = "");
 // --progress; `given` (optional) is also set when it is given.
-void add_progress_flag(CLI::App& sub, bool* given = nullptr);
+void add_progress_flag(CommandSpec& sub, bool* given = nullptr);
 
 // An old spelling of this command's option, now refused with one line naming the new one
 // (`accuracy --pairs 40`: "--pairs: renamed: give --cases"). Hidden from --help.
-void add_renamed_option(CLI::App& sub, const std::string& old_name, const std::string& new_name);
+void add_renamed_option(CommandSpec& sub, const std::string& old_name, const std::string& new_name);
 
 }  // namespace pxflow::cli

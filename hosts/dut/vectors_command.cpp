@@ -398,47 +398,45 @@ const std::vector<std::string> kVectorsExamples = {
     "vectors --out vec/ --cases 100  # test vectors for on-target tests (vec/ exists)",
 };
 
-Command add_vectors_command(CLI::App& app) {
+Command add_vectors_command(CommandSpec& app) {
   auto a = std::make_shared<VectorsArgs>();
-  CLI::App* sub = app.add_subcommand(
+  CommandSpec* sub = &app.add_subcommand(
       "vectors",
       "Write test vectors (inputs, parameters, expected records and flow bits) for "
       "on-target tests; `vectors verify DIR RECORDS` checks records made elsewhere");
-  declare_path(sub->add_option("--out", a->out,
-                               "Folder to write the vectors into (created if missing; a folder "
-                               "that holds other files than an earlier run's vectors is refused)")
-                   ->type_name("DIR"),
-               PathKind::OwnedFolder);
+  sub->add("--out", &a->out,
+           "Folder to write the vectors into (created if missing; a folder "
+           "that holds other files than an earlier run's vectors is refused)")
+      .type("DIR")
+      .path_kind(PathKind::OwnedFolder);
   a->problem.add_to(*sub);
-  CLI::Option* cases =
-      sub->add_option("--cases", a->cases, "Random pairs (seeded)")->check(CLI::Range(1, 100000));
-  CLI::Option* seed = add_seed_option(*sub, a->seed, "of the first pair; pair i has seed + i");
-  declare_path(
-      sub->add_option("--from", a->from,
-                      "Vectors of these pairs instead of random ones: a list file, one 'PREV "
-                      "NEXT' per line (paths relative to the list), every frame one size")
-          ->type_name("FILE"),
-      PathKind::InputFile);
-  sub->add_option("--size", a->size, "Frame size of raw frames in the --from list, WxH")
-      ->type_name("WxH");
+  sub->add("--cases", &a->cases, "Random pairs (seeded)").in_range(1, 100000);
+  add_seed_option(*sub, a->seed, "of the first pair; pair i has seed + i");
+  sub->add("--from", &a->from,
+           "Vectors of these pairs instead of random ones: a list file, one 'PREV "
+           "NEXT' per line (paths relative to the list), every frame one size")
+      .type("FILE")
+      .path_kind(PathKind::InputFile);
+  sub->add("--size", &a->size, "Frame size of raw frames in the --from list, WxH").type("WxH");
   add_progress_flag(*sub);
-  sub->add_option("--format", a->format, "bin (files + manifest.json) or c (C arrays + checker)")
-      ->type_name("bin|c")
-      ->check(CLI::IsMember({"bin", "c"}));
-  CLI::App* verify = sub->add_subcommand("verify",
-                                         "Compare RECORDS (a file of 32-byte records, "
-                                         "all pairs in order) with the vectors in DIR");
-  declare_path(
-      verify->add_option("DIR", a->verify_dir, "The vectors' folder")->required()->type_name("DIR"),
-      PathKind::InputFolder);
-  declare_path(verify->add_option("RECORDS", a->verify_records, "The records to check")
-                   ->required()
-                   ->type_name("FILE"),
-               PathKind::InputFile);
+  sub->add("--format", &a->format, "bin (files + manifest.json) or c (C arrays + checker)")
+      .type("bin|c")
+      .choices({"bin", "c"});
+  CommandSpec* verify = &sub->add_subcommand("verify",
+                                             "Compare RECORDS (a file of 32-byte records, "
+                                             "all pairs in order) with the vectors in DIR");
+  verify->add("DIR", &a->verify_dir, "The vectors' folder")
+      .needed()
+      .type("DIR")
+      .path_kind(PathKind::InputFolder);
+  verify->add("RECORDS", &a->verify_records, "The records to check")
+      .needed()
+      .type("FILE")
+      .path_kind(PathKind::InputFile);
   return {sub,
-          [a, verify, cases, seed] {
-            a->random_options_given = cases->count() + seed->count() > 0;
-            if (verify->parsed()) return verify_vectors(*a);
+          [a, sub, verify] {
+            a->random_options_given = sub->count("--cases") + sub->count("--seed") > 0;
+            if (verify->parsed) return verify_vectors(*a);
             if (a->out.empty())
               throw InputError(
                   "vectors: --out DIR is required: the folder to write into (see "

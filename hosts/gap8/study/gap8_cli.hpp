@@ -7,7 +7,7 @@
 
 namespace pxflow::cli {
 
-Command add_gap8_command(CLI::App& app);  // gap8_command.cpp
+Command add_gap8_command(CommandSpec& app);  // gap8_command.cpp
 
 // Runs `pxflow gap8 --cores 1-8` and appends its section: tables, a speed-up chart and the raw
 // figures. When the default frame pair cannot be loaded, the section says why instead.

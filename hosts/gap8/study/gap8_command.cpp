@@ -123,30 +123,27 @@ const std::vector<std::string> kGap8Examples = {
     "gap8 --variant all --cores 1-8  # the GAP8 model beside the paper's tables",
 };
 
-Command add_gap8_command(CLI::App& app) {
+Command add_gap8_command(CommandSpec& app) {
   auto o = std::make_shared<Gap8Options>();
-  CLI::App* sub = app.add_subcommand(
+  CommandSpec* sub = &app.add_subcommand(
       "gap8", "The GAP8 kernel on the cluster model beside the ISCAS 2022 paper's tables");
   o->problem.add_to(*sub);
-  sub->add_option("--variant", o->variant, gap8_variant_names() + ", or all (the paper's three)")
-      ->capture_default_str()
-      ->type_name("NAME|all");
-  sub->add_option("--cores", o->cores, "Core counts, e.g. 1,8 or 1-8")
-      ->capture_default_str()
-      ->type_name("LIST");
-  sub->add_option("--mhz", o->mhz, "Cluster clock for fps and latency")->capture_default_str();
+  sub->add("--variant", &o->variant, gap8_variant_names() + ", or all (the paper's three)")
+      .with_default()
+      .type("NAME|all");
+  sub->add("--cores", &o->cores, "Core counts, e.g. 1,8 or 1-8").with_default().type("LIST");
+  sub->add("--mhz", &o->mhz, "Cluster clock for fps and latency").with_default();
   add_json_option(*sub, o->json_path, "the figures; with '-' instead of the tables");
-  sub->add_flag("--no-contention", o->no_contention, "Do not model TCDM bank conflicts");
-  sub->add_flag("--chunked", o->chunked, "Split POIs in contiguous chunks, not round robin");
-  sub->add_option("--crop", o->crop,
-                  "Use the window WxH+X+Y of PREV and NEXT (e.g. 64x64+100+40), before --bin")
-      ->type_name("WxH+X+Y");
-  sub->add_option("--bin", o->bin, "Average N x N pixels of PREV and NEXT into one (after --crop)")
-      ->check(CLI::Range(1, 64));
-  declare_path(
-      sub->add_option("frames", o->frames, "PREV NEXT (default: a real pair, all 64 POIs accepted)")
-          ->type_name("PREV NEXT"),
-      PathKind::InputFile);
+  sub->flag("--no-contention", o->no_contention, "Do not model TCDM bank conflicts");
+  sub->flag("--chunked", o->chunked, "Split POIs in contiguous chunks, not round robin");
+  sub->add("--crop", &o->crop,
+           "Use the window WxH+X+Y of PREV and NEXT (e.g. 64x64+100+40), before --bin")
+      .type("WxH+X+Y");
+  sub->add("--bin", &o->bin, "Average N x N pixels of PREV and NEXT into one (after --crop)")
+      .in_range(1, 64);
+  sub->add("frames", &o->frames, "PREV NEXT (default: a real pair, all 64 POIs accepted)")
+      .type("PREV NEXT")
+      .path_kind(PathKind::InputFile);
   return {
       sub, [o] { return run_gap8(*o); }, kGap8Examples, {"--variant fast --cores 1 {PREV} {NEXT}"}};
 }
