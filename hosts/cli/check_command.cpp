@@ -353,7 +353,7 @@ Command add_check_command(CLI::App& app) {
                   "docs/harness.md, Isolation)")
       ->type_name("SECONDS");
   declare_real(sub->get_option("--case-timeout"), 0.001, 1e6);
-  // Hidden: the worker mode of the check's own worker processes (hosts/harness/check_worker.hpp).
+  // Hidden: the worker mode of the check's worker processes (hosts/harness/check/check_worker.hpp).
   sub->add_option(worker::kWorkerOption, a->worker_row)->group("");
   add_threads_option(*sub, a->backend_options.threads);
   add_device_option(*sub, a->backend_options.device);

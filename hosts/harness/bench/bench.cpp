@@ -21,6 +21,7 @@
 #include "grid.hpp"
 #include "interrupt.hpp"
 #include "machine_state.hpp"
+#include "number_text.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
@@ -91,12 +92,6 @@ struct Column {
 constexpr Column kColumns[] = {{"clock", 22},    {"ns/frame", 12}, {"95% CI of median", 23},
                                {"frames/s", 11}, {"ns/POI", 9},    {"cycles/frame", 13},
                                {"x bound", 8},   {"vs ref", 8}};
-
-std::string fixed(const char* format, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
 
 std::string pad_name(const std::string& name, std::size_t width) {
   return name + std::string(name.size() < width ? width - name.size() : 0, ' ');
@@ -449,15 +444,15 @@ std::string bench_row_line(const BenchRow& r, std::size_t name_width) {
   const bool instructions = r.cycles_per_frame == 0 && r.instructions_per_frame > 0;
   auto timing = [&](std::string cell) { return instructions ? std::string("-") : cell; };
   const std::string cells[] = {
-      r.source, timing(fixed("%.0f", r.median_ns_per_frame)),
-      timing(fixed("%.0f", r.median_ci_low_ns) + ".." + fixed("%.0f", r.median_ci_high_ns)),
-      timing(fixed("%.1f", r.frames_per_s)), timing(fixed("%.1f", r.ns_per_poi)),
+      r.source, timing(formatted("%.0f", r.median_ns_per_frame)),
+      timing(formatted("%.0f", r.median_ci_low_ns) + ".." + formatted("%.0f", r.median_ci_high_ns)),
+      timing(formatted("%.1f", r.frames_per_s)), timing(formatted("%.1f", r.ns_per_poi)),
       // A clock that counts instructions (QEMU's -icount) says so in its cell, never "cycles".
-      r.cycles_per_frame > 0         ? fixed("%.0f", r.cycles_per_frame)
-      : r.instructions_per_frame > 0 ? fixed("%.0f instr", r.instructions_per_frame)
+      r.cycles_per_frame > 0         ? formatted("%.0f", r.cycles_per_frame)
+      : r.instructions_per_frame > 0 ? formatted("%.0f instr", r.instructions_per_frame)
                                      : "-",
-      r.bound_ratio > 0 ? fixed("%.2fx", r.bound_ratio) : "-",
-      r.speedup_vs_reference > 0 ? fixed("%.2fx", r.speedup_vs_reference) : "-"};
+      r.bound_ratio > 0 ? formatted("%.2fx", r.bound_ratio) : "-",
+      r.speedup_vs_reference > 0 ? formatted("%.2fx", r.speedup_vs_reference) : "-"};
   std::string line = pad_name(r.backend, name_width);
   for (std::size_t i = 0; i < std::size(kColumns); ++i) {
     const auto w = static_cast<std::size_t>(kColumns[i].width);
@@ -527,7 +522,7 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   out << "backends (what runs, on which device):\n";
   bench.open_all(rows, report);
   if (bound)
-    out << "bound: " << bound->name << ", " << fixed("%.1f", report.bound_bytes_per_cycle)
+    out << "bound: " << bound->name << ", " << formatted("%.1f", report.bound_bytes_per_cycle)
         << " bytes per " << bound->clock
         << " cycle on one thread (measured again on as many threads as a row is given); x bound = "
            "a row's cycles per frame over the bound's\n";
