@@ -89,7 +89,7 @@ struct BackendRow {
   std::function<bool()> host_lacks{};
   // The row's counting model: the reference variant whose rules (docs/counting.md) its counts
   // follow whenever it counts (counts.counted). `pxflow check` holds its counts to them
-  // (hosts/harness/check_counts.hpp); a row that counts without naming one fails there.
+  // (hosts/harness/check/check_counts.hpp); a row that counts without naming one fails there.
   std::optional<RefVariant> counts_like{};
   std::string family{};  // filled in by the registry from the family the row came from
 };

@@ -22,7 +22,7 @@ CAMPAIGN = ["--backends", "ref-original,ref-local", "--cases", "1200", "--seed",
 VARIABLES = ["CI_NODE_INDEX", "CI_NODE_TOTAL", "JOB_COMPLETION_INDEX", "PXFLOW_SHARD_TOTAL",
              "SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_COUNT", "SLURM_ARRAY_TASK_MIN",
              "SLURM_ARRAY_TASK_STEP", "SLURM_ARRAY_TASK_MAX"]
-# What says how a run went rather than what it found (hosts/harness/check_json.cpp): times, the
+# What says how a run went rather than what it found (hosts/harness/check/check_json.cpp): times, the
 # command, and a single run's "shard" and "options" where a merge has "merged_from" and
 # "missing_shards".
 HOW_IT_RAN = {"seconds", "command", "shard", "options", "merged_from", "missing_shards"}

@@ -1,7 +1,7 @@
 // The inputs the CPU kernels are checked on, and the check itself: the harness's exactness
-// checker (hosts/harness/exactness.hpp), so a mismatch is the same line as in `pxflow check`.
-// Pure C++ so that the NEON cross test, built for AArch64 without OpenCV, shares it; real frames
-// are added by the callers that can load them.
+// checker (hosts/harness/common/exactness.hpp), so a mismatch is the same line as in `pxflow
+// check`. Pure C++ so that the NEON cross test, built for AArch64 without OpenCV, shares it; real
+// frames are added by the callers that can load them.
 #pragma once
 #include <cstddef>
 #include <cstdint>

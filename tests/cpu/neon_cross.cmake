@@ -39,7 +39,7 @@ get_target_property(reference_sources pxflow_reference SOURCES)
 list(TRANSFORM reference_sources PREPEND ${src}/reference/)
 set(neon_cross_sources ${reference_sources}
   ${src}/hosts/corpus/synthetic.cpp
-  ${src}/hosts/harness/exactness.cpp ${src}/hosts/harness/record_diff.cpp
+  ${src}/hosts/harness/common/exactness.cpp ${src}/hosts/harness/common/record_diff.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_corpus.cpp ${CMAKE_CURRENT_SOURCE_DIR}/neon_cross_check.cpp)
 foreach(name IN LISTS PXFLOW_CPU_PORTABLE_SOURCES)
   list(APPEND neon_cross_sources ${src}/kernels/cpu/${name})
@@ -60,7 +60,7 @@ foreach(source IN LISTS neon_cross_sources)
     OUTPUT ${object}
     COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/neon_cross
     COMMAND ${PXFLOW_AARCH64_CXX} -std=c++20 -O2 ${PXFLOW_PORTABLE_OPTIONS} ${flags}
-            -I${src}/reference -I${PXFLOW_SPEC_INCLUDE_DIR} -I${src}/hosts/corpus -I${src}/hosts/harness -I${src}/kernels/cpu
+            -I${src}/reference -I${PXFLOW_SPEC_INCLUDE_DIR} -I${src}/hosts/corpus -I${src}/hosts/harness/common -I${src}/kernels/cpu
             -I${CMAKE_CURRENT_SOURCE_DIR} -MD -MF ${object}.d -c ${source} -o ${object}
     DEPENDS ${source}
     DEPFILE ${object}.d

@@ -1,5 +1,6 @@
 // The GAP8 model's guard zones around its result areas (hosts/gap8/gap8_flow_runner.cpp) and the
-// limits `pxflow check` finds from each variant's unsupported() (hosts/harness/check_limits.hpp).
+// limits `pxflow check` finds from each variant's unsupported()
+// (hosts/harness/check/check_limits.hpp).
 #include <algorithm>
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// The limit cases of the fixed corpus (hosts/harness/check_limits.hpp) and the guard zones'
+// The limit cases of the fixed corpus (hosts/harness/check/check_limits.hpp) and the guard zones'
 // messages (hosts/core/guard_zone.hpp), on predicates and buffers made here.
 #include <algorithm>
 #include <catch2/catch.hpp>

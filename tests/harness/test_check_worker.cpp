@@ -1,4 +1,4 @@
-// The check worker's protocol and guarded memory (hosts/harness/worker_wire.hpp,
+// The check worker's protocol and guarded memory (hosts/harness/check/worker_wire.hpp,
 // guarded_run.hpp), in-process: what crosses the pipe comes back equal, a cut message is refused,
 // the guards see a write outside the output, and every frame ends at a page boundary.
 #include <unistd.h>

@@ -35,7 +35,7 @@ const ReferenceAnswer& reference(const std::string& profile);
 
 // Runs the whole corpus as one batch through `backend` into sentinel-filled records and
 // compares them with ref-original's through the shared exactness checker
-// (hosts/harness/exactness.hpp): one line per mismatch, in `pxflow check`'s format, labelled
+// (hosts/harness/common/exactness.hpp): one line per mismatch, in `pxflow check`'s format, labelled
 // "FAIL <who> case=opencl-corpus[<profile>]".
 Comparison compare(OpenclBackend& backend, const std::string& profile, const std::string& who);
 

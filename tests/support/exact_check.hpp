@@ -1,6 +1,6 @@
 // The harness's exactness check as a Catch2 assertion: the batch runs into sentinel-filled
-// records, is compared with ref-original by check_exact() (hosts/harness/exactness.hpp), and a
-// failure shows the same mismatch lines as `pxflow check`.
+// records, is compared with ref-original by check_exact() (hosts/harness/common/exactness.hpp), and
+// a failure shows the same mismatch lines as `pxflow check`.
 #pragma once
 #include <catch2/catch.hpp>
 #include <span>

@@ -16,7 +16,7 @@ namespace pxflow::test {
 std::unique_ptr<VulkanBackend> make_vulkan(const VulkanConfig& config = {});
 
 // Runs all pairs as ONE batch on `backend` through the shared exactness checker
-// (hosts/harness/exactness.hpp: sentinel-filled records, each compared byte for byte with
+// (hosts/harness/common/exactness.hpp: sentinel-filled records, each compared byte for byte with
 // ref-original's, the frame flow by its float bits) and CHECKs that nothing differs.
 // Mismatches print in `pxflow check`'s format, labelled "FAIL vulkan case=vulkan-corpus[<WxH S
 // B>]" with the pair's name.

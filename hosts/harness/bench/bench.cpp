@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <numeric>
@@ -21,6 +20,7 @@
 #include "grid.hpp"
 #include "interrupt.hpp"
 #include "machine_state.hpp"
+#include "number_text.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
 #include "registry.hpp"
@@ -91,12 +91,6 @@ struct Column {
 constexpr Column kColumns[] = {{"clock", 22},    {"ns/frame", 12}, {"95% CI of median", 23},
                                {"frames/s", 11}, {"ns/POI", 9},    {"cycles/frame", 13},
                                {"x bound", 8},   {"vs ref", 8}};
-
-std::string fixed(const char* format, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
 
 std::string pad_name(const std::string& name, std::size_t width) {
   return name + std::string(name.size() < width ? width - name.size() : 0, ' ');
@@ -449,15 +443,15 @@ std::string bench_row_line(const BenchRow& r, std::size_t name_width) {
   const bool instructions = r.cycles_per_frame == 0 && r.instructions_per_frame > 0;
   auto timing = [&](std::string cell) { return instructions ? std::string("-") : cell; };
   const std::string cells[] = {
-      r.source, timing(fixed("%.0f", r.median_ns_per_frame)),
-      timing(fixed("%.0f", r.median_ci_low_ns) + ".." + fixed("%.0f", r.median_ci_high_ns)),
-      timing(fixed("%.1f", r.frames_per_s)), timing(fixed("%.1f", r.ns_per_poi)),
+      r.source, timing(formatted("%.0f", r.median_ns_per_frame)),
+      timing(formatted("%.0f", r.median_ci_low_ns) + ".." + formatted("%.0f", r.median_ci_high_ns)),
+      timing(formatted("%.1f", r.frames_per_s)), timing(formatted("%.1f", r.ns_per_poi)),
       // A clock that counts instructions (QEMU's -icount) says so in its cell, never "cycles".
-      r.cycles_per_frame > 0         ? fixed("%.0f", r.cycles_per_frame)
-      : r.instructions_per_frame > 0 ? fixed("%.0f instr", r.instructions_per_frame)
+      r.cycles_per_frame > 0         ? formatted("%.0f", r.cycles_per_frame)
+      : r.instructions_per_frame > 0 ? formatted("%.0f instr", r.instructions_per_frame)
                                      : "-",
-      r.bound_ratio > 0 ? fixed("%.2fx", r.bound_ratio) : "-",
-      r.speedup_vs_reference > 0 ? fixed("%.2fx", r.speedup_vs_reference) : "-"};
+      r.bound_ratio > 0 ? formatted("%.2fx", r.bound_ratio) : "-",
+      r.speedup_vs_reference > 0 ? formatted("%.2fx", r.speedup_vs_reference) : "-"};
   std::string line = pad_name(r.backend, name_width);
   for (std::size_t i = 0; i < std::size(kColumns); ++i) {
     const auto w = static_cast<std::size_t>(kColumns[i].width);
@@ -466,48 +460,6 @@ std::string bench_row_line(const BenchRow& r, std::size_t name_width) {
   }
   if (!r.note.empty()) line += "  " + r.note;
   return line;
-}
-
-int planted_slowdown_from_environment() {
-  const char* v = std::getenv("PXFLOW_BENCH_PLANTED_SLOWDOWN");
-  if (!v || !*v) return 0;
-  char* end = nullptr;
-  const long p = std::strtol(v, &end, 10);
-  if (*end != '\0' || p < 1 || p > 100)
-    throw InputError("PXFLOW_BENCH_PLANTED_SLOWDOWN=" + std::string(v) +
-                     ": expected a whole percent in 1..100 (the extra runs the gate's A/B "
-                     "experiment plants; docs/harness.md)");
-  return static_cast<int>(p);
-}
-
-std::vector<BenchPoint> default_bench_points(const Params& base, const std::string& name) {
-  std::vector<BenchPoint> pts;
-  for (int batch : {1, 16, 256, 4096}) pts.push_back({"batch", name, base, batch, 0});
-  for (auto [w, h] : {std::pair{160, 120}, {320, 240}, {640, 480}}) {
-    Params p = base;
-    p.width = w, p.height = h;
-    pts.push_back({"size", name, p, 16, 0});
-  }
-  for (int S : {2, 8}) {
-    Params p = base;
-    p.search_radius = S;
-    pts.push_back({"radius", name, p, 256, 0});
-  }
-  pts.push_back({"threads", name, base, 256, 1});
-  return pts;
-}
-
-std::vector<BenchPoint> quick_bench_points(const Params& base, const std::string& name) {
-  std::vector<BenchPoint> pts = default_bench_points(base, name);
-  std::erase_if(pts, [](const BenchPoint& p) {
-    return p.batch > 256 || p.sweep == "radius" || p.sweep == "threads";
-  });
-  return pts;
-}
-
-void set_sweep_threads(std::vector<BenchPoint>& points, int threads) {
-  for (BenchPoint& p : points)
-    if (p.sweep != "threads") p.threads = threads;
 }
 
 BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
@@ -527,7 +479,7 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   out << "backends (what runs, on which device):\n";
   bench.open_all(rows, report);
   if (bound)
-    out << "bound: " << bound->name << ", " << fixed("%.1f", report.bound_bytes_per_cycle)
+    out << "bound: " << bound->name << ", " << formatted("%.1f", report.bound_bytes_per_cycle)
         << " bytes per " << bound->clock
         << " cycle on one thread (measured again on as many threads as a row is given); x bound = "
            "a row's cycles per frame over the bound's\n";

@@ -21,7 +21,8 @@ std::vector<Offset> sweep_offsets(int S) {
 }
 
 Params sweep_params(int S, int g) {
-  int side = g == 1 ? min_frame_side(S) : 2 * S + 10 + g * (2 * S + 9);
+  // Past one POI, hi - lo (SPEC §2) is the side less min_frame_side(S) - 1: g steps of 2S + 9.
+  int side = g == 1 ? min_frame_side(S) : min_frame_side(S) - 1 + g * (2 * S + 9);
   if (g > 1 && side % 4 == 0) ++side;  // (hi - lo) / g stays 2S + 9: the same grid
   Params p = profile(kDefaultProfile);
   p.width = p.height = side;

@@ -151,6 +151,30 @@ std::string bench_header_line(std::size_t name_width);
 std::string bench_row_line(const BenchRow& r, std::size_t name_width);
 inline constexpr const char* kNoisyNote = "noisy: rerun on a quiet machine";
 
+// The keys of a bench row's JSON object that code reading bench files names (pxflow compare, whose
+// own rows use the same keys where they mean the same): the one spelling of each, which
+// bench_row_fields() uses too.
+namespace bench_key {
+inline constexpr const char* kBackend = "backend";
+inline constexpr const char* kSweep = "sweep";
+inline constexpr const char* kProfile = "profile";
+inline constexpr const char* kWidth = "width";
+inline constexpr const char* kHeight = "height";
+inline constexpr const char* kSearchRadius = "search_radius";
+inline constexpr const char* kBatch = "batch";
+inline constexpr const char* kThreads = "threads";
+inline constexpr const char* kThreadsRequested = "threads_requested";
+inline constexpr const char* kDevice = "device";
+inline constexpr const char* kParams = "params";
+inline constexpr const char* kSource = "source";
+inline constexpr const char* kExactClock = "exact_clock";
+inline constexpr const char* kProcesses = "processes";
+inline constexpr const char* kMedianNs = "median_ns_per_frame";
+inline constexpr const char* kSamples = "samples_ns_per_frame";
+inline constexpr const char* kProcessMedians = "process_medians_ns_per_frame";
+inline constexpr const char* kNote = "note";
+}  // namespace bench_key
+
 // A row's fields as the bench's JSON and CSV carry them (bench_json.cpp): the only list of them.
 std::span<const ResultField<BenchRow>> bench_row_fields();
 Json bench_json(const BenchReport& r);

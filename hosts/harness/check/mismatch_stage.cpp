@@ -22,7 +22,12 @@ std::string status_name(int s) {
   return "status " + std::to_string(s);
 }
 
-std::string xy(int dx, int dy) { return "(" + std::to_string(dx) + "," + std::to_string(dy) + ")"; }
+// Appended piece by piece: GCC 12's -Wrestrict misfires on "(" + std::to_string() when inlined.
+std::string xy(int dx, int dy) {
+  std::string s = "(";
+  s += std::to_string(dx) + "," + std::to_string(dy) + ")";
+  return s;
+}
 
 std::string feature_words(const Params& p, const PoiRecord& want, const PoiRecord& got) {
   std::string s = "feature score: got " + std::to_string(got.feature) + " (" +

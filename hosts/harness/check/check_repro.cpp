@@ -3,7 +3,6 @@
 #include <filesystem>
 
 #include "grid.hpp"
-#include "interrupt.hpp"
 #include "output_plan.hpp"
 #include "param_fields.hpp"
 #include "registry.hpp"
@@ -106,27 +105,6 @@ std::vector<std::string> MismatchExplainer::write_reproducer(const CaseLabel& la
               std::to_string(r.poi) + ", " + std::to_string(r.runs) + " backend runs" +
               (r.cropped ? "" : "; the crop did not fail, the frame is whole") + "): " + r.what,
           where + " shows it: " + mine, where + " against: " + theirs};
-}
-
-PairRunner in_process_runner(Backend& b) {
-  return [&b](std::span<const FramePair> pairs, const Params& p) {
-    RunOutcome out;
-    if (std::string why = b.unsupported(p); !why.empty()) {
-      out.error = "unsupported: " + why;
-      return out;
-    }
-    out.records = sentinel_records(poi_count(p) * pairs.size());
-    OpCounts ignored;
-    try {
-      b.run(pairs, p, out.records, ignored);
-    } catch (const Interrupted&) {
-      throw;
-    } catch (const std::exception& e) {
-      out.records.clear();
-      out.error = e.what();
-    }
-    return out;
-  };
 }
 
 }  // namespace pxflow

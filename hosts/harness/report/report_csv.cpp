@@ -1,35 +1,14 @@
 #include "report_csv.hpp"
 
 #include <algorithm>
-#include <sstream>
 
 #include "bench.hpp"
 #include "check.hpp"
+#include "csv_table.hpp"
 #include "report.hpp"
 
 namespace pxflow {
 namespace {
-
-std::string csv_cell(const Json& v) {
-  if (v.is_null()) return "";
-  if (!v.is_string()) return v.dump();
-  std::string s = "\"";
-  for (char c : v.get<std::string>()) s += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return s + "\"";
-}
-
-// One line per object of `rows`, the columns `cols` (missing keys empty).
-std::string csv(const std::vector<std::string>& cols, const std::vector<const Json*>& rows) {
-  std::ostringstream o;
-  for (std::size_t i = 0; i < cols.size(); ++i) o << (i ? "," : "") << cols[i];
-  o << "\n";
-  for (const Json* r : rows) {
-    for (std::size_t i = 0; i < cols.size(); ++i)
-      o << (i ? "," : "") << (r->contains(cols[i]) ? csv_cell((*r)[cols[i]]) : "");
-    o << "\n";
-  }
-  return o.str();
-}
 
 // Rows of backends in registry order (stable: rows of one backend keep theirs).
 void sort_by_rank(std::vector<const Json*>::iterator first,
@@ -61,7 +40,7 @@ std::string bench_csv(const Json& bench) {
       i = j;
     }
   }
-  return csv(csv_columns(bench_row_fields()), rows);
+  return csv_lines(csv_columns(bench_row_fields()), rows);
 }
 
 std::string conformance_csv(const Json& check) {
@@ -69,13 +48,7 @@ std::string conformance_csv(const Json& check) {
   if (!check.is_null() && check["backends"].is_array())
     for (const auto& r : check["backends"]) rows.push_back(&r);
   sort_by_rank(rows.begin(), rows.end());
-  return csv(csv_columns(backend_outcome_fields()), rows);
-}
-
-std::string csv_table(const std::vector<std::string>& cols, const Json& rows) {
-  std::vector<const Json*> in_order;
-  for (const auto& r : rows) in_order.push_back(&r);
-  return csv(cols, in_order);
+  return csv_lines(csv_columns(backend_outcome_fields()), rows);
 }
 
 std::string accuracy_csv(const Json& accuracy_rows) {

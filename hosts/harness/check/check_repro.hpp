@@ -53,8 +53,4 @@ class MismatchExplainer {
   std::string run_dir_;  // this run's pxflow-repro-N (in dir), made at the first reproducer
 };
 
-// A runner on a backend opened in this process: its records for the batch, or the error it threw
-// or the limit it declared (Backend::unsupported).
-PairRunner in_process_runner(Backend& b);
-
 }  // namespace pxflow

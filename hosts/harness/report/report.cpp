@@ -200,73 +200,61 @@ ReportOutputs plan_report(OutputPlan& plan, const std::string& out_dir,
   return out;
 }
 
-void write_report(ReportOutputs& out, const ReportInputs& in) {
-  const Json build = build_provenance();
-  const Json machine = machine_provenance();
-  std::vector<Section> secs{report::provenance(in, build, machine)};
-  for (const BenchFile& f : in.bench_files)  // the first file's backends: the backends section's
-    secs.push_back(report::bench_file_provenance(f, &f == &in.bench_files.front()));
-  secs.push_back(report::backends_section(in));
-  if (!in.check.is_null()) secs.push_back(report::conformance(in.check, in.check_command));
-  const bool several = report::several_machines(in, machine);
-  if (!in.bench.is_null()) {
-    report::MachineTag tag;  // a report of one machine stays uncluttered
-    if (several && !in.bench_files.empty())
-      tag = {" — " + in.bench_files.front().label + ": " + file_machine(in.bench_files.front()),
-             " — " + file_machine(in.bench_files.front())};
-    secs.push_back(report::throughput(in.bench, in.bench_command, tag));
-    // A bench of its own points (custom) ran none of the default sweeps: its points are shown
-    // whole, and no sweep is said to be left out.
-    const bool custom = report::has_sweep(in.bench, "custom");
-    for (const char* sweep : {"batch", "size", "radius", "threads"})
-      if (!custom || report::has_sweep(in.bench, sweep))
-        secs.push_back(report::scaling(in.bench, sweep, tag));
-    for (Section& s : report::custom_points(in.bench, tag)) secs.push_back(std::move(s));
-  }
-  Json comparison;
-  if (in.bench_files.size() >= 2) {
-    // A report is where hardware is compared: files of other machines are what it is for.
-    const BenchComparison c = compare_bench_files(in.bench_files, {.across_machines = true});
-    for (Section& s : report::comparison_sections(in.bench_files, c, several))
-      secs.push_back(std::move(s));
-    comparison = comparison_json(c);
-  }
-  if (!in.accuracy.empty()) secs.push_back(report::accuracy(in));
-  Json commands{{"report", in.report_command},
-                {"check", in.check_command.empty() ? Json() : Json(in.check_command)},
-                {"bench", in.bench_command.empty() ? Json() : Json(in.bench_command)},
-                {"accuracy", in.accuracy_command.empty() ? Json() : Json(in.accuracy_command)}};
+namespace {
+
+// The throughput, scaling and custom-point sections of the report's bench.
+void add_bench_sections(const ReportInputs& in, bool several, std::vector<Section>& secs) {
+  report::MachineTag tag;  // a report of one machine stays uncluttered
+  if (several && !in.bench_files.empty())
+    tag = {" — " + in.bench_files.front().label + ": " + file_machine(in.bench_files.front()),
+           " — " + file_machine(in.bench_files.front())};
+  secs.push_back(report::throughput(in.bench, in.bench_command, tag));
+  // A bench of its own points (custom) ran none of the default sweeps: its points are shown
+  // whole, and no sweep is said to be left out.
+  const bool custom = report::has_sweep(in.bench, "custom");
+  for (const char* sweep : {"batch", "size", "radius", "threads"})
+    if (!custom || report::has_sweep(in.bench, sweep))
+      secs.push_back(report::scaling(in.bench, sweep, tag));
+  for (Section& s : report::custom_points(in.bench, tag)) secs.push_back(std::move(s));
+}
+
+// The comparison of the bench files (two at least): its sections, and its JSON for results.json.
+Json add_comparison_sections(const ReportInputs& in, bool several, std::vector<Section>& secs) {
+  // A report is where hardware is compared: files of other machines are what it is for.
+  const BenchComparison c = compare_bench_files(in.bench_files, {.across_machines = true});
+  for (Section& s : report::comparison_sections(in.bench_files, c, several))
+    secs.push_back(std::move(s));
+  return comparison_json(c);
+}
+
+// results.json but its "commands" (a placeholder here) and "sections", and the CLI extensions'
+// parts (write_report fills them in).
+Json results_json(const ReportInputs& in, const Json& build, const Json& machine,
+                  const Json& comparison) {
   Json pictures = Json::array();
   for (const auto& p : in.pictures) pictures.push_back({{"caption", p.caption}, {"file", p.file}});
-  Json results{{"schema", "pxflow-report"},
-               {"schema_version", 1},
-               {"provenance",
-                {{"build", build},
-                 {"machine", machine},
-                 {"backends", in.backends},
-                 {"backends_source", in.backends_source},
-                 {"measured_here", in.measured_here},
-                 {"bench_files", report::bench_files_json(in.bench_files)}}},
-               {"commands", nullptr},
-               {"check", in.check},
-               {"bench", in.bench},
-               {"comparison", comparison},
-               {"accuracy", in.accuracy.empty() ? Json()
-                                                : Json{{"command", in.accuracy_command},
-                                                       {"rows", in.accuracy_rows}}},
-               {"pictures", pictures}};
-  for (const auto& s : in.sections) {
-    for (std::size_t i = 0; i < s.tables.size(); ++i) {
-      const auto& t = s.tables[i];
-      secs.push_back(
-          {s.key + "-" + std::to_string(i + 1), t.title, t.text, t.header, t.rows, t.charts, {}});
-    }
-    commands[s.key] = s.command;
-    results[s.key] = s.data;
-  }
-  results["commands"] = commands;
-  results["sections"] = Json::array();
-  for (const auto& s : secs) results["sections"].push_back(section_json(s));
+  return {{"schema", "pxflow-report"},
+          {"schema_version", 1},
+          {"provenance",
+           {{"build", build},
+            {"machine", machine},
+            {"backends", in.backends},
+            {"backends_source", in.backends_source},
+            {"measured_here", in.measured_here},
+            {"bench_files", report::bench_files_json(in.bench_files)}}},
+          {"commands", nullptr},
+          {"check", in.check},
+          {"bench", in.bench},
+          {"comparison", comparison},
+          {"accuracy", in.accuracy.empty()
+                           ? Json()
+                           : Json{{"command", in.accuracy_command}, {"rows", in.accuracy_rows}}},
+          {"pictures", pictures}};
+}
+
+// The report's files, its manifest, and the previous run's files this one did not write removed.
+void write_report_files(ReportOutputs& out, const ReportInputs& in,
+                        const std::vector<Section>& secs, const Json& results) {
   const std::filesystem::path dir(out.dir);
   out.files["report.md"]->write(render_md(secs));
   out.files["report.html"]->write(render_html(secs, dir));
@@ -281,6 +269,41 @@ void write_report(ReportOutputs& out, const ReportInputs& in) {
   for (const auto& [name, file] : out.files) may_write.push_back(name);
   for (const auto& [name, file] : out.pictures) may_write.push_back(name);
   remove_unwritten(out.dir, out.previous, may_write, written);
+}
+
+}  // namespace
+
+void write_report(ReportOutputs& out, const ReportInputs& in) {
+  const Json build = build_provenance();
+  const Json machine = machine_provenance();
+  std::vector<Section> secs{report::provenance(in, build, machine)};
+  for (const BenchFile& f : in.bench_files)  // the first file's backends: the backends section's
+    secs.push_back(report::bench_file_provenance(f, &f == &in.bench_files.front()));
+  secs.push_back(report::backends_section(in));
+  if (!in.check.is_null()) secs.push_back(report::conformance(in.check, in.check_command));
+  const bool several = report::several_machines(in, machine);
+  if (!in.bench.is_null()) add_bench_sections(in, several, secs);
+  Json comparison;
+  if (in.bench_files.size() >= 2) comparison = add_comparison_sections(in, several, secs);
+  if (!in.accuracy.empty()) secs.push_back(report::accuracy(in));
+  Json commands{{"report", in.report_command},
+                {"check", in.check_command.empty() ? Json() : Json(in.check_command)},
+                {"bench", in.bench_command.empty() ? Json() : Json(in.bench_command)},
+                {"accuracy", in.accuracy_command.empty() ? Json() : Json(in.accuracy_command)}};
+  Json results = results_json(in, build, machine, comparison);
+  for (const auto& s : in.sections) {  // a family's (the GAP8 model beside the paper's tables)
+    for (std::size_t i = 0; i < s.tables.size(); ++i) {
+      const auto& t = s.tables[i];
+      secs.push_back(
+          {s.key + "-" + std::to_string(i + 1), t.title, t.text, t.header, t.rows, t.charts, {}});
+    }
+    commands[s.key] = s.command;
+    results[s.key] = s.data;
+  }
+  results["commands"] = commands;
+  results["sections"] = Json::array();
+  for (const auto& s : secs) results["sections"].push_back(section_json(s));
+  write_report_files(out, in, secs, results);
 }
 
 }  // namespace pxflow

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "number_text.hpp"
 
 namespace pxflow {
 namespace {
@@ -18,18 +19,12 @@ const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
                           "#008080", "#ff00ff", "#9c9ede", "#e7969c", "#8ca252"};
 const char* kMarkers[] = {"circle", "square", "triangle", "diamond", "down", "cross", "plus"};
 
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 // A tick label: 3 significant digits at most, with k/M/G (0.5, 2, 50, 200, 5k, 1.2M).
 std::string si(double v) {
   const char* units[] = {"", "k", "M", "G", "T"};
   int u = 0;
   while (std::fabs(v) >= 1000 && u < 4) v /= 1000, ++u;
-  std::string s = fmt("%.3g", v);
+  std::string s = formatted("%.3g", v);
   return s + units[u];
 }
 
@@ -56,16 +51,16 @@ double linear_step(double span, bool integer) {
 std::string marker_svg(const std::string& marker, double x, double y, const std::string& c) {
   auto pts = [&](std::initializer_list<std::pair<double, double>> offsets) {
     std::string p;
-    for (auto [dx, dy] : offsets) p += fmt("%.1f,", x + dx) + fmt("%.1f ", y + dy);
+    for (auto [dx, dy] : offsets) p += formatted("%.1f,", x + dx) + formatted("%.1f ", y + dy);
     return "<polygon points='" + p + "' fill='" + c + "'/>";
   };
   auto stroke = [&](double x1, double y1, double x2, double y2) {
-    return "<line x1='" + fmt("%.1f", x + x1) + "' y1='" + fmt("%.1f", y + y1) + "' x2='" +
-           fmt("%.1f", x + x2) + "' y2='" + fmt("%.1f", y + y2) + "' stroke='" + c +
-           "' stroke-width='2'/>";
+    return "<line x1='" + formatted("%.1f", x + x1) + "' y1='" + formatted("%.1f", y + y1) +
+           "' x2='" + formatted("%.1f", x + x2) + "' y2='" + formatted("%.1f", y + y2) +
+           "' stroke='" + c + "' stroke-width='2'/>";
   };
   if (marker == "square")
-    return "<rect x='" + fmt("%.1f", x - 3.5) + "' y='" + fmt("%.1f", y - 3.5) +
+    return "<rect x='" + formatted("%.1f", x - 3.5) + "' y='" + formatted("%.1f", y - 3.5) +
            "' width='7' height='7' fill='" + c + "'/>";
   if (marker == "triangle") return pts({{0, -4.5}, {4, 3}, {-4, 3}});
   if (marker == "down") return pts({{0, 4.5}, {4, -3}, {-4, -3}});
@@ -73,13 +68,13 @@ std::string marker_svg(const std::string& marker, double x, double y, const std:
   if (marker == "cross") return stroke(-4, -4, 4, 4) + stroke(-4, 4, 4, -4);
   if (marker == "plus") return stroke(-5, 0, 5, 0) + stroke(0, -5, 0, 5);
   if (marker.empty()) return "";
-  return "<circle cx='" + fmt("%.1f", x) + "' cy='" + fmt("%.1f", y) + "' r='3.5' fill='" + c +
-         "'/>";
+  return "<circle cx='" + formatted("%.1f", x) + "' cy='" + formatted("%.1f", y) +
+         "' r='3.5' fill='" + c + "'/>";
 }
 
 std::string text(double x, double y, const std::string& s, const char* extra = "") {
-  return "<text x='" + fmt("%.1f", x) + "' y='" + fmt("%.1f", y) + "' font-size='11' " + extra +
-         ">" + html_escape(s) + "</text>";
+  return "<text x='" + formatted("%.1f", x) + "' y='" + formatted("%.1f", y) + "' font-size='11' " +
+         extra + ">" + html_escape(s) + "</text>";
 }
 
 // About how many pixels `s` takes at `font_px` (sans-serif): code points, not UTF-8 bytes.
@@ -133,8 +128,8 @@ std::string bar_chart(const Chart& c) {
   const Scale X{a, b, double(left), double(left + width), c.x.log};
   const int axis_y = height - 40;
   for (double t : axis_ticks(a, b, c.x.log, c.x.integer))
-    s += "<line x1='" + fmt("%.1f", X(t)) + "' y1='" + std::to_string(top - 5) + "' x2='" +
-         fmt("%.1f", X(t)) + "' y2='" + std::to_string(axis_y) + "' stroke='#ddd'/>" +
+    s += "<line x1='" + formatted("%.1f", X(t)) + "' y1='" + std::to_string(top - 5) + "' x2='" +
+         formatted("%.1f", X(t)) + "' y2='" + std::to_string(axis_y) + "' stroke='#ddd'/>" +
          text(X(t), axis_y + 14, si(t), "text-anchor='middle'");
   s += text(left + width / 2.0, axis_y + 30, c.x.label, "text-anchor='middle' font-size='12'");
   for (std::size_t i = 0; i < c.bars.size(); ++i) {
@@ -142,8 +137,9 @@ std::string bar_chart(const Chart& c) {
     const int y = top + static_cast<int>(i) * bar_h;
     const double w = std::max(1.0, X(bar.value) - left);
     s += text(left - 6, y + 15, bar.label, "text-anchor='end' font-size='12'") + "<rect x='" +
-         std::to_string(left) + "' y='" + std::to_string(y + 3) + "' width='" + fmt("%.1f", w) +
-         "' height='" + std::to_string(bar_h - 6) + "' fill='" + bar.style.colour + "'/>" +
+         std::to_string(left) + "' y='" + std::to_string(y + 3) + "' width='" +
+         formatted("%.1f", w) + "' height='" + std::to_string(bar_h - 6) + "' fill='" +
+         bar.style.colour + "'/>" +
          marker_svg(bar.style.marker, left + w + 7, y + 11, bar.style.colour) +
          text(left + w + 15, y + 15, si(bar.value) + " " + c.unit);
   }
@@ -164,12 +160,12 @@ std::string line_chart(const Chart& c) {
   const Scale X{xa, xb, double(left), double(left + w), c.x.log};
   const Scale Y{ya, yb, double(top + h), double(top), c.y.log};
   for (double t : axis_ticks(xa, xb, c.x.log, c.x.integer))
-    s += "<line x1='" + fmt("%.1f", X(t)) + "' y1='" + std::to_string(top) + "' x2='" +
-         fmt("%.1f", X(t)) + "' y2='" + std::to_string(top + h) + "' stroke='#ddd'/>" +
+    s += "<line x1='" + formatted("%.1f", X(t)) + "' y1='" + std::to_string(top) + "' x2='" +
+         formatted("%.1f", X(t)) + "' y2='" + std::to_string(top + h) + "' stroke='#ddd'/>" +
          text(X(t), top + h + 15, si(t), "text-anchor='middle'");
   for (double t : axis_ticks(ya, yb, c.y.log, c.y.integer))
-    s += "<line x1='" + std::to_string(left) + "' y1='" + fmt("%.1f", Y(t)) + "' x2='" +
-         std::to_string(left + w) + "' y2='" + fmt("%.1f", Y(t)) + "' stroke='#ddd'/>" +
+    s += "<line x1='" + std::to_string(left) + "' y1='" + formatted("%.1f", Y(t)) + "' x2='" +
+         std::to_string(left + w) + "' y2='" + formatted("%.1f", Y(t)) + "' stroke='#ddd'/>" +
          text(left - 5, Y(t) + 4, si(t), "text-anchor='end'");
   s += "<rect x='" + std::to_string(left) + "' y='" + std::to_string(top) + "' width='" +
        std::to_string(w) + "' height='" + std::to_string(h) + "' fill='none' stroke='#999'/>";
@@ -182,7 +178,7 @@ std::string line_chart(const Chart& c) {
     auto sorted = se.points;
     std::sort(sorted.begin(), sorted.end());
     std::string pts;
-    for (auto [x, y] : sorted) pts += fmt("%.1f,", X(x)) + fmt("%.1f ", Y(y));
+    for (auto [x, y] : sorted) pts += formatted("%.1f,", X(x)) + formatted("%.1f ", Y(y));
     const std::string& col = se.style.colour;
     const std::string dash = se.style.dashed ? "' stroke-dasharray='6 4" : "";
     s += "<polyline fill='none' stroke='" + col + "' stroke-width='2" + dash + "' points='" + pts +
@@ -190,8 +186,8 @@ std::string line_chart(const Chart& c) {
     for (auto [x, y] : sorted) s += marker_svg(se.style.marker, X(x), Y(y), col);
     const double ly = top + 10 + static_cast<double>(i) * 18;
     const int lx = left + w + 12;
-    s += "<line x1='" + std::to_string(lx) + "' y1='" + fmt("%.1f", ly) + "' x2='" +
-         std::to_string(lx + 22) + "' y2='" + fmt("%.1f", ly) + "' stroke='" + col +
+    s += "<line x1='" + std::to_string(lx) + "' y1='" + formatted("%.1f", ly) + "' x2='" +
+         std::to_string(lx + 22) + "' y2='" + formatted("%.1f", ly) + "' stroke='" + col +
          "' stroke-width='2" + dash + "'/>" + marker_svg(se.style.marker, lx + 11, ly, col) +
          text(lx + 28, ly + 4, se.name, "font-size='12'");
   }

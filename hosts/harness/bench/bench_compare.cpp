@@ -9,9 +9,11 @@
 #include <set>
 #include <tuple>
 
+#include "bench.hpp"
 #include "bench_stats.hpp"
+#include "csv_table.hpp"
 #include "errors.hpp"
-#include "report_csv.hpp"
+#include "number_text.hpp"
 
 namespace pxflow {
 namespace {
@@ -26,22 +28,25 @@ std::string str(const Json& j, const char* key) {
 using RowKey = std::vector<std::pair<std::string, std::string>>;
 RowKey row_key(const Json& r, bool across_machines) {
   auto text = [](const Json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); };
-  RowKey k{{"backend", str(r, "backend")},
-           {"clock", str(r, "source")},
-           {"sweep", str(r, "sweep")},
-           {"profile", str(r, "profile")}};
-  if (r.contains("params") && r["params"].is_object())
-    for (const auto& [name, value] : r["params"].items()) k.push_back({name, text(value)});
+  RowKey k{{bench_key::kBackend, str(r, bench_key::kBackend)},
+           {"clock", str(r, bench_key::kSource)},
+           {bench_key::kSweep, str(r, bench_key::kSweep)},
+           {bench_key::kProfile, str(r, bench_key::kProfile)}};
+  if (r.contains(bench_key::kParams) && r[bench_key::kParams].is_object())
+    for (const auto& [name, value] : r[bench_key::kParams].items())
+      k.push_back({name, text(value)});
   else  // a file older than "params": what it has
-    for (const char* name : {"width", "height", "search_radius"})
+    for (const char* name : {bench_key::kWidth, bench_key::kHeight, bench_key::kSearchRadius})
       k.push_back({name, text(r.value(name, Json()))});
-  k.push_back({"batch", text(r.value("batch", Json()))});
+  k.push_back({bench_key::kBatch, text(r.value(bench_key::kBatch, Json()))});
   if (across_machines) {
-    const int asked = r.value("threads_requested", -1);
-    k.push_back({"threads", asked == 0 ? "all" : asked > 0 ? std::to_string(asked) : "?"});
+    const int asked = r.value(bench_key::kThreadsRequested, -1);
+    k.push_back({bench_key::kThreads, asked == 0  ? "all"
+                                      : asked > 0 ? std::to_string(asked)
+                                                  : "?"});
   } else {
-    k.push_back({"threads", text(r.value("threads", Json()))});
-    k.push_back({"device", str(r, "device")});
+    k.push_back({bench_key::kThreads, text(r.value(bench_key::kThreads, Json()))});
+    k.push_back({bench_key::kDevice, str(r, bench_key::kDevice)});
   }
   return k;
 }
@@ -65,21 +70,21 @@ std::size_t differences(const RowKey& a, const RowKey& b) {
 }
 
 bool measured(const Json& r) {
-  return r.contains("median_ns_per_frame") && r["median_ns_per_frame"].is_number() &&
-         r["median_ns_per_frame"].get<double>() > 0;
+  return r.contains(bench_key::kMedianNs) && r[bench_key::kMedianNs].is_number() &&
+         r[bench_key::kMedianNs].get<double>() > 0;
 }
 
 // The values the statistics are over: each process's median; one process: its samples (a file
 // older than the processes, or bench --processes 1).
 std::vector<double> process_medians(const Json& r) {
-  if (r.contains("process_medians_ns_per_frame") && r["process_medians_ns_per_frame"].is_array())
-    return r["process_medians_ns_per_frame"].get<std::vector<double>>();
-  return {r["median_ns_per_frame"].get<double>()};
+  if (r.contains(bench_key::kProcessMedians) && r[bench_key::kProcessMedians].is_array())
+    return r[bench_key::kProcessMedians].get<std::vector<double>>();
+  return {r[bench_key::kMedianNs].get<double>()};
 }
 
 int sample_count(const Json& r) {
-  if (r.contains("samples_ns_per_frame") && r["samples_ns_per_frame"].is_array())
-    return static_cast<int>(r["samples_ns_per_frame"].size());
+  if (r.contains(bench_key::kSamples) && r[bench_key::kSamples].is_array())
+    return static_cast<int>(r[bench_key::kSamples].size());
   return 1;
 }
 
@@ -89,8 +94,6 @@ std::string disturbance(const BenchFile& f) {
              ? str(f.bench["machine"], "disturbed")
              : "";
 }
-
-std::string fixed(const char* format, double v);
 
 // The row's verdict and, with a gate, its outcome (bench_compare.hpp).
 void judge(CompareRow& c, const std::string& inconclusive, double fail_above) {
@@ -112,8 +115,8 @@ void judge(CompareRow& c, const std::string& inconclusive, double fail_above) {
     c.gate = "pass";
   else {
     c.gate = "inconclusive";
-    c.why = "its interval [" + fixed("%.3f", c.ratio_ci_low) + ", " +
-            fixed("%.3f", c.ratio_ci_high) + "] holds " + fixed("%.3f", limit) +
+    c.why = "its interval [" + formatted("%.3f", c.ratio_ci_low) + ", " +
+            formatted("%.3f", c.ratio_ci_high) + "] holds " + formatted("%.3f", limit) +
             ": more processes (bench --processes, compare --rounds) or a quieter machine";
   }
 }
@@ -122,19 +125,22 @@ CompareRow compare_rows(const BenchFile& base_file, const BenchFile& file, const
                         const Json& row, double fail_above) {
   CompareRow c;
   c.file = file.label;
-  c.backend = str(row, "backend"), c.sweep = str(row, "sweep"), c.setting = str(row, "profile");
-  c.source = str(row, "source");
-  c.width = row.value("width", 0), c.height = row.value("height", 0);
-  c.search_radius = row.value("search_radius", 0), c.batch = row.value("batch", 0);
-  c.threads = row.value("threads", 0), c.base_threads = base.value("threads", 0);
+  c.backend = str(row, bench_key::kBackend), c.sweep = str(row, bench_key::kSweep),
+  c.setting = str(row, bench_key::kProfile);
+  c.source = str(row, bench_key::kSource);
+  c.width = row.value(bench_key::kWidth, 0), c.height = row.value(bench_key::kHeight, 0);
+  c.search_radius = row.value(bench_key::kSearchRadius, 0),
+  c.batch = row.value(bench_key::kBatch, 0);
+  c.threads = row.value(bench_key::kThreads, 0),
+  c.base_threads = base.value(bench_key::kThreads, 0);
   const std::vector<double> a = process_medians(base), b = process_medians(row);
   c.base_samples = sample_count(base), c.samples = sample_count(row);
   c.base_processes = static_cast<int>(a.size()), c.processes = static_cast<int>(b.size());
-  c.base_median_ns = base["median_ns_per_frame"].get<double>();
-  c.median_ns = row["median_ns_per_frame"].get<double>();
+  c.base_median_ns = base[bench_key::kMedianNs].get<double>();
+  c.median_ns = row[bench_key::kMedianNs].get<double>();
   std::string inconclusive;
   // An exact clock counts the same cycles every run: any difference is the change itself.
-  if (row.value("exact_clock", false) && base.value("exact_clock", false)) {
+  if (row.value(bench_key::kExactClock, false) && base.value(bench_key::kExactClock, false)) {
     c.ratio = c.ratio_ci_low = c.ratio_ci_high = c.median_ns / c.base_median_ns;
   } else {
     const RatioInterval r = ratio_interval95(a, b);
@@ -158,9 +164,10 @@ CompareRow compare_rows(const BenchFile& base_file, const BenchFile& file, const
 std::string row_name(const std::string& label, const Json& r) {
   char b[200];
   std::snprintf(b, sizeof b, "%s: %s %s batch=%d %dx%d S=%d threads=%d (%s)", label.c_str(),
-                str(r, "backend").c_str(), str(r, "sweep").c_str(), r.value("batch", 0),
-                r.value("width", 0), r.value("height", 0), r.value("search_radius", 0),
-                r.value("threads", 0), str(r, "source").c_str());
+                str(r, bench_key::kBackend).c_str(), str(r, bench_key::kSweep).c_str(),
+                r.value(bench_key::kBatch, 0), r.value(bench_key::kWidth, 0),
+                r.value(bench_key::kHeight, 0), r.value(bench_key::kSearchRadius, 0),
+                r.value(bench_key::kThreads, 0), str(r, bench_key::kSource).c_str());
   return b;
 }
 
@@ -172,9 +179,9 @@ void list_missing(const BenchFile& base, const BenchFile& f, bool across,
   std::map<RowKey, std::string> in_f;  // every row of f: its note when not measured
   for (const Json& r : f.bench["rows"])
     if (!in_f.contains(row_key(r, across)) || measured(r))
-      in_f[row_key(r, across)] = measured(r)              ? ""
-                                 : str(r, "note").empty() ? "none"
-                                                          : str(r, "note");
+      in_f[row_key(r, across)] = measured(r)                        ? ""
+                                 : str(r, bench_key::kNote).empty() ? "none"
+                                                                    : str(r, bench_key::kNote);
   std::set<RowKey> listed;
   for (const Json& r : base.bench["rows"]) {
     const RowKey key = row_key(r, across);
@@ -186,12 +193,6 @@ void list_missing(const BenchFile& base, const BenchFile& f, bool across,
     out.push_back(row_name(f.label, r) + ": measured in " + base.label + " only" +
                   (note.empty() ? "" : " (" + f.label + "'s note: " + note + ")"));
   }
-}
-
-std::string fixed(const char* format, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
 }
 
 template <auto M>
@@ -215,22 +216,22 @@ constexpr ResultField<CompareRow> bounded_field(const char* key) {
 // In compare.csv's column order; compare.json's row objects have the same keys.
 constexpr std::array kCompareRowFields{
     member_field<&CompareRow::file>("file"),
-    member_field<&CompareRow::backend>("backend"),
-    member_field<&CompareRow::sweep>("sweep"),
-    member_field<&CompareRow::setting>("profile"),
-    member_field<&CompareRow::width>("width"),
-    member_field<&CompareRow::height>("height"),
-    member_field<&CompareRow::search_radius>("search_radius"),
-    member_field<&CompareRow::batch>("batch"),
-    member_field<&CompareRow::threads>("threads"),
+    member_field<&CompareRow::backend>(bench_key::kBackend),
+    member_field<&CompareRow::sweep>(bench_key::kSweep),
+    member_field<&CompareRow::setting>(bench_key::kProfile),
+    member_field<&CompareRow::width>(bench_key::kWidth),
+    member_field<&CompareRow::height>(bench_key::kHeight),
+    member_field<&CompareRow::search_radius>(bench_key::kSearchRadius),
+    member_field<&CompareRow::batch>(bench_key::kBatch),
+    member_field<&CompareRow::threads>(bench_key::kThreads),
     member_field<&CompareRow::base_threads>("baseline_threads"),
-    member_field<&CompareRow::source>("source"),
+    member_field<&CompareRow::source>(bench_key::kSource),
     member_field<&CompareRow::base_samples>("baseline_samples"),
     member_field<&CompareRow::samples>("samples"),
     member_field<&CompareRow::base_processes>("baseline_processes"),
-    member_field<&CompareRow::processes>("processes"),
+    member_field<&CompareRow::processes>(bench_key::kProcesses),
     member_field<&CompareRow::base_median_ns>("baseline_median_ns_per_frame"),
-    member_field<&CompareRow::median_ns>("median_ns_per_frame"),
+    member_field<&CompareRow::median_ns>(bench_key::kMedianNs),
     member_field<&CompareRow::ratio>("ratio"),
     bounded_field<&CompareRow::ratio_ci_low>("ratio_ci_low"),
     bounded_field<&CompareRow::ratio_ci_high>("ratio_ci_high"),
@@ -251,10 +252,11 @@ void check_bench_file(const std::string& path, const Json& j) {
     throw InputError(path + ": not a bench file (expected the output of pxflow bench --json)");
   try {
     for (const Json& r : j["rows"]) {
-      (void)r.at("backend").get<std::string>(), (void)r.at("sweep").get<std::string>();
-      (void)r.at("source").get<std::string>(), (void)r.at("batch").get<int>();
-      if (measured(r) && r.contains("samples_ns_per_frame"))
-        (void)r["samples_ns_per_frame"].get<std::vector<double>>();
+      (void)r.at(bench_key::kBackend).get<std::string>(),
+          (void)r.at(bench_key::kSweep).get<std::string>();
+      (void)r.at(bench_key::kSource).get<std::string>(), (void)r.at(bench_key::kBatch).get<int>();
+      if (measured(r) && r.contains(bench_key::kSamples))
+        (void)r[bench_key::kSamples].get<std::vector<double>>();
       if (measured(r))
         for (double m : process_medians(r))
           if (!(m > 0 && std::isfinite(m)))
@@ -383,8 +385,8 @@ std::string comparison_csv(const BenchComparison& c) {
 }
 
 std::string ratio_text(const CompareRow& r) {
-  return fixed("%.3f", r.ratio) + " [" + fixed("%.3f", r.ratio_ci_low) + ", " +
-         (std::isfinite(r.ratio_ci_high) ? fixed("%.3f", r.ratio_ci_high) : "inf") + "]";
+  return formatted("%.3f", r.ratio) + " [" + formatted("%.3f", r.ratio_ci_low) + ", " +
+         (std::isfinite(r.ratio_ci_high) ? formatted("%.3f", r.ratio_ci_high) : "inf") + "]";
 }
 
 std::string point_text(const CompareRow& r) {
@@ -405,9 +407,10 @@ void print_comparison(const BenchComparison& c, std::ostream& out) {
   for (const CompareRow& r : c.rows) {
     const std::string gate = r.gate + (r.why.empty() ? "" : ": " + r.why);
     std::snprintf(line, sizeof line, format, r.file.c_str(), r.backend.c_str(),
-                  point_text(r).c_str(), r.source.c_str(), fixed("%.1f", r.base_median_ns).c_str(),
-                  fixed("%.1f", r.median_ns).c_str(), ratio_text(r).c_str(),
-                  r.p_value < 0 ? "exact" : fixed("%.4f", r.p_value).c_str(), r.verdict.c_str(),
+                  point_text(r).c_str(), r.source.c_str(),
+                  formatted("%.1f", r.base_median_ns).c_str(),
+                  formatted("%.1f", r.median_ns).c_str(), ratio_text(r).c_str(),
+                  r.p_value < 0 ? "exact" : formatted("%.4f", r.p_value).c_str(), r.verdict.c_str(),
                   c.fail_above >= 0 ? gate.c_str() : r.why.c_str());
     out << line;
   }

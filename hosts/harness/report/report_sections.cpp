@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <span>
 
 #include "check.hpp"
 #include "counted.hpp"
@@ -147,6 +148,54 @@ std::string stopped_bench_note(const Json& bench) {
   return stopped.empty() ? "" : " **Incomplete: " + stopped + "; the rows are those it measured.**";
 }
 
+// The headline point: the batch sweep at 256 pairs, or the first point a host clock timed; null
+// when no row was timed by the host clock.
+const Json* headline_row(const Json& bench) {
+  const Json* pick = nullptr;
+  for (const auto& r : bench["rows"])
+    if (timed(r) && host_clock(r) && r["sweep"] == "batch" && r["batch"] == 256) pick = &r;
+  for (const auto& r : bench["rows"])
+    if (!pick && timed(r) && host_clock(r)) pick = &r;
+  return pick;
+}
+
+// Exact-clock backends (the GAP8 model) are charted apart, by their own clock: each one's row at
+// the headline point, or at the largest batch of the same problem the bench simulated, in
+// registry order.
+std::vector<const Json*> exact_clock_rows(const Json& bench, const Json& pick) {
+  std::map<std::string, const Json*> model;
+  for (const Json* r : in_registry_order(bench["rows"]))
+    if (exact_clock(*r) && timed(*r) && same_problem(*r, pick) && (*r)["sweep"] == pick["sweep"]) {
+      const Json*& best = model[str(*r, "backend")];
+      if (!best || (*r)["batch"].get<int>() > (*best)["batch"].get<int>()) best = r;
+    }
+  std::vector<const Json*> rows;
+  for (const auto& [_, r] : model) rows.push_back(r);
+  std::stable_sort(rows.begin(), rows.end(), [](const Json* a, const Json* b) {
+    return registry_rank(str(*a, "backend")) < registry_rank(str(*b, "backend"));
+  });
+  return rows;
+}
+
+std::string throughput_text(const Json& bench, const std::string& cmd, const Json& pick,
+                            std::span<const Json* const> model_rows) {
+  std::string text =
+      "Median of repeated runs after a warm-up run whose records matched ref-original; a backend "
+      "with an exact clock (a deterministic cycle model) is timed by that clock from its one "
+      "checked "
+      "run and charted apart, never beside the host's figures. Speed-ups compare rows of the "
+      "same clock only. Command: `" +
+      cmd + "`.";
+  if (std::any_of(model_rows.begin(), model_rows.end(),
+                  [](const Json* r) { return counts_instructions(*r); }))
+    text += kInstructionNote;
+  if (bench_points(bench) > 1 && pick["sweep"] == "custom")
+    text += " This bench measured " + std::to_string(bench_points(bench)) +
+            " points of its own (bench --batch, --sizes, --radius, --thread-sweep): every one "
+            "is in \"The bench's points\" below.";
+  return text + bound_text(bench) + stopped_bench_note(bench);
+}
+
 }  // namespace
 
 Section throughput(const Json& bench, const std::string& cmd, const MachineTag& tag) {
@@ -158,12 +207,7 @@ Section throughput(const Json& bench, const std::string& cmd, const MachineTag& 
             {},
             {},
             {}};
-  // The headline point: the batch sweep at 256 pairs, or the first point a host clock timed.
-  const Json* pick = nullptr;
-  for (const auto& r : bench["rows"])
-    if (timed(r) && host_clock(r) && r["sweep"] == "batch" && r["batch"] == 256) pick = &r;
-  for (const auto& r : bench["rows"])
-    if (!pick && timed(r) && host_clock(r)) pick = &r;
+  const Json* pick = headline_row(bench);
   if (!pick) {
     s.text =
         "No row was timed by the host clock. Command: `" + cmd + "`." + stopped_bench_note(bench);
@@ -177,22 +221,13 @@ Section throughput(const Json& bench, const std::string& cmd, const MachineTag& 
              {},
              {},
              "frames/s"};
-  // Exact-clock backends (the GAP8 model) are charted apart, by their own clock: at the point,
-  // or at the largest batch of the same problem the bench simulated.
-  std::map<std::string, const Json*> model;
-  for (const Json* r : in_registry_order(bench["rows"])) {
+  for (const Json* r : in_registry_order(bench["rows"]))
     if (same_point(*r, *pick)) {
       s.rows.push_back(bench_cells(*r));
       if (timed(*r) && host_clock(*r))
         host.bars.push_back({str(*r, "backend") + tag.series, (*r)["frames_per_s"].get<double>(),
                              style_of(str(*r, "backend"))});
     }
-    if (exact_clock(*r) && timed(*r) && same_problem(*r, *pick) &&
-        (*r)["sweep"] == (*pick)["sweep"]) {
-      const Json*& best = model[str(*r, "backend")];
-      if (!best || (*r)["batch"].get<int>() > (*best)["batch"].get<int>()) best = r;
-    }
-  }
   Chart sim{"Frames per second by the exact model clock, not the host (" + str(*pick, "profile") +
                 ", " + std::to_string(pick->value("width", 0)) + "x" +
                 std::to_string(pick->value("height", 0)) + ")" + tag.title,
@@ -201,11 +236,7 @@ Section throughput(const Json& bench, const std::string& cmd, const MachineTag& 
             {},
             {},
             "frames/s"};
-  std::vector<const Json*> model_rows;
-  for (const auto& [_, r] : model) model_rows.push_back(r);
-  std::stable_sort(model_rows.begin(), model_rows.end(), [](const Json* a, const Json* b) {
-    return registry_rank(str(*a, "backend")) < registry_rank(str(*b, "backend"));
-  });
+  const std::vector<const Json*> model_rows = exact_clock_rows(bench, *pick);
   for (const Json* r : model_rows) {
     if (!same_point(*r, *pick)) s.rows.push_back(bench_cells(*r));
     if (counts_instructions(*r)) continue;
@@ -213,21 +244,7 @@ Section throughput(const Json& bench, const std::string& cmd, const MachineTag& 
                             ")" + tag.series,
                         (*r)["frames_per_s"].get<double>(), style_of(str(*r, "backend"))});
   }
-  s.text =
-      "Median of repeated runs after a warm-up run whose records matched ref-original; a backend "
-      "with an exact clock (a deterministic cycle model) is timed by that clock from its one "
-      "checked "
-      "run and charted apart, never beside the host's figures. Speed-ups compare rows of the "
-      "same clock only. Command: `" +
-      cmd + "`.";
-  if (std::any_of(model_rows.begin(), model_rows.end(),
-                  [](const Json* r) { return counts_instructions(*r); }))
-    s.text += kInstructionNote;
-  if (bench_points(bench) > 1 && (*pick)["sweep"] == "custom")
-    s.text += " This bench measured " + std::to_string(bench_points(bench)) +
-              " points of its own (bench --batch, --sizes, --radius, --thread-sweep): every one "
-              "is in \"The bench's points\" below.";
-  s.text += bound_text(bench) + stopped_bench_note(bench);
+  s.text = throughput_text(bench, cmd, *pick, model_rows);
   if (!host.bars.empty()) s.charts.push_back(host);
   if (!sim.bars.empty()) s.charts.push_back(sim);
   return s;

@@ -224,9 +224,13 @@ CheckCase fuzz_case(const std::string& setting, const Params& p, std::uint64_t f
   return c;
 }
 
-std::vector<CheckCase> build_check_corpus(const CorpusOptions& o,
-                                          std::vector<std::string>* dropped) {
-  std::vector<CheckCase> cases;
+namespace {
+
+using RealPairs = std::vector<std::pair<std::string, std::pair<Frame, Frame>>>;
+
+// At each setting: random pairs, the hostile patterns and the two threshold cases.
+void add_generated_cases(const CorpusOptions& o, std::vector<CheckCase>& cases,
+                         std::vector<std::string>* dropped) {
   const auto settings = check_settings(o.params, dropped);
   for (const auto& [setting, p] : settings) {
     const int w = p.width;
@@ -243,10 +247,10 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o,
     vtc.pairs.push_back(std::move(vt_pair));
     cases.push_back(std::move(vtc));
   }
-  if (!o.real) return cases;
-  const std::size_t generated = cases.size();
+}
 
-  const auto reals = real_pairs(o);
+// The real frames binned as the camera does (at both profiles), and each at full size.
+void add_real_cases(const RealPairs& reals, std::vector<CheckCase>& cases) {
   CheckCase binned64{
       "real/camera-64x64", std::string(kDefaultProfile), profile(kDefaultProfile), {}};
   CheckCase binned_head{"real/camera-64x64", "px4flow-head", profile("px4flow-head"), {}};
@@ -269,15 +273,15 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o,
   }
   cases.push_back(std::move(binned64));
   cases.push_back(std::move(binned_head));
+}
 
-  // Known motion with OpenCV on the camera-like 64x64 frame and on a 320x240 window.
-  const Frame src = reals.front().second.first;
+// Known motion with OpenCV on the camera-like 64x64 frame and on a 320x240 window of `src`.
+void add_synthetic_cases(const Frame& src, std::uint64_t seed, std::vector<CheckCase>& cases) {
   const Frame base64 = px4flow_camera(src), base320 = crop(src, 0, 0, 320, 240);
   CheckCase s64{"synthetic/64x64", std::string(kDefaultProfile), profile(kDefaultProfile), {}};
   CheckCase s64h{"synthetic/64x64", "px4flow-head", profile("px4flow-head"), {}};
   const auto [window_setting, window_params] = check_settings()[2];  // 320x240 S=7 B=16
   CheckCase s320{"synthetic/320x240", window_setting, window_params, {}};
-  std::uint64_t seed = o.seed;
   for (const Motion& m : kMotions) {
     s64.pairs.push_back(owned(std::string("synthetic/") + m.name + "/seed=" + std::to_string(seed),
                               base64, moved(base64, m, seed)));
@@ -289,22 +293,42 @@ std::vector<CheckCase> build_check_corpus(const CorpusOptions& o,
   cases.push_back(std::move(s64));
   cases.push_back(std::move(s64h));
   cases.push_back(std::move(s320));
-  if (o.params.empty()) return cases;
-  // The real and synthetic pairs do not depend on the parameters: their cases are overridden
-  // once made (the generated ones were made at the overridden settings).
+}
+
+// The real and synthetic pairs do not depend on the parameters: their cases (those from
+// `generated` on) are overridden once made (the generated ones were made at the overridden
+// settings); a case the override does not fit is left out and named in `dropped`.
+std::vector<CheckCase> override_frame_cases(std::vector<CheckCase> cases, std::size_t generated,
+                                            const ParamOverride& params,
+                                            std::vector<std::string>* dropped) {
   std::vector<CheckCase> kept(std::make_move_iterator(cases.begin()),
                               std::make_move_iterator(cases.begin() + generated));
   for (auto c = cases.begin() + generated; c != cases.end(); ++c) {
     std::string why;
-    if (const auto q = o.params.apply(c->params, &why)) {
+    if (const auto q = params.apply(c->params, &why)) {
       c->params = *q;
-      c->setting += o.params.options();
+      c->setting += params.options();
       kept.push_back(std::move(*c));
     } else if (dropped) {
       dropped->push_back(c->name + " " + c->setting + ": " + why);
     }
   }
   return kept;
+}
+
+}  // namespace
+
+std::vector<CheckCase> build_check_corpus(const CorpusOptions& o,
+                                          std::vector<std::string>* dropped) {
+  std::vector<CheckCase> cases;
+  add_generated_cases(o, cases, dropped);
+  if (!o.real) return cases;
+  const std::size_t generated = cases.size();
+  const RealPairs reals = real_pairs(o);
+  add_real_cases(reals, cases);
+  add_synthetic_cases(reals.front().second.first, o.seed, cases);
+  if (o.params.empty()) return cases;
+  return override_frame_cases(std::move(cases), generated, o.params, dropped);
 }
 
 }  // namespace pxflow

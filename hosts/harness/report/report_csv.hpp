@@ -3,7 +3,6 @@
 // columns are their field tables' (bench_row_fields(), backend_outcome_fields()).
 #pragma once
 #include <string>
-#include <vector>
 
 #include "result_json.hpp"
 
@@ -14,8 +13,5 @@ namespace pxflow {
 std::string bench_csv(const Json& bench);
 std::string conformance_csv(const Json& check);
 std::string accuracy_csv(const Json& accuracy_rows);
-
-// The columns `cols` of each object of the array `rows`, in its order (pxflow compare's file).
-std::string csv_table(const std::vector<std::string>& cols, const Json& rows);
 
 }  // namespace pxflow
