@@ -37,6 +37,7 @@ constexpr std::array kBenchRowFields{
     member_field<&BenchRow::threads>("threads"),
     newer_field<&BenchRow::threads_requested>("threads_requested"),
     newer_field<&BenchRow::device>("device"),
+    newer_field<&BenchRow::timed_build>("timed_build"),
     newer_field<&BenchRow::params>("params", false),
     member_field<&BenchRow::source>("source"),
     member_field<&BenchRow::exact_clock>("exact_clock"),
