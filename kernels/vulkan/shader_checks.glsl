@@ -5,8 +5,8 @@
 // Two builds (kernels/vulkan/CMakeLists.txt): with PXFLOW_SHADER_CHECKS defined, the checked
 // shader below, which `pxflow check`, `flow` and bench's check run; without it, the production
 // shader at the end of this file (plain accesses, no poison, no binding 2), which bench times and
-// `check` runs beside the checked one (hosts/vulkan/vulkan_backend.hpp, VulkanShaders). The checks
-// cost a quarter of the time (docs/vulkan.md, "Benchmark").
+// `check` runs beside the checked one (hosts/vulkan/vulkan_backend.hpp, VulkanShaders). What the
+// checks cost: docs/vulkan.md, "Benchmark".
 
 const uint kPrev = 0u;
 const uint kNext = 1u;
