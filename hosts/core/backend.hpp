@@ -38,6 +38,15 @@ class Backend {
   // counts such a case "n/a" for this backend.
   virtual std::string unsupported(const Params&) const { return {}; }
 
+  // For a backend that checks itself with code it does not time (vulkan: flow.comp built with
+  // and without its shader checks): `timed` false, from create() on, makes run() run the checked
+  // code (check, flow, bench's check); true, the code bench times. Returns what the timed code
+  // is ("production shader"), or "" when the backend times the code it checks.
+  virtual std::string select_timed(bool timed) {
+    (void)timed;
+    return {};
+  }
+
   // The duration of the last run() by the backend's own clock (OpenCL event profiling, Vulkan
   // timestamps, the GAP8 model's cycles), when it has one. The benchmark reports it beside the
   // host clock and never compares figures of different sources.

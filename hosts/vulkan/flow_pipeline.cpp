@@ -6,9 +6,6 @@
 
 #include "vk_error.hpp"
 
-// Generated at build time from kernels/vulkan/flow.comp (kernels/vulkan/CMakeLists.txt).
-#include "flow_spv.h"
-
 namespace pxflow::vk {
 namespace {
 
@@ -19,7 +16,8 @@ constexpr std::uint32_t kPreferredLocalSize = 64;
 // Binding 0, the frames: a uniform texel buffer (R32_UINT), because lavapipe turns a texel fetch
 // with per-invocation addresses into one vector gather, but a storage-buffer read into a
 // per-lane, bounds-checked scalar loop (docs/vulkan.md). Binding 1, the records, and binding 2,
-// the shader faults (kernels/vulkan/shader_checks.glsl): storage buffers.
+// the shader faults (kernels/vulkan/shader_checks.glsl): storage buffers. Both builds of flow.comp
+// share this layout: the production build declares no binding 2, which Vulkan allows.
 constexpr VkDescriptorType kBindingTypes[] = {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
                                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
@@ -35,7 +33,7 @@ FlowPipeline::FlowPipeline(const Context& ctx, int search_radius,
                           limits.maxComputeWorkGroupInvocations});
   try {
     create_layouts();
-    create_pipeline(spirv.empty() ? std::span<const std::uint32_t>(k_flow_spirv) : spirv);
+    create_pipeline(spirv);
     create_descriptor_set();
   } catch (...) {
     release();

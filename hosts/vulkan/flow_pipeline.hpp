@@ -31,9 +31,9 @@ struct FlowPushConstants {
 
 class FlowPipeline {
  public:
-  // `spirv`: the shader's code; empty = the built-in kernels/vulkan/flow.comp. Throws
-  // BackendError.
-  FlowPipeline(const Context& ctx, int search_radius, std::span<const std::uint32_t> spirv = {});
+  // `spirv`: the shader's code, a build of kernels/vulkan/flow.comp (shader_builds.hpp) or a
+  // test's copy with its interface. Throws BackendError.
+  FlowPipeline(const Context& ctx, int search_radius, std::span<const std::uint32_t> spirv);
   ~FlowPipeline();
   FlowPipeline(const FlowPipeline&) = delete;
   FlowPipeline& operator=(const FlowPipeline&) = delete;
@@ -43,8 +43,8 @@ class FlowPipeline {
 
   // Points the descriptor set at the buffers (frames through a texel buffer view made here; the
   // records from `records_offset`, past the guard before them, to the buffer's end; the
-  // shader faults, kernels/vulkan/shader_checks.glsl); call when they change, never while
-  // in use.
+  // shader faults, kernels/vulkan/shader_checks.glsl, which the production build leaves unused);
+  // call when they change, never while in use.
   void bind_buffers(VkBuffer frames, VkBuffer records, VkDeviceSize records_offset,
                     VkBuffer faults);
 

@@ -14,6 +14,7 @@
 #include "grid.hpp"
 #include "guard_zone.hpp"
 #include "host_buffer.hpp"
+#include "shader_builds.hpp"
 #include "vk_error.hpp"
 
 namespace pxflow {
@@ -79,9 +80,12 @@ void barrier_to_host(VkCommandBuffer cmd) {
 
 }  // namespace
 
-VulkanBackend::VulkanBackend(const VulkanConfig& config) : config_(config) {
+VulkanBackend::VulkanBackend(const VulkanConfig& config)
+    : config_(config), shaders_(config.shaders) {
   ctx_ = std::make_unique<vk::Context>(vk::ContextOptions{config.device, config.validation});
-  pipeline_for(profile(kDefaultProfile).search_radius);  // a broken pipeline fails create() early
+  // A broken pipeline fails create() early.
+  for (const VulkanShaders build : {VulkanShaders::checked, VulkanShaders::production})
+    pipeline_for(build, profile(kDefaultProfile).search_radius);
   runner_ = std::make_unique<vk::CommandRunner>(*ctx_);
   fail_on_validation_messages();
 }
@@ -139,21 +143,43 @@ std::string VulkanBackend::unsupported(const Params& p) const {
          " bytes in one storage buffer; the Vulkan device allows " + std::to_string(buffer_limit());
 }
 
+std::string VulkanBackend::select_timed(bool timed) {
+  shaders_ = timed ? VulkanShaders::production : config_.shaders;
+  return vk::shader_name(VulkanShaders::production);
+}
+
 void VulkanBackend::run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
                         OpCounts&) {
   last_device_seconds_.reset();
-  last_chunks_ = 0;
-  last_dispatches_ = 0;
   runner_->ensure_usable();
   if (const std::string why = unsupported(p); !why.empty()) vk::fail(why);
+  if (shaders_ != VulkanShaders::both) {
+    const auto ns = run_shader(shaders_, pairs, p, out);
+    if (ns) last_device_seconds_ = *ns * 1e-9;
+    return;
+  }
+  const auto checked_ns = run_shader(VulkanShaders::checked, pairs, p, out);
+  std::vector<PoiRecord> production(out.size());
+  const auto production_ns = run_shader(VulkanShaders::production, pairs, p, production);
+  if (std::memcmp(out.data(), production.data(), out.size_bytes()) != 0)
+    vk::fail(vk::shaders_disagree(pairs, p, out, production));
+  if (checked_ns && production_ns) last_device_seconds_ = (*checked_ns + *production_ns) * 1e-9;
+}
+
+std::optional<double> VulkanBackend::run_shader(VulkanShaders build,
+                                                std::span<const FramePair> pairs, const Params& p,
+                                                std::span<PoiRecord> out) {
+  last_chunks_ = 0;
+  last_dispatches_ = 0;
   const vk::BatchLayout layout = vk::batch_layout(p);
   const std::size_t per_chunk =
       vk::pairs_per_chunk(layout, {buffer_limit(), config_.max_chunk_work});
+  vk::FlowPipeline& pipeline = pipeline_for(build, p.search_radius);
   double device_ns = 0;
   bool timed = true;
   for (std::size_t start = 0; start < pairs.size(); start += per_chunk) {
     const std::size_t n = std::min(per_chunk, pairs.size() - start);
-    run_chunk(pairs.subspan(start, n), p,
+    run_chunk(pipeline, pairs.subspan(start, n), p,
               out.subspan(start * layout.pois_per_pair, n * layout.pois_per_pair));
     const auto ns = runner_->last_device_ns();
     timed = timed && ns.has_value();
@@ -161,12 +187,18 @@ void VulkanBackend::run(std::span<const FramePair> pairs, const Params& p, std::
     ++last_chunks_;
   }
   fail_on_validation_messages();
-  if (timed && last_chunks_ > 0) last_device_seconds_ = device_ns * 1e-9;
+  if (!timed || last_chunks_ == 0) return std::nullopt;
+  return device_ns;
 }
 
-vk::FlowPipeline& VulkanBackend::pipeline_for(int search_radius) {
-  auto& slot = pipelines_[search_radius];
-  if (!slot) slot = std::make_unique<vk::FlowPipeline>(*ctx_, search_radius, config_.shader_spirv);
+vk::FlowPipeline& VulkanBackend::pipeline_for(VulkanShaders build, int search_radius) {
+  auto& slot = pipelines_[{build, search_radius}];
+  if (slot) return *slot;
+  const auto& custom =
+      build == VulkanShaders::checked ? config_.checked_spirv : config_.production_spirv;
+  slot = std::make_unique<vk::FlowPipeline>(
+      *ctx_, search_radius,
+      custom.empty() ? vk::built_in_spirv(build) : std::span<const std::uint32_t>(custom));
   return *slot;
 }
 
@@ -183,8 +215,8 @@ void VulkanBackend::ensure_buffers(std::uint64_t frame_bytes, std::uint64_t reco
   records_ = std::make_unique<vk::HostBuffer>(*ctx_, guarded);
 }
 
-void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
-                              std::span<PoiRecord> out) {
+void VulkanBackend::run_chunk(vk::FlowPipeline& pipeline, std::span<const FramePair> pairs,
+                              const Params& p, std::span<PoiRecord> out) {
   const vk::BatchLayout layout = vk::batch_layout(p);
   const std::size_t overrun_pairs =
       (config_.overrun_items + layout.pois_per_pair - 1) / layout.pois_per_pair;
@@ -194,7 +226,6 @@ void VulkanBackend::run_chunk(std::span<const FramePair> pairs, const Params& p,
     pack_frame(pairs[n].prev, prev, layout.words_per_frame);
     pack_frame(pairs[n].next, prev + layout.pair_bytes / 2, layout.words_per_frame);
   }
-  vk::FlowPipeline& pipeline = pipeline_for(p.search_radius);
   // No submission is pending here.
   pipeline.bind_buffers(frames_->buffer(), records_->buffer(), records_front_, faults_->buffer());
   ShaderFaults faults{};

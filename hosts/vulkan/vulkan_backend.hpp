@@ -20,6 +20,16 @@ class CommandRunner;
 class HostBuffer;
 }  // namespace vk
 
+// Which builds of kernels/vulkan/flow.comp run() runs (kernels/vulkan/shader_checks.glsl).
+enum class VulkanShaders {
+  checked,     // with the shader checks: a fault fails the run
+  production,  // without them: what `pxflow bench` times
+  // The checked build, then the production build on the same pairs: the records are the checked
+  // shader's, and the production shader's must equal them, or the run fails naming the one that
+  // differs from ref-original (pxflow check, flow and bench's check).
+  both,
+};
+
 struct VulkanConfig {
   std::string device;       // index or name substring (BackendOptions::device); empty = preferred
   bool validation = false;  // Khronos validation layer on; any message fails the run
@@ -32,9 +42,11 @@ struct VulkanConfig {
   // Tests only: dispatch this many items past the output (with frames for them), a planted
   // overrun the guard after the records must catch.
   std::uint32_t overrun_items = 0;
-  // Tests only: SPIR-V to run instead of the built-in flow.comp, with the same interface (a
-  // planted fault, tests/vulkan/CMakeLists.txt).
-  std::vector<std::uint32_t> shader_spirv;
+  // What run() runs until Backend::select_timed() says otherwise.
+  VulkanShaders shaders = VulkanShaders::both;
+  // Tests only: SPIR-V to run instead of the built-in checked or production build of flow.comp,
+  // with the same interface (a planted fault, tests/vulkan/CMakeLists.txt).
+  std::vector<std::uint32_t> checked_spirv, production_spirv;
 };
 
 class VulkanBackend final : public Backend {
@@ -47,13 +59,16 @@ class VulkanBackend final : public Backend {
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
            OpCounts& counts) override;
   std::string unsupported(const Params& p) const override;
+  // false: config.shaders; true: the production shader alone (what `pxflow bench` times).
+  std::string select_timed(bool timed) override;
 
-  // Device time of the last run(), summed over its chunks (timestamp queries), in seconds;
+  // Device time of the last run(), summed over its chunks of every shader it ran (timestamp
+  // queries), in seconds;
   // empty when the queue has no timestamps or no run completed.
   std::optional<double> last_device_seconds() const { return last_device_seconds_; }
   // The same as Backend::DeviceTime, source "vulkan-timestamps", for the benchmark.
   std::optional<DeviceTime> last_device_time() const override;
-  // Chunks (submissions) and dispatches the last run() used.
+  // Chunks (submissions) and dispatches of each shader's pass over the last run()'s pairs.
   std::size_t last_chunks() const { return last_chunks_; }
   std::size_t last_dispatches() const { return last_dispatches_; }
   std::string device_name() const;
@@ -64,22 +79,28 @@ class VulkanBackend final : public Backend {
 
  private:
   std::uint64_t buffer_limit() const;
-  vk::FlowPipeline& pipeline_for(int search_radius);
+  vk::FlowPipeline& pipeline_for(VulkanShaders build, int search_radius);
   void ensure_buffers(std::uint64_t frame_bytes, std::uint64_t record_bytes);
-  void run_chunk(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out);
+  // One build's pass over the pairs, chunk by chunk; returns its device nanoseconds, if timed.
+  std::optional<double> run_shader(VulkanShaders build, std::span<const FramePair> pairs,
+                                   const Params& p, std::span<PoiRecord> out);
+  void run_chunk(vk::FlowPipeline& pipeline, std::span<const FramePair> pairs, const Params& p,
+                 std::span<PoiRecord> out);
   void fail_on_validation_messages() const;
 
   VulkanConfig config_;
+  VulkanShaders shaders_;  // what run() runs now
   std::unique_ptr<vk::Context> ctx_;
-  std::map<int, std::unique_ptr<vk::FlowPipeline>> pipelines_;  // by search radius
+  // By build (checked or production) and search radius.
+  std::map<std::pair<VulkanShaders, int>, std::unique_ptr<vk::FlowPipeline>> pipelines_;
   std::unique_ptr<vk::CommandRunner> runner_;
   std::unique_ptr<vk::HostBuffer> frames_;
   // The records between guard zones (hosts/core/guard_zone.hpp): records_front_ bytes of guard
   // (the device's storage buffer offset alignment), the records, kGuardBytes of guard.
   std::unique_ptr<vk::HostBuffer> records_;
   std::uint64_t records_front_ = 0;
-  // Binding 2 of flow.comp: its shader faults (kernels/vulkan/shader_checks.glsl), cleared
-  // before each chunk and checked after it.
+  // Binding 2 of the checked flow.comp: its shader faults (kernels/vulkan/shader_checks.glsl),
+  // cleared before each chunk and checked after it (the production build leaves it unused).
   std::unique_ptr<vk::HostBuffer> faults_;
   std::optional<double> last_device_seconds_;
   std::size_t last_chunks_ = 0;

@@ -43,8 +43,8 @@ layout(push_constant) uniform Problem {
 }
 pc;
 
-// Binding 2 and the shader's checks of itself: AT(array, index) for every dynamic private-array
-// index, FRAME_WORD(frame, word) for every frame read, POISON(array) for every private array.
+// The shader's checks of itself, on in the checked build only: AT(array, index) for every dynamic
+// private-array index, FRAME_WORD(frame, word) for every frame read, POISON(array) for each array.
 #include "shader_checks.glsl"
 
 // The 4 pixels starting at byte sh / 8 of the 8-byte little-endian string lo, hi (sh = 0, 8, 16

@@ -2,6 +2,24 @@
 // that the mutation tool (tests/mutation/targets.py) mutates the kernel, never its checker.
 // Included after the frame binding (`frame_texels`) and the push constants (`pc`).
 //
+// Two builds (kernels/vulkan/CMakeLists.txt): with PXFLOW_SHADER_CHECKS defined, the checked
+// shader below, which `pxflow check`, `flow` and bench's check run; without it, the production
+// shader at the end of this file (plain accesses, no poison, no binding 2), which bench times and
+// `check` runs beside the checked one (hosts/vulkan/vulkan_backend.hpp, VulkanShaders). What the
+// checks cost: docs/vulkan.md, "Benchmark".
+
+const uint kPrev = 0u;
+const uint kNext = 1u;
+
+// Where this invocation's prev (frame = kPrev) or next (kNext) starts: pair p's prev at word
+// 2*p*words_per_frame of the chunk, its next right after (hosts/vulkan/vulkan_backend.cpp).
+uint frame_base(uint frame) {
+  uint pair = (pc.first_item + gl_GlobalInvocationID.x) / pc.pois_per_pair;
+  return (2u * pair + frame) * pc.words_per_frame;
+}
+
+#ifdef PXFLOW_SHADER_CHECKS
+
 // Why: a GPU gives no fault for an index past a private array, for a read past the frame it was
 // meant to read, or for a private value read before it was written. Lavapipe reads some other
 // value (0, or another pair's pixels), a GPU may do anything, and no sanitizer sees shader code,
@@ -51,19 +69,13 @@ int checked_index(int index, int length, int line) {
 
 #define AT(array, index) array[checked_index(int(index), array.length(), __LINE__)]
 
-const uint kPrev = 0u;
-const uint kNext = 1u;
-
-// Word `word` of this invocation's prev (frame = kPrev) or next (kNext): pair p's prev starts at
-// word 2*p*words_per_frame of the chunk, its next right after (hosts/vulkan/vulkan_backend.cpp).
 uint checked_frame_word(uint frame, uint word, int line) {
-  uint pair = (pc.first_item + gl_GlobalInvocationID.x) / pc.pois_per_pair;
   bool inside = word < pc.words_per_frame;
   note_fault(inside, kFaultFrameRead, line);
-  uint base = (2u * pair + frame) * pc.words_per_frame;
-  return texelFetch(frame_texels, int(base + (inside ? word : 0u))).x;
+  return texelFetch(frame_texels, int(frame_base(frame) + (inside ? word : 0u))).x;
 }
 
+// Word `word` of this invocation's prev (kPrev) or next (kNext), counted from the frame's start.
 #define FRAME_WORD(frame, word) checked_frame_word(frame, word, __LINE__)
 
 // A value no correct kernel reads: the 8-bit lanes are above every pixel, and as a sum it is far
@@ -78,3 +90,13 @@ void report_shader_faults() {
   atomicCompSwap(faults.first_fault, 0u, fault);
   atomicAdd(faults.invocations, 1u);
 }
+
+#else  // the production shader: the same accesses, unchecked, and nothing to report
+
+#define AT(array, index) array[index]
+#define FRAME_WORD(frame, word) texelFetch(frame_texels, int(frame_base(frame) + (word))).x
+#define POISON(array)
+
+void report_shader_faults() {}
+
+#endif

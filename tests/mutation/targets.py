@@ -34,6 +34,7 @@ class Family:
 
 GAP8_ELVES = tuple(f"kernels/gap8/pxflow_gap8_{v}.elf" for v in ("original", "local", "global", "fast"))
 REF_OBJECTS = ("reference/CMakeFiles/pxflow_reference.dir/*.o",)
+VULKAN_BUILDS = tuple(f"kernels/vulkan/generated/{b}.spv" for b in ("flow", "flow_checked"))
 # tests/conformance: the reference and CPU rows on the whole default corpus, one test per row (a
 # ctest -R regex; ref-original runs in each as the reference).
 CPU_ROWS_UNDER_ASAN = ("sanitizer", r"conformance\.(ref-local|ref-global|swar|sse2|sse41|avx2|avx512bw|cpu)")
@@ -58,8 +59,8 @@ FAMILIES = {
         # tests/opencl/CMakeLists.txt: both OpenCL rows under Oclgrind, in the Release stage.
         Family("opencl", "opencl", ("pxflow",), (),
                memory_test=("release", "opencl_memcheck_oclgrind")),
-        Family("vulkan", "vulkan", ("kernels/vulkan/generated/flow.spv",),
-               ("kernels/vulkan/generated/flow.spv",)),
+        # Both builds of flow.comp (kernels/vulkan/CMakeLists.txt): pxflow check runs both.
+        Family("vulkan", "vulkan", VULKAN_BUILDS, VULKAN_BUILDS),
         Family("gap8", "gap8", GAP8_ELVES, GAP8_ELVES),
         Family("cortex-m4", "m4qemu", M4_ELF, M4_ELF),
         # tests/dut/CMakeLists.txt: the dut reference device on the whole default corpus.

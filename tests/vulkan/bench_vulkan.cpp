@@ -77,12 +77,14 @@ ReferenceAnswer cycled(const ReferenceAnswer& distinct, std::size_t batch, std::
 }
 
 // Checks the first run against ref-original through the shared exactness checker (the first
-// mismatch line goes to stderr), then repeats for `min_time`.
+// mismatch line goes to stderr), then repeats for `min_time` the code the backend times
+// (Backend::select_timed: vulkan's production shader) after one warm-up run of it.
 Timing measure(const std::string& who, Backend& b, const std::vector<FramePair>& views,
                const Params& p, const ReferenceAnswer& distinct, double min_time, bool& exact) {
   const std::size_t per = poi_count(p);
   std::vector<PoiRecord> out = sentinel_records(views.size() * per);
   OpCounts counts;
+  b.select_timed(false);
   b.run(views, p, out, counts);
   std::vector<std::string> names;
   for (std::size_t n = 0; n < views.size(); ++n)
@@ -91,6 +93,8 @@ Timing measure(const std::string& who, Backend& b, const std::vector<FramePair>&
                                               p, cycled(distinct, views.size(), per), out, 1);
   exact = c.ok();
   if (!exact) std::fprintf(stderr, "%s", c.text().c_str());
+  b.select_timed(true);
+  b.run(views, p, out, counts);
   int runs = 0;
   const double w0 = now(CLOCK_MONOTONIC), c0 = now(CLOCK_PROCESS_CPUTIME_ID);
   do {

@@ -28,6 +28,15 @@ TEST_CASE("vulkan: corpus at px4flow-64 is bit-exact with ref-original", "[vulka
   expect_exact(*vk, real_pairs(64, 64), p);
 }
 
+TEST_CASE("vulkan: the production build alone, as bench times it, is bit-exact", "[vulkan]") {
+  // make_vulkan()'s run() runs both builds (VulkanShaders::both), as every other case here does.
+  auto vk = make_vulkan();
+  vk->select_timed(true);
+  const Params p = make_params("px4flow-64", 64, 64);
+  corpus_at(*vk, p, 100);
+  expect_exact(*vk, real_pairs(64, 64), p);
+}
+
 TEST_CASE("vulkan: corpus at px4flow-head is bit-exact with ref-original", "[vulkan]") {
   auto vk = make_vulkan();
   const Params p = make_params("px4flow-head", 64, 64);

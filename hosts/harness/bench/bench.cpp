@@ -141,13 +141,19 @@ class Bench {
     const SimulatedBatch sim = simulated_batch(row.name, pt);
     if (!sim.not_run.empty()) return note(base, sim.not_run, report);
     base.batch = sim.batch;
-    const std::optional<double> first = checked_run(*b, pt, in, expected, sim.batch, base, report);
-    if (!first) return;
+    b->select_timed(false);
+    const std::optional<double> checked =
+        checked_run(*b, pt, in, expected, sim.batch, base, report);
+    if (!checked) return;
     if (const auto d = b->last_device_time(); d && d->exact)
-      return emit_exact_clock(*d, *first, sim, base, report);
-    if (*first > o_.max_run_seconds)
-      return note(base, "not timed: one run takes " + std::to_string(*first) + " s", report);
-    emit_samples(repeat_runs(*b, pt, in, *first), base, report);
+      return emit_exact_clock(*d, *checked, sim, base, report);
+    // A backend that times other code than it checked (Backend::select_timed): one run of that
+    // code, as warm-up, measures a run instead.
+    base.timed_build = b->select_timed(true);
+    const double first = base.timed_build.empty() ? *checked : one_run(*b, pt, in);
+    if (first > o_.max_run_seconds)
+      return note(base, "not timed: one run takes " + std::to_string(first) + " s", report);
+    emit_samples(repeat_runs(*b, pt, in, first), base, report);
   }
 
  private:
@@ -209,6 +215,15 @@ class Bench {
       return std::nullopt;
     }
     return first;
+  }
+
+  // The seconds of one run of the batch (its records unchecked).
+  static double one_run(Backend& b, const BenchPoint& pt, const Inputs& in) {
+    std::vector<PoiRecord> got(poi_count(pt.params) * static_cast<std::size_t>(pt.batch));
+    OpCounts counts;
+    const auto w0 = std::chrono::steady_clock::now();
+    b.run(in.batch_for(0), pt.params, got, counts);
+    return seconds_since(w0);
   }
 
   // Timed by its exact clock from the checked run; the host's time is simulation speed.
@@ -377,6 +392,7 @@ class Bench {
 
   void emit(BenchRow r, BenchReport& report) {
     derive(r, report);
+    if (!r.timed_build.empty()) add_note(r, "timed: " + r.timed_build);
     if (r.noisy) add_note(r, kNoisyNote);
     out_ << bench_row_line(r, name_width_) << "\n" << std::flush;
     report.rows.push_back(r);

@@ -71,6 +71,9 @@ struct BenchRow {
   Json params = Json::object();
   int threads_requested = 0;
   std::string device;
+  // What was timed where the backend checks other code than it times (Backend::select_timed):
+  // "production shader"; empty where it times the code it checked.
+  std::string timed_build;
   // The unit of replication is a process (docs/harness.md, "Statistics"): the row's samples come
   // from `processes` processes, `samples_per_process` of them each, and its median and interval
   // are those of the processes' own medians. One process: the samples' median and interval.

@@ -37,6 +37,7 @@ constexpr std::array kBenchRowFields{
     member_field<&BenchRow::threads>(bench_key::kThreads),
     newer_field<&BenchRow::threads_requested>(bench_key::kThreadsRequested),
     newer_field<&BenchRow::device>(bench_key::kDevice),
+    newer_field<&BenchRow::timed_build>("timed_build"),
     newer_field<&BenchRow::params>(bench_key::kParams, false),
     member_field<&BenchRow::source>(bench_key::kSource),
     member_field<&BenchRow::exact_clock>(bench_key::kExactClock),
