@@ -346,7 +346,8 @@ Command add_check_command(CommandSpec& app) {
            "docs/harness.md, Isolation)")
       .type("SECONDS")
       .real_in(0.001, 1e6);
-  // Hidden: the worker mode of the check's own worker processes (hosts/harness/check/check_worker.hpp).
+  // Hidden: the worker mode of the check's own worker processes
+  // (hosts/harness/check/check_worker.hpp).
   sub->add(worker::kWorkerOption, &a->worker_row).unlisted();
   add_threads_option(*sub, a->backend_options.threads);
   add_device_option(*sub, a->backend_options.device);

@@ -2,6 +2,7 @@
 // through the binary (and the chart helpers directly, for their ticks and styles).
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -276,6 +277,16 @@ TEST_CASE("chart axes are labelled at 1-2-5 ticks, whole numbers where asked", "
   CHECK(axis_ticks(0, 8, false, true) == std::vector<double>{0, 2, 4, 6, 8});
   CHECK(axis_ticks(1, 2, false, true) == std::vector<double>{1, 2});  // threads: no 1.5
   CHECK(axis_range(1300, 140000, true) == std::pair<double, double>{1000, 200000});
+  // A zero on a log axis (a row whose value is 0) once looped without end, filling memory:
+  // the ticks are the linear ones; values no axis can show give one tick.
+  CHECK(axis_ticks(0, 10, true) == std::vector<double>{0, 2, 4, 6, 8, 10});
+  CHECK(axis_ticks(1e300, -1e300, true).size() == 1);
+  CHECK(axis_ticks(-INFINITY, INFINITY, false).size() == 1);
+  // A chart whose log axes hold a 0 draws them linear: every coordinate a number.
+  Chart chart{"zero", {"x", true}, {"y", true}, {{"row", {{0, 0}, {4, 2}}, {}}}, {}, ""};
+  CHECK(svg_chart(chart).find("nan") == std::string::npos);
+  chart = Chart{"zero", {"x", true}, {"y", true}, {}, {{"row", 0, {}}, {"other", 3, {}}}, "op/s"};
+  CHECK(svg_chart(chart).find("nan") == std::string::npos);
 }
 
 TEST_CASE("report: options that would do nothing, and unknown backends, are refused", "[report]") {

@@ -115,7 +115,18 @@ struct Scale {
   }
 };
 
-std::string bar_chart(const Chart& c) {
+// `chart` with each log axis whose values include one a log scale cannot place (0 or less)
+// drawn linear instead.
+Chart drawable(const Chart& chart) {
+  Chart c = chart;
+  for (const Bar& b : c.bars) c.x.log = c.x.log && b.value > 0;
+  for (const auto& se : c.series)
+    for (auto [x, y] : se.points) c.x.log = c.x.log && x > 0, c.y.log = c.y.log && y > 0;
+  return c;
+}
+
+std::string bar_chart(const Chart& chart) {
+  const Chart c = drawable(chart);
   const int left = room_for(
                        c.bars, [](const Bar& b) { return b.label; }, 184) -
                    34;
@@ -146,7 +157,8 @@ std::string bar_chart(const Chart& c) {
   return s + "</svg>";
 }
 
-std::string line_chart(const Chart& c) {
+std::string line_chart(const Chart& chart) {
+  const Chart c = drawable(chart);
   const int left = 70, top = 40, w = 540, h = 300;
   const int legend = room_for(
       c.series, [](const Series& se) { return se.name; }, 190);
@@ -221,8 +233,10 @@ std::pair<double, double> axis_range(double lo, double hi, bool log, bool intege
 
 std::vector<double> axis_ticks(double lo, double hi, bool log, bool integer) {
   std::vector<double> ticks;
-  if (!(hi > lo)) return {lo};
-  if (log) {
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo)) return {lo};
+  // A log axis needs lo > 0 (its decades start at 10^floor(log10(lo))): a zero or negative
+  // value, which a log scale cannot place, gets the linear ticks instead of an endless loop.
+  if (log && lo > 0) {
     const bool fine = std::log10(hi / lo) <= 3.01;
     for (double decade = std::pow(10, std::floor(std::log10(lo))); decade <= hi * (1 + 1e-9);
          decade *= 10)

@@ -23,13 +23,13 @@ ChartStyle reference_style();
 
 struct Series {
   std::string name;
-  std::vector<std::pair<double, double>> points;  // (x, y); y > 0 on a log axis
+  std::vector<std::pair<double, double>> points;  // (x, y); a 0 or less makes its log axis linear
   ChartStyle style;
 };
 
 struct Bar {
   std::string label;
-  double value = 0;  // > 0
+  double value = 0;  // a 0 or less makes the log axis linear
   ChartStyle style;
 };
 
