@@ -5,7 +5,7 @@
   gen_xpulp.py TABLE --runtime-header H   writes H: each instruction's opcode, funct3 and funct7
                                          for the RISC-V programs' runtime/xpulp.h, and beside it
                                          xpulp_functions.h, its C function wrappers
-  gen_xpulp.py TABLE --docs-table        prints the Markdown table of docs/gap8-model.md
+  gen_xpulp.py TABLE --docs-table        prints the Markdown table of docs/gap8-xpulp-table.md
   gen_xpulp.py TABLE --check-docs DOC    exit 1 when DOC's table differs from the table
 
 Refuses (exit 2, one line) a table whose rows overlap, repeat a mnemonic, or disagree on an

@@ -86,11 +86,11 @@ TEST_CASE("TCDM contention: one bank shared by 8 cores stalls, own banks do not"
   CHECK(same.result.cycles > off.result.cycles);
 }
 
-// Exact values recorded with the model (first before its host-speed work, docs/gap8-model.md
-// "Host speed"; recorded again after the timing rework of issue 14, which changed the fork, the
-// barrier and instruction fetch): they pin the bank arbiter, its round-robin pointers and the
-// scheduler, including cycles in which some cores collide on a bank while others access their
-// own. They are the model's outputs, not values derived from a source.
+// Exact values recorded with the model (first before its host-speed work,
+// docs/measurements/gap8-model-host-speed.md; recorded again after the timing rework of issue
+// 14, which changed the fork, the barrier and instruction fetch): they pin the bank arbiter, its
+// round-robin pointers and the scheduler, including cycles in which some cores collide on a bank
+// while others access their own. They are the model's outputs, not values derived from a source.
 TEST_CASE("TCDM arbitration: exact per-core stalls and cycles of the contention program") {
   struct Expected {
     uint32_t mode;
