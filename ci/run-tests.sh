@@ -47,7 +47,7 @@ cross_from=""
 [ "$built" = 1 ] && cross_from=$root/build
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # -O1 -g1 (ASan's advice: line tables name every frame of a report) compiles in half the time of
-# -O2 -g (docs/harness.md, "The test suite's time").
+# -O2 -g (docs/test-suite.md, "The test suite's time").
 stage "ASan+UBSan" "$root/build-sanitize" "-LE no-sanitizer" "label no-sanitizer" \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPXFLOW_SANITIZE=ON -DPXFLOW_WERROR=OFF "-DPXFLOW_CROSS_FROM=$cross_from" \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"

@@ -2,7 +2,7 @@
 # The Release suite under stress: CTest at twice the core count while a CPU hog keeps every core
 # busy, RUNS times in a row (default 3); it passes only when every run passes. Not part of
 # .ci/run: a check that the tests hold on a loaded machine (slow is not hung), with its times in
-# docs/harness.md ("The suite under stress").
+# docs/test-suite.md ("The suite under stress").
 #
 #   bash ci/stress-tests.sh [RUNS [BUILD_DIR]]
 #

@@ -90,8 +90,8 @@ endfunction()
 # The cross-compiled outputs (GAP8 ELFs, the Cortex-M4 firmware, the AArch64 NEON check) do not
 # depend on the host's build type or sanitizers: a build may copy them from another build folder
 # of the same sources instead of compiling them again (ci/run-tests.sh: the sanitizer stage takes
-# the Release stage's, about 75 CPU seconds; docs/harness.md, "The test suite's time"). Build that
-# folder first: a missing file stops the build naming it.
+# the Release stage's, about 75 CPU seconds; docs/test-suite.md, "The test suite's time").
+# Build that folder first: a missing file stops the build naming it.
 set(PXFLOW_CROSS_FROM "" CACHE PATH
     "Build folder of the same sources whose cross-compiled outputs this build copies")
 if(PXFLOW_CROSS_FROM AND NOT EXISTS ${PXFLOW_CROSS_FROM}/CMakeCache.txt)

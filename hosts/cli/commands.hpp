@@ -20,15 +20,15 @@ struct Command {
   // the Examples of its --help and man page (help_sections.hpp).
   std::vector<std::string> examples{};
   // Cheap runs of the command (each under a second or two) for the generated file-and-signal
-  // matrix (tests/cli/file_matrix.py, docs/harness.md "The file-and-signal matrix, generated from
-  // the option table"): argument lists after "pxflow CMD" with placeholders for inputs the matrix
-  // makes ({PREV} {NEXT}: PNG frames; {RAW}: raw 64x64 frames back to back; {PAIRS}: a list of
-  // pairs; {CHECK}: a check file of one shard; {BENCH}: a bench file; {DATA}: a copy of the
-  // sample data; {VECTORS}, {RECORDS}: vectors).
-  // The matrix adds each output option to the first run that accepts it. `long_runs` take
-  // seconds, for stopping mid-work: their outputs are {OUT}.ext (the previous file stays, or a
-  // whole new one) or {KEPT}.ext (the work finished before a stop is kept, marked incomplete).
-  // A command with a path option and no run fails the matrix.
+  // matrix (tests/cli/file_matrix.py, docs/files-and-signals.md "The file-and-signal matrix,
+  // generated from the option table"): argument lists after "pxflow CMD" with placeholders for
+  // inputs the matrix makes ({PREV} {NEXT}: PNG frames; {RAW}: raw 64x64 frames back to back;
+  // {PAIRS}: a list of pairs; {CHECK}: a check file of one shard; {BENCH}: a bench file; {DATA}: a
+  // copy of the sample data; {VECTORS}, {RECORDS}: vectors). The matrix adds each output option to
+  // the first run that accepts it. `long_runs` take seconds, for stopping mid-work: their outputs
+  // are {OUT}.ext (the previous file stays, or a whole new one) or {KEPT}.ext (the work finished
+  // before a stop is kept, marked incomplete). A command with a path option and no run fails the
+  // matrix.
   std::vector<std::string> matrix_runs{};
   std::vector<std::string> long_runs{};
 };

@@ -1,5 +1,6 @@
 // pxflow merge: the results files of a campaign's shards (pxflow check --shard K/M --json F)
-// combined into one verdict and one check file (docs/harness.md, "Campaigns over a CI matrix").
+// combined into one verdict and one check file (docs/ci-campaigns.md, "Campaigns over a CI
+// matrix").
 #include <iostream>
 
 #include "check_merge.hpp"

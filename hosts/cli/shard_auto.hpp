@@ -1,5 +1,5 @@
 // `pxflow check --shard auto`: K and M from the variables the CI engine running the check sets
-// for each job of a matrix, so that one job definition serves every shard (docs/harness.md,
+// for each job of a matrix, so that one job definition serves every shard (docs/ci-campaigns.md,
 // "Campaigns over a CI matrix").
 #pragma once
 #include <functional>

@@ -1,6 +1,6 @@
-/* pxdut-vector-port: a device that searches like a vector port (docs/harness.md, "Every row at its
- * own edges"), with the bugs real vector ports have, for the test that the corpus catches each at
- * every vector length. `pxdut-vector-port LANES row|flat BUG`:
+/* pxdut-vector-port: a device that searches like a vector port (docs/check-corpus.md, "Every row
+ * at its own edges"), with the bugs real vector ports have, for the test that the corpus catches
+ * each at every vector length. `pxdut-vector-port LANES row|flat BUG`:
  *   LANES  candidates per vector (8, 16, 32 u16 lanes of 128, 256, 512 bits; 128 at 2048 bits)
  *   row    each row of the window (2S+1 candidates dx) searched in chunks of LANES; flat: the
  *          whole window, (2S+1)^2 candidates in raster order, in chunks (an SVE port's svcnth())

@@ -1,6 +1,6 @@
 #!/bin/sh
-# The corpus against vector ports' bugs (docs/harness.md, "Every row at its own edges"): a device
-# that searches in chunks of L candidates (tests/dut/pxdut_vector_port.c) is checked alone,
+# The corpus against vector ports' bugs (docs/check-corpus.md, "Every row at its own edges"): a
+# device that searches in chunks of L candidates (tests/dut/pxdut_vector_port.c) is checked alone,
 # `pxflow check --backends ref-original,port`, the default fixed corpus. A correct port must pass at
 # every L; each bug must fail at every L: the chunk base dropped, the tail mask one lane too long
 # and too short, the half-pixel lanes swapped. Chunks over a window row at L = 8, 16, 32, 64, and

@@ -12,7 +12,7 @@ work=$2
 rm -rf "$work"
 mkdir -p "$work"
 # -O1: the test proves what the build contains, not how fast it runs; -O1 compiles in about
-# half -O3's time (docs/harness.md, "The test suite's time"). ccache, when installed, comes from
+# half -O3's time (docs/test-suite.md, "The test suite's time"). ccache, when installed, comes from
 # the project's own settings (cmake/PxflowCcache.cmake: another clone hits the cache).
 common=(-S "$src" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-O1 -DCMAKE_C_FLAGS=-O1 -DBUILD_TESTING=OFF -DPXFLOW_WITH_ALL=OFF
         -DPXFLOW_WITH_DUMMY=ON -DPXFLOW_WITH_BROKEN=ON

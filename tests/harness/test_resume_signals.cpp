@@ -35,7 +35,7 @@ RunResult interrupted_when(const std::string& args, const std::string& out, cons
 }
 
 // A fuzz campaign long enough for a signal to land in its middle, sized for the build: under the
-// sanitizers a pair costs about five times as much (docs/harness.md, "The test suite's time"),
+// sanitizers a pair costs about five times as much (docs/test-suite.md, "The test suite's time"),
 // so a fifth of the pairs runs about as long. A fuzz case is a batch of 256 pairs.
 #ifdef __SANITIZE_ADDRESS__
 constexpr long kLongCampaignPairs = 4000;

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Mutation testing of the in-tree kernels against `pxflow check` (docs/harness.md).
+"""Mutation testing of the in-tree kernels against `pxflow check` (docs/mutation.md).
 
   mutate.py list --seed 2026 --per-family 40           the mutants a campaign would run
   mutate.py run --seed 2026 --per-family 40 --out DIR  apply, rebuild, check, report

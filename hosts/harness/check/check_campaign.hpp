@@ -3,7 +3,7 @@
 // of one run() call: the fixed corpus's cases, or a fuzz campaign's batches of 256 random pairs.
 // Shard K of M runs the contiguous cases [floor((K-1)C/M), floor(KC/M)) of the C cases, so the
 // M shards are disjoint, together they are the whole campaign, and each shard's failure lines
-// are the unsharded run's lines of those cases, in the same order (docs/harness.md).
+// are the unsharded run's lines of those cases, in the same order (docs/ci-campaigns.md).
 #pragma once
 #include <cstdint>
 #include <string>

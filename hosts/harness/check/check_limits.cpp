@@ -87,9 +87,10 @@ std::vector<LimitProbe> spec_corners() {
 // The row's own edges at the default profile: the largest square frame, the widest and tallest
 // strip at the smallest other side, the largest radius and grid (64x64) it accepts. The radius
 // is searched at the smallest frame S = 31 allows (one POI): lavapipe needs minutes for the 49
-// POIs of 128x128 at S = 31 (docs/harness.md). A row refusing that frame (m4-qemu: 4096 pixels)
-// is searched at the largest odd square up to it that it accepts, with one POI (B = 1): lavapipe
-// runs a 64x64 frame at S = 25 some 200 times slower than 63x63 or 73x73 (docs/harness.md).
+// POIs of 128x128 at S = 31 (docs/measurements/check-corpus.md). A row refusing that frame
+// (m4-qemu: 4096 pixels) is searched at the largest odd square up to it that it accepts, with one
+// POI (B = 1): lavapipe runs a 64x64 frame at S = 25 some 200 times slower than 63x63 or 73x73
+// (docs/measurements/check-corpus.md).
 void row_probes(const LimitRow& r, std::vector<LimitProbe>& out) {
   auto ok = [&](const Params& p) { return valid(p) && r.unsupported(p).empty(); };
   const Params d = profile(kDefaultProfile);

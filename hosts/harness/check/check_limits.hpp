@@ -1,4 +1,4 @@
-// The limit cases of the fixed corpus (docs/harness.md, "Every row at its own edges"): the
+// The limit cases of the fixed corpus (docs/check-corpus.md, "Every row at its own edges"): the
 // corners of what each selected backend declares it supports, found from its unsupported()
 // predicate, with a sweep of every search radius it accepts (check_radius_sweep.hpp), and the
 // corners of SPEC §1's ranges every backend must handle. A row's own edges are its cases alone

@@ -1,6 +1,6 @@
 // `pxflow merge`: the results of a campaign's shards (check --shard K/M) combined into the one
 // result the unsharded run would have given: the same totals, the same states, the same failure
-// lines in the same order (docs/harness.md, "Campaigns over a CI matrix").
+// lines in the same order (docs/ci-campaigns.md, "Campaigns over a CI matrix").
 #pragma once
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
-// The radius sweep of the limit cases (docs/harness.md, "Every row at its own edges"): for every
-// search radius S a row accepts, frames whose POIs each have their best candidate planted at a
-// chosen offset, so that over one S the best lands in every column of the window (every lane of
+// The radius sweep of the limit cases (docs/check-corpus.md, "Every row at its own edges"): for
+// every search radius S a row accepts, frames whose POIs each have their best candidate planted at
+// a chosen offset, so that over one S the best lands in every column of the window (every lane of
 // a search vectorised over dx, whatever its vector length), in every row, at both corners, and,
 // as decoys, one step outside the window (a search that reads one candidate too many finds a
 // perfect match there that the window does not hold).
@@ -29,7 +29,8 @@ std::vector<Offset> sweep_offsets(int S);
 // The frame of the sweep at radius S with g x g POIs (B = g): POIs 2S+10 apart, so that each
 // POI's planted block and decoys stay inside its own window and never touch a neighbour's; g = 1
 // is the smallest frame S allows. A side that is a multiple of 4 is made one larger (same grid):
-// lavapipe runs large radii on such widths some 200 times slower (docs/harness.md).
+// lavapipe runs large radii on such widths some 200 times slower
+// (docs/measurements/check-corpus.md).
 Params sweep_params(int S, int g);
 
 // A pair at `p` (a sweep_params frame): prev uniform noise, next independent noise with each POI's
