@@ -13,7 +13,8 @@ namespace {
 // stays bounded, and no single launch runs long enough to trip a GPU driver's watchdog.
 constexpr std::size_t kDefaultChunkBytes = std::size_t{256} << 20;
 constexpr std::size_t kMaxGroupsPerLaunch = std::size_t{1} << 20;
-constexpr std::size_t kDefaultGroupSize = 64;  // docs/opencl.md: measured against 16..256
+// Measured against 16..256: docs/measurements/opencl-kernel.md.
+constexpr std::size_t kDefaultGroupSize = 64;
 
 const char* kernel_name(OpenclLayout layout) {
   return layout == OpenclLayout::kGroupPerPoi ? "flow_group_per_poi" : "flow_item_per_poi";

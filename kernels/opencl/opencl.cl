@@ -45,7 +45,7 @@ inline uint lane_sum(ushort8 v) {
 }
 
 // |a - b| per lane. Not abs_diff(): PoCL 3.1 lowers abs_diff on uchar8 to scalar code, and the
-// search ran 7x slower with it (docs/opencl.md); max - min cannot wrap and is plain SIMD.
+// search ran 7x slower (docs/measurements/opencl-kernel.md); max - min cannot wrap: plain SIMD.
 inline ushort8 row_sad(uchar8 a, uchar8 b) { return convert_ushort8(max(a, b) - min(a, b)); }
 
 // SPEC sec. 3 step 1: 24 absolute differences over the central 4x4 of the block.
