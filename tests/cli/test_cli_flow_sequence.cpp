@@ -10,6 +10,7 @@
 #include <opencv2/videoio.hpp>
 #include <sstream>
 
+#include "build_paths.hpp"
 #include "flow_report.hpp"
 #include "frame_ops.hpp"
 #include "run_program.hpp"
@@ -116,8 +117,8 @@ TEST_CASE("folder, glob, raw stdin and a list file give the same pairs", "[cli][
   CHECK(objects(run_pxflow({"flow", "--size", size, "--jsonl", "-", dir.path("f-*.raw")})) ==
         folder);
   const std::string cat = "cat " + frames[0] + " " + frames[1] + " " + frames[2] + " " + frames[3];
-  const auto piped = run_program(
-      "/bin/sh", {"-c", cat + " | " + PXFLOW_BINARY + " flow --size " + size + " --jsonl - -"});
+  const auto piped = run_program("/bin/sh", {"-c", cat + " | " + build_paths::pxflow +
+                                                       " flow --size " + size + " --jsonl - -"});
   CHECK(objects(piped) == folder);
   CHECK(json::parse(lines_of(piped.out)[1])["inputs"]["prev"] == "-#1");
   dir.write("pairs.txt", "# prev next\nf-000.raw f-001.raw\n\nf-001.raw f-002.raw\n");
@@ -125,9 +126,9 @@ TEST_CASE("folder, glob, raw stdin and a list file give the same pairs", "[cli][
       run_pxflow({"flow", "--size", size, "--jsonl", "-", "--pairs", dir.path("pairs.txt")}));
   CHECK(listed == std::vector<std::string>(folder.begin(), folder.begin() + 2));
   // A partial last frame on stdin is one line, exit 2.
-  const auto partial = run_program(
-      "/bin/sh",
-      {"-c", "head -c 5000 " + frames[0] + " | " + PXFLOW_BINARY + " flow --size " + size + " -"});
+  const auto partial =
+      run_program("/bin/sh", {"-c", "head -c 5000 " + frames[0] + " | " + build_paths::pxflow +
+                                        " flow --size " + size + " -"});
   CHECK(partial.exit_code == 2);
   CHECK(partial.err.find("ends in a partial frame") != std::string::npos);
 }
@@ -288,13 +289,13 @@ TEST_CASE("commands that decode nothing run without the OpenCV module", "[cli][s
   TempDir dir;
   dir.write("a.bin", std::string(64 * 64, '\x40'));
   const std::string env = "PXFLOW_OPENCV_MODULE=" + dir.path("missing/libpxflow_opencv.so");
-  const auto raw = run_program("/usr/bin/env", {env, PXFLOW_BINARY, "flow", "--size", "64x64",
+  const auto raw = run_program("/usr/bin/env", {env, build_paths::pxflow, "flow", "--size", "64x64",
                                                 dir.path("a.bin"), dir.path("a.bin")});
   CHECK(raw.exit_code == 0);
-  CHECK(run_program("/usr/bin/env", {env, PXFLOW_BINARY, "--version"}).exit_code == 0);
+  CHECK(run_program("/usr/bin/env", {env, build_paths::pxflow, "--version"}).exit_code == 0);
   const auto png = run_program(
       "/usr/bin/env",
-      {env, PXFLOW_BINARY, "flow", kData + "/rubberwhale1.png", kData + "/rubberwhale2.png"});
+      {env, build_paths::pxflow, "flow", kData + "/rubberwhale1.png", kData + "/rubberwhale2.png"});
   CHECK(png.exit_code == 2);
   CHECK(png.err_lines() == 1);
   CHECK(png.err.find("the OpenCV module, needed to decode images and video, is missing") !=
@@ -302,8 +303,9 @@ TEST_CASE("commands that decode nothing run without the OpenCV module", "[cli][s
   CHECK(png.err.find(dir.path("missing/libpxflow_opencv.so")) != std::string::npos);
   // Not a module at all: also one line, naming the file.
   dir.write("fake.so", "not an ELF file");
-  const auto fake = run_program("/usr/bin/env", {"PXFLOW_OPENCV_MODULE=" + dir.path("fake.so"),
-                                                 PXFLOW_BINARY, "flow", kData + "/vtest.avi"});
+  const auto fake =
+      run_program("/usr/bin/env", {"PXFLOW_OPENCV_MODULE=" + dir.path("fake.so"),
+                                   build_paths::pxflow, "flow", kData + "/vtest.avi"});
   CHECK(fake.exit_code == 2);
   CHECK(fake.err_lines() == 1);
   CHECK(fake.err.find("fake.so cannot be loaded") != std::string::npos);

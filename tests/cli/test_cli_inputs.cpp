@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "bad_input.hpp"
+#include "build_paths.hpp"
 #include "run_program.hpp"
 #include "synthetic.hpp"
 
@@ -54,7 +55,7 @@ json estimate(const std::string& out) {
 
 TEST_CASE("a pipe is an input like the file it carries", "[cli][inputs]") {
   Frames f;
-  const std::string pxflow = shell_quoted(PXFLOW_BINARY);
+  const std::string pxflow = shell_quoted(build_paths::pxflow);
   const auto files = run_pxflow({"flow", "--size", "32x32", "--json", "-", f.a, f.b});
   REQUIRE(files.exit_code == 0);
 
@@ -100,8 +101,8 @@ TEST_CASE("a device that never ends is refused, not read", "[cli][inputs]") {
   require_bad_input({"flow", "--size", "32x32", "--jsonl", "-", "/dev/urandom"},
                     "/dev/urandom: is a character device");
   // A pipe longer than one raw frame is refused once it holds more, not read to its end.
-  const auto endless = bash(shell_quoted(PXFLOW_BINARY) + " flow --size 32x32 <(cat /dev/zero) " +
-                            shell_quoted(f.b));
+  const auto endless = bash(shell_quoted(build_paths::pxflow) +
+                            " flow --size 32x32 <(cat /dev/zero) " + shell_quoted(f.b));
   CHECK(endless.exit_code == 2);
   CHECK(endless.err.find("holds more than 1024 bytes, but --size 32x32 needs 1024") !=
         std::string::npos);

@@ -9,6 +9,7 @@
 #include <chrono>
 
 #include "bad_input.hpp"
+#include "build_paths.hpp"
 #include "results_files.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
@@ -41,8 +42,8 @@ TEST_CASE("an output path that is one of the inputs is refused before any work",
 
 TEST_CASE("a failed write is an error: stdout and files", "[cli][lost]") {
   const auto to_full =
-      test::run_program("/bin/sh", {"-c", std::string(PXFLOW_BINARY) + " flow --json - " + kPrev +
-                                              " " + kNext + " > /dev/full"});
+      test::run_program("/bin/sh", {"-c", std::string(build_paths::pxflow) + " flow --json - " +
+                                              kPrev + " " + kNext + " > /dev/full"});
   CHECK(to_full.exit_code == 1);
   CHECK(to_full.err.find("cannot write to standard output") != std::string::npos);
   const auto check = run_pxflow(
@@ -154,7 +155,7 @@ TEST_CASE("SIGINT and SIGTERM stop a run soon, exit 130 and 143, --json keeps wh
     // run took to stop after the signal, in ms.
     const std::string err = dir.path("err.txt");
     const std::string script =
-        std::string("'") + PXFLOW_BINARY +
+        std::string("'") + build_paths::pxflow +
         "' check --backends ref-original,ref-local --cases 100000000 --progress --json '" + json +
         "' >/dev/null 2>'" + err + "' & p=$!; n=0; until grep -q 'pairs' '" + err +
         "' || [ $n -ge 600 ]; do sleep 0.1; n=$((n+1)); done; t0=$(date +%s%N); kill -" + sig +
@@ -182,7 +183,7 @@ TEST_CASE("an interrupted run's stdout comes out before the interrupted line", "
   test::TempDir dir;
   const std::string both = dir.path("both.txt");
   const std::string script =
-      std::string("'") + PXFLOW_BINARY +
+      std::string("'") + build_paths::pxflow +
       "' check --backends ref-original,ref-local --cases 100000000 --progress >'" + both +
       "' 2>&1 & p=$!; n=0; until grep -q 'pairs' '" + both +
       "' || [ $n -ge 600 ]; do sleep 0.1; n=$((n+1)); done; kill -INT $p; wait $p; echo rc=$?";

@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include "bad_input.hpp"
+#include "build_paths.hpp"
 #include "results_files.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
@@ -25,7 +26,7 @@ const std::string kData = kSampleDataDir;
 std::string quoted(const std::vector<std::string>& args) {
   // Not "'" + std::string(...): GCC 12 warns on that one (-Wrestrict, a false positive, GCC
   // bug 105329).
-  std::string s = std::string("'") + PXFLOW_BINARY + "'";
+  std::string s = std::string("'") + build_paths::pxflow + "'";
   for (const std::string& a : args) s += " '" + a + "'";
   return s;
 }
@@ -38,7 +39,7 @@ test::RunResult interrupt_once_started(const std::vector<std::string>& args, con
                                        const std::string& err_file) {
   const std::string script =
       quoted(args) + " >/dev/null 2>'" + err_file +
-      "' & p=$!; n=0; until { [ \"$(readlink /proc/$p/exe)\" = '" + PXFLOW_BINARY +
+      "' & p=$!; n=0; until { [ \"$(readlink /proc/$p/exe)\" = '" + build_paths::pxflow +
       "' ] && [ $(( 0x$(awk '/^SigCgt/{print $2}' /proc/$p/status) & 2 )) -ne 0 ]; } "
       "|| [ $n -ge 3000 ]; do sleep 0.01; n=$((n+1)); done; kill -STOP $p; kill -" +
       sig + " $p; kill -CONT $p; wait $p; echo rc=$?; cat '" + err_file + "' >&2";

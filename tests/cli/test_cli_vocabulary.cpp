@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bad_input.hpp"
+#include "build_paths.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
 #include "shared_options.hpp"
@@ -166,7 +167,8 @@ TEST_CASE("a count of one is singular: 1 pair, 1 point, 1 case", "[cli]") {
 // every command that takes a shared option shows its one help text.
 TEST_CASE("readme_shared_options: the README's table is the code's, every --help says the same",
           "[cli][vocabulary]") {
-  const std::string readme = pxflow::test::slurp(PXFLOW_SOURCE_DIR "/README.md");
+  const std::string readme =
+      pxflow::test::slurp(std::string(build_paths::source_dir) + "/README.md");
   const std::string begin = "<!-- shared options: ", end = "<!-- end of shared options -->";
   const auto from = readme.find('\n', readme.find(begin)) + 1;
   REQUIRE(readme.find(begin) != std::string::npos);

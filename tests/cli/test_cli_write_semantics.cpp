@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "bad_input.hpp"
+#include "build_paths.hpp"
 #include "results_files.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
@@ -30,7 +31,7 @@ const std::string kNext = std::string(kSampleDataDir) + "/rubberwhale2.png";
 std::string sh_quoted(const std::string& s) { return std::string("'") + s + "'"; }
 
 std::string pxflow_line(const std::vector<std::string>& args) {
-  std::string s = sh_quoted(PXFLOW_BINARY);
+  std::string s = sh_quoted(build_paths::pxflow);
   for (const std::string& a : args) s += " " + sh_quoted(a);
   return s;
 }
@@ -42,7 +43,7 @@ test::RunResult sh(const std::string& script) {
 // Shell text that waits (at most 30 s) until the process $p is pxflow with its SIGINT handler in
 // place (a background job of sh starts with SIGINT ignored; pxflow's handler replaces that).
 const std::string kWaitForHandlers =
-    "n=0; until { [ \"$(readlink /proc/$p/exe)\" = " + sh_quoted(PXFLOW_BINARY) +
+    "n=0; until { [ \"$(readlink /proc/$p/exe)\" = " + sh_quoted(build_paths::pxflow) +
     " ] && [ $(( 0x$(awk '/^SigCgt/{print $2}' /proc/$p/status) & 2 )) -ne 0 ]; } "
     "|| [ $n -ge 3000 ]; do sleep 0.01; n=$((n+1)); done; ";
 

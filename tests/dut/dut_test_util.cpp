@@ -14,6 +14,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "build_paths.hpp"
+
 extern char** environ;
 
 namespace pxflow::test {
@@ -114,7 +116,7 @@ bool process_with_word(const std::string& word, pid_t except) {
 
 bool device_with_word(const std::string& word) {
   char pxflow[PATH_MAX];
-  const std::string self = realpath(PXFLOW_BINARY, pxflow) ? pxflow : PXFLOW_BINARY;
+  const std::string self = realpath(build_paths::pxflow, pxflow) ? pxflow : build_paths::pxflow;
   return process_with_word_where(word, -1,
                                  [&](const std::string& dir) { return exe_of(dir) != self; });
 }
@@ -126,7 +128,7 @@ bool process_ended(pid_t pid) {
 }
 
 pid_t spawn_quiet_pxflow(const std::vector<std::string>& args) {
-  return start_program(PXFLOW_BINARY, args, "/dev/null", "/dev/null");
+  return start_program(build_paths::pxflow, args, "/dev/null", "/dev/null");
 }
 
 }  // namespace pxflow::test

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "build_paths.hpp"
 #include "dut_session.hpp"
 #include "dut_test_util.hpp"
 #include "params.hpp"
@@ -19,7 +20,7 @@ std::vector<std::string> check_args(const std::string& spec, const std::string& 
 }  // namespace
 
 TEST_CASE("the reference device passes over exec: and the row is named by --dut", "[dut]") {
-  const auto t = timed_pxflow(check_args(std::string("d=exec:") + DUT_REF));
+  const auto t = timed_pxflow(check_args(std::string("d=exec:") + build_paths::dut_ref));
   INFO(t.r.out << t.r.err);
   CHECK(t.r.exit_code == 0);
   CHECK_THAT(t.r.out, Catch::Contains("d ") && Catch::Contains("passed"));
@@ -27,7 +28,7 @@ TEST_CASE("the reference device passes over exec: and the row is named by --dut"
 }
 
 TEST_CASE("the reference device passes over tcp: on loopback", "[dut]") {
-  BesideDevice dev({DUT_REF, "--tcp", "0"});
+  BesideDevice dev({build_paths::dut_ref, "--tcp", "0"});
   REQUIRE_FALSE(dev.first_line().empty());
   const auto t = timed_pxflow(check_args("d=tcp:127.0.0.1:" + dev.first_line()));
   INFO(t.r.out << t.r.err);
@@ -37,7 +38,7 @@ TEST_CASE("the reference device passes over tcp: on loopback", "[dut]") {
 }
 
 TEST_CASE("the reference device passes over serial: on a pseudo-terminal", "[dut]") {
-  BesideDevice dev({DUT_REF, "--pty"});
+  BesideDevice dev({build_paths::dut_ref, "--pty"});
   REQUIRE_THAT(dev.first_line(), Catch::StartsWith("/dev/"));
   const auto t = timed_pxflow(check_args("d=serial:" + dev.first_line() + ",115200"));
   INFO(t.r.out << t.r.err);
@@ -53,7 +54,7 @@ TEST_CASE("a device that keeps its last request passes a second run after one en
   // with the last one's seq for a resend (neither the rule's "same bytes" nor its "HELLO is
   // never a repeat") sends the stored ACK again, and the second run fails ("HELLO: answered
   // with ACK"; checked by hand with the engine's test cut down to the seq).
-  BesideDevice dev({DUT_REF, "--pty"});
+  BesideDevice dev({build_paths::dut_ref, "--pty"});
   REQUIRE_THAT(dev.first_line(), Catch::StartsWith("/dev/"));
   {
     pxflow::dut::Session first("first run", pxflow::dut::open_serial_link(dev.first_line(), 115200),
@@ -69,8 +70,9 @@ TEST_CASE("a device that keeps its last request passes a second run after one en
 }
 
 TEST_CASE("a 20 KiB device takes 64x64 pairs in chunks and says n/a to larger frames", "[dut]") {
-  const auto t = timed_pxflow({"check", "--dut", std::string("d=exec:") + DUT_SMALL, "--backends",
-                               "ref-original,d", "--require", "d", "--generated-only"});
+  const auto t =
+      timed_pxflow({"check", "--dut", std::string("d=exec:") + build_paths::dut_small, "--backends",
+                    "ref-original,d", "--require", "d", "--generated-only"});
   INFO(t.r.out << t.r.err);
   CHECK(t.r.exit_code == 0);
   // 8 generated cases at 64x64 and the 44 limit cases within HELLO's max_pixels 4096 passed
@@ -83,8 +85,8 @@ TEST_CASE(
     "a device built at the smallest packet size, 60-byte strings, passes with every reply fitting",
     "[dut]") {
   const auto t =
-      timed_pxflow({"check", "--dut", std::string("d=exec:") + DUT_MIN_PACKET, "--backends",
-                    "ref-original,d", "--require", "d", "--generated-only"});
+      timed_pxflow({"check", "--dut", std::string("d=exec:") + build_paths::dut_min_packet,
+                    "--backends", "ref-original,d", "--require", "d", "--generated-only"});
   INFO(t.r.out << t.r.err);
   CHECK(t.r.exit_code == 0);
   CHECK_THAT(t.r.out, Catch::Matches("(.|\n)*d +passed +52 +1128 +11 (.|\n)*"));
@@ -93,7 +95,7 @@ TEST_CASE(
 }
 
 TEST_CASE("pxflow backends lists a --dut row and says why it cannot run", "[dut][all-probes]") {
-  const auto ok = run_pxflow({"backends", "--dut", std::string("d=exec:") + DUT_REF});
+  const auto ok = run_pxflow({"backends", "--dut", std::string("d=exec:") + build_paths::dut_ref});
   CHECK(ok.exit_code == 0);
   CHECK_THAT(ok.out, Catch::Matches("(.|\n)*\nd +available (.|\n)*"));
   const auto missing = run_pxflow({"backends", "--dut", "d=exec:/nonexistent/device"});
@@ -120,9 +122,10 @@ TEST_CASE("a bad --dut spec is one line and exit 2", "[dut]") {
 
 TEST_CASE("a report names what a --dut row of the check file runs, bench or no bench", "[dut]") {
   TempDir dir;
-  REQUIRE(timed_pxflow({"check", "--dut", std::string("d=exec:") + DUT_REF, "--backends",
-                        "ref-original,d", "--generated-only", "--json", dir.path("c.json")})
-              .r.exit_code == 0);
+  REQUIRE(
+      timed_pxflow({"check", "--dut", std::string("d=exec:") + build_paths::dut_ref, "--backends",
+                    "ref-original,d", "--generated-only", "--json", dir.path("c.json")})
+          .r.exit_code == 0);
   REQUIRE(timed_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
                         "--json", dir.path("b.json")})
               .r.exit_code == 0);
@@ -143,29 +146,29 @@ TEST_CASE("a report of a --dut row records check and bench commands that rerun i
   TempDir dir;
   // A spec with a space (the device's argument), so that the recorded command must quote it; the
   // old name --dut-timeout is recorded as the option's name, --device-timeout.
-  const std::string spec = std::string("d=exec:") + DUT_FAULTY + " none";
+  const std::string spec = std::string("d=exec:") + build_paths::dut_faulty + " none";
   const auto t = timed_pxflow({"report", "--out", dir.path("r"), "--dut", spec, "--dut-timeout",
                                "7", "--backends", "ref-original,d", "--no-accuracy", "--quick"});
   INFO(t.r.out << t.r.err);
   REQUIRE(t.r.exit_code == 0);
   const auto results = nlohmann::json::parse(slurp(dir.path("r/results.json")));
   const std::string globals =
-      "pxflow --device-timeout 7 --dut 'd=exec:" + std::string(DUT_FAULTY) + " none' ";
+      "pxflow --device-timeout 7 --dut 'd=exec:" + std::string(build_paths::dut_faulty) + " none' ";
   const std::string check = results["commands"]["check"].get<std::string>();
   CHECK_THAT(check, Catch::StartsWith(globals + "check "));
   CHECK_THAT(results["commands"]["bench"].get<std::string>(),
              Catch::StartsWith(globals + "bench "));
   CHECK_THAT(slurp(dir.path("r/report.md")), Catch::Contains("Command: `" + check + "`"));
   // The recorded check, run by a shell as a reader would paste it, checks the device again.
-  const auto again =
-      run_program("/bin/sh", {"-c", std::string(PXFLOW_BINARY) + check.substr(6) + " --require d"});
+  const auto again = run_program(
+      "/bin/sh", {"-c", std::string(build_paths::pxflow) + check.substr(6) + " --require d"});
   INFO(again.out << again.err);
   CHECK(again.exit_code == 0);
   CHECK_THAT(again.out, Catch::Matches("(.|\n)*\nd +passed (.|\n)*"));
 }
 
 TEST_CASE("check --json records the --dut spec it ran with", "[dut]") {
-  const std::string spec = std::string("d=exec:") + DUT_FAULTY + " none";
+  const std::string spec = std::string("d=exec:") + build_paths::dut_faulty + " none";
   const auto r = run_pxflow(
       {"check", "--dut", spec, "--backends", "ref-original,d", "--generated-only", "--json", "-"});
   INFO(r.err);

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <thread>
 
+#include "build_paths.hpp"
 #include "dut_test_util.hpp"
 
 using namespace pxflow::test;
@@ -30,16 +31,17 @@ FaultRun run_fault(const std::string& mode, bool require = true, const std::stri
                    double timeout = kTimeout) {
   FaultRun f;
   f.word = unique_word();
-  std::vector<std::string> args = {"check",
-                                   "--dut",
-                                   std::string("f=exec:") + DUT_FAULTY + " " + mode + " " + f.word,
-                                   "--device-timeout",
-                                   std::to_string(timeout),
-                                   "--backends",
-                                   "ref-original,f",
-                                   "--cases",
-                                   cases,
-                                   "--no-repro"};  // no reproducer folder in the test's folder
+  std::vector<std::string> args = {
+      "check",
+      "--dut",
+      std::string("f=exec:") + build_paths::dut_faulty + " " + mode + " " + f.word,
+      "--device-timeout",
+      std::to_string(timeout),
+      "--backends",
+      "ref-original,f",
+      "--cases",
+      cases,
+      "--no-repro"};  // no reproducer folder in the test's folder
   if (require) args.insert(args.end(), {"--require", "f"});
   f.t = timed_pxflow(args);
   return f;
@@ -119,7 +121,8 @@ TEST_CASE("a dead device's line is given once, then repeated as it was", "[dut][
   // Dies in the first case's second pair; the fixed corpus's 7 other 64x64 cases follow.
   const std::string word = unique_word();
   const RunResult r =
-      timed_pxflow({"check", "--dut", std::string("f=exec:") + DUT_FAULTY + " exit 10 " + word,
+      timed_pxflow({"check", "--dut",
+                    std::string("f=exec:") + build_paths::dut_faulty + " exit 10 " + word,
                     "--backends", "ref-original,f", "--generated-only"})
           .r;
   INFO(r.out << r.err);
@@ -194,7 +197,8 @@ pid_t pxflow_waiting_on(const std::string& exec, const std::string& word) {
 
 TEST_CASE("Ctrl-C stops pxflow and its device at once", "[dut][faults]") {
   const std::string word = unique_word();
-  const pid_t pid = pxflow_waiting_on(std::string(DUT_FAULTY) + " late 600000 " + word, word);
+  const pid_t pid =
+      pxflow_waiting_on(std::string(build_paths::dut_faulty) + " late 600000 " + word, word);
   const auto t0 = std::chrono::steady_clock::now();
   kill(pid, SIGINT);
   int status = 0;
@@ -227,7 +231,7 @@ TEST_CASE("no device is left behind a wrapper when pxflow is killed with SIGKILL
             "wait\n");
   const std::string word = unique_word();
   const pid_t pid = pxflow_waiting_on("/bin/sh " + dir.path("wrapper.sh") + " " + dir.path(".") +
-                                          " " + DUT_FAULTY + " late 600000 " + word,
+                                          " " + build_paths::dut_faulty + " late 600000 " + word,
                                       word);
   std::vector<pid_t> started;
   for (const char* level : {"wrapper", "subshell", "device"}) {
@@ -253,7 +257,8 @@ TEST_CASE("no device is left behind a wrapper when pxflow is killed with SIGKILL
 TEST_CASE("a bench whose only row's records differ times nothing and exits 1", "[dut][faults]") {
   // The device answers its first run (the bench's check before timing) with a wrong field.
   const auto r = run_pxflow(
-      {"bench", "--dut", std::string("f=exec:") + DUT_FAULTY + " wrong-field 1 " + unique_word(),
+      {"bench", "--dut",
+       std::string("f=exec:") + build_paths::dut_faulty + " wrong-field 1 " + unique_word(),
        "--backends", "f", "--batch", "1", "--sizes", "64x64", "--min-time", "0"});
   INFO(r.out << r.err);
   CHECK(r.exit_code == 1);

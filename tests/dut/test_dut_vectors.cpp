@@ -7,6 +7,7 @@
 #include <regex>
 #include <set>
 
+#include "build_paths.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
 
@@ -48,7 +49,7 @@ TEST_CASE("the protocol page names every key of manifest.json", "[dut][vectors]"
   collect_keys(nlohmann::json::parse(slurp(d.path("manifest.json"))), written);
   written.insert("from");  // in place of `seed` with --from (the last test case)
   // Section 9's bullet on manifest.json: every `word` of lower-case letters and '_' is a key.
-  const std::string page = slurp(PROTOCOL_PAGE);
+  const std::string page = slurp(build_paths::protocol_page);
   const auto at = page.find("- `manifest.json`:");
   REQUIRE(at != std::string::npos);
   const std::string bullet = page.substr(at, page.find("\n- `", at + 1) - at);
@@ -129,7 +130,7 @@ TEST_CASE("the protocol page names every PXV_ macro of the C header", "[dut][vec
   };
   const std::set<std::string> defined =
       names(slurp(d.path("pxflow_vectors.h")), std::regex("#define (PXV_[A-Z]+) "));
-  const std::string page = slurp(PROTOCOL_PAGE);
+  const std::string page = slurp(build_paths::protocol_page);
   const auto at = page.find("## 9.");
   REQUIRE(at != std::string::npos);
   const std::string section = page.substr(at, page.find("\n## ", at + 1) - at);

@@ -1,7 +1,9 @@
 #include "program_runner.h"
 
+#include "build_paths.hpp"
+
 std::string ProgramPath(const std::string& name) {
-  return std::string(GAP8_PROGRAM_DIR) + "/" + name + ".elf";
+  return std::string(build_paths::gap8_program_dir) + "/" + name + ".elf";
 }
 
 std::string ProgramRun::Describe() const {

@@ -1,5 +1,5 @@
-// Runs one of the test programs (built by CMake into GAP8_PROGRAM_DIR) on a fresh cluster,
-// capturing what it prints.
+// Runs one of the test programs (built by CMake into build_paths::gap8_program_dir) on a fresh
+// cluster, capturing what it prints.
 #pragma once
 
 #include <functional>

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "build_paths.hpp"
 #include "gap8/decoded.h"
 #include "gap8/disasm.h"
 #include "run_program.hpp"
@@ -27,7 +28,7 @@ std::string WithoutComments(std::string operands) {
 
 Counts CompareWithObjdump(const std::string& elf) {
   const pxflow::test::RunResult dump =
-      pxflow::test::run_program(GAP8_OBJDUMP, {"-d", "-M", "no-aliases", elf});
+      pxflow::test::run_program(build_paths::gap8_objdump, {"-d", "-M", "no-aliases", elf});
   REQUIRE(dump.exit_code == 0);
   // "1c000086:\t00052283          \tlw\tt0,0(a0)"
   static const std::regex line(R"(^\s*([0-9a-f]+):\s+([0-9a-f]+)\s*\t([^\t]+)(?:\t(.*))?$)");
@@ -60,8 +61,8 @@ Counts CompareWithObjdump(const std::string& elf) {
 TEST_CASE("the disassembly of the GAP8 kernels is objdump's") {
   Counts total;
   for (const char* variant : {"original", "local", "global", "fast"}) {
-    const Counts c =
-        CompareWithObjdump(std::string(GAP8_KERNEL_DIR) + "/pxflow_gap8_" + variant + ".elf");
+    const Counts c = CompareWithObjdump(std::string(build_paths::gap8_kernel_dir) +
+                                        "/pxflow_gap8_" + variant + ".elf");
     total.rv32imc += c.rv32imc;
     total.xpulp += c.xpulp;
   }
@@ -72,6 +73,7 @@ TEST_CASE("the disassembly of the GAP8 kernels is objdump's") {
 TEST_CASE("the disassembly of the test programs is objdump's") {
   int total = 0;
   for (const char* p : {"diff_compute", "diff_calls", "counters", "dma", "xpulp_isa", "hwloop"})
-    total += CompareWithObjdump(std::string(GAP8_PROGRAM_DIR) + "/" + p + ".elf").rv32imc;
+    total +=
+        CompareWithObjdump(std::string(build_paths::gap8_program_dir) + "/" + p + ".elf").rv32imc;
   CHECK(total > 4000);
 }

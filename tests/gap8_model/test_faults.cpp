@@ -1,6 +1,7 @@
 // Every fault kind ends the run with one message naming core, pc and instruction.
 #include <catch2/catch.hpp>
 
+#include "build_paths.hpp"
 #include "program_runner.h"
 
 namespace {
@@ -85,7 +86,7 @@ TEST_CASE("a DMA transfer outside L1 is a memory fault at the push") {
 TEST_CASE("a missing or malformed ELF is an ElfError, not a crash") {
   gap8::Memory memory;
   CHECK_THROWS_AS(gap8::LoadElf("/nonexistent.elf", memory), gap8::ElfError);
-  CHECK_THROWS_AS(gap8::LoadElf(GAP8_PROGRAM_DIR, memory), gap8::ElfError);
+  CHECK_THROWS_AS(gap8::LoadElf(build_paths::gap8_program_dir, memory), gap8::ElfError);
   CHECK_THROWS_WITH(gap8::LoadElf(ProgramPath("elf_outside"), memory),
                     Catch::Matchers::Contains("segment at 0x1ffff000") &&
                         Catch::Matchers::Contains("is outside L1 and L2"));

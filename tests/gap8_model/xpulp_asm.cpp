@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "build_paths.hpp"
+
 namespace xpulp_asm {
 namespace {
 
@@ -68,8 +70,8 @@ uint32_t Place(const Encoding& e, uint32_t imm) {
 
 const std::vector<OutsideRow>& OutsideTable() {
   static const std::vector<OutsideRow> rows = [] {
-    std::ifstream in(GAP8_XPULP_OPCODES);
-    if (!in) throw std::runtime_error("cannot read " GAP8_XPULP_OPCODES);
+    std::ifstream in(build_paths::xgap8_opcodes);
+    if (!in) throw std::runtime_error(std::string("cannot read ") + build_paths::xgap8_opcodes);
     std::vector<OutsideRow> out;
     std::string line;
     while (std::getline(in, line)) {

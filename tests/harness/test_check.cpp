@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "build_paths.hpp"
 #include "run_program.hpp"
 
 using pxflow::test::run_program;
@@ -20,7 +21,7 @@ namespace {
 
 pxflow::test::RunResult check(std::vector<std::string> args) {
   args.insert(args.begin(), "check");
-  return run_program(PXFLOW_WITH_TEST_ROWS, args);
+  return run_program(build_paths::pxflow_with_test_rows, args);
 }
 
 std::string last_line(const std::string& out) {
@@ -187,8 +188,9 @@ TEST_CASE("a backend that crashes or hangs is its row's failure line, the others
 TEST_CASE("Ctrl-C stops a check waiting on a worker: exit 130, nothing failed", "[check]") {
   pxflow::test::TempDir dir;
   const pid_t pid = pxflow::test::start_program(
-      PXFLOW_WITH_TEST_ROWS, {"check", "--backends", "test-hang", "--cases", "1", "--progress"},
-      dir.path("out"), dir.path("err"));
+      build_paths::pxflow_with_test_rows,
+      {"check", "--backends", "test-hang", "--cases", "1", "--progress"}, dir.path("out"),
+      dir.path("err"));
   // The progress line (stderr, unbuffered) comes once the workers have opened their backends and
   // the case is sent: then the check waits on the hanging worker.
   std::string progress;
@@ -233,7 +235,7 @@ TEST_CASE("fuzz campaign, JSON file, and bad arguments", "[check]") {
 TEST_CASE("bench times only checked backends and writes the documented JSON rows", "[bench]") {
   pxflow::test::TempDir dir;
   const auto r =
-      run_program(PXFLOW_WITH_TEST_ROWS,
+      run_program(build_paths::pxflow_with_test_rows,
                   {"bench", "--backends", "ref-original,ref-local,test-bitflip,test-unavailable",
                    "--batch", "1,3", "--min-time", "0", "--json", dir.path("b.json")});
   INFO(r.out << r.err);
@@ -267,8 +269,9 @@ TEST_CASE("bench times only checked backends and writes the documented JSON rows
   for (const auto& row : j["rows"])
     if (row.contains("cycles_per_frame")) CHECK(row["bound_ratio"].get<double>() > 0);
 #endif
-  CHECK(run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--batch", "0"}).exit_code == 2);
-  CHECK(run_program(PXFLOW_WITH_TEST_ROWS, {"bench", "--sizes", "8x8"}).exit_code == 2);
+  CHECK(run_program(build_paths::pxflow_with_test_rows, {"bench", "--batch", "0"}).exit_code == 2);
+  CHECK(run_program(build_paths::pxflow_with_test_rows, {"bench", "--sizes", "8x8"}).exit_code ==
+        2);
 }
 
 TEST_CASE("counts are checked: a backend that miscounts fails with one line naming both",
@@ -337,7 +340,9 @@ TEST_CASE("a planted half-pixel bug: the stage in words and a reproducer that sh
   REQUIRE(!mine.empty());
   REQUIRE(!theirs.empty());
   // The commands name the binary that ran, by its absolute path: they run with no PATH at all.
-  CHECK(mine.rfind(std::filesystem::canonical(PXFLOW_WITH_TEST_ROWS).string() + " flow ", 0) == 0);
+  CHECK(
+      mine.rfind(std::filesystem::canonical(build_paths::pxflow_with_test_rows).string() + " flow ",
+                 0) == 0);
   const auto a = paste_without_path(mine);
   const auto b = paste_without_path(theirs);
   INFO(a.err << b.err);

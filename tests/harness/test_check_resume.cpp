@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "build_paths.hpp"
 #include "run_program.hpp"
 
 using nlohmann::json;
@@ -19,9 +20,9 @@ namespace {
 
 // pxflow with the test rows, stopped by itself after `stop_after` cases (0: never).
 RunResult pxflow_run(std::vector<std::string> args, int stop_after = 0) {
-  if (stop_after == 0) return run_program(PXFLOW_WITH_TEST_ROWS, args);
+  if (stop_after == 0) return run_program(build_paths::pxflow_with_test_rows, args);
   args.insert(args.begin(), {"PXFLOW_TEST_STOP_AFTER_CASES=" + std::to_string(stop_after),
-                             PXFLOW_WITH_TEST_ROWS});
+                             build_paths::pxflow_with_test_rows});
   return run_program("/usr/bin/env", args);
 }
 

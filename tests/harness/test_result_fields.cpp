@@ -9,6 +9,7 @@
 
 #include "bench.hpp"
 #include "bench_compare.hpp"
+#include "build_paths.hpp"
 #include "check.hpp"
 #include "report_csv.hpp"
 
@@ -16,7 +17,7 @@ namespace pxflow {
 namespace {
 
 Json schema() {
-  std::ifstream in(PXFLOW_REPORT_SCHEMA);
+  std::ifstream in(build_paths::report_schema);
   REQUIRE(in);
   return Json::parse(in);
 }

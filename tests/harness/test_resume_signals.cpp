@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "build_paths.hpp"
 #include "run_program.hpp"
 
 using nlohmann::json;
@@ -27,10 +28,10 @@ json read(const std::string& path) {
 // a job started with SIGINT ignored.
 RunResult interrupted_when(const std::string& args, const std::string& out, const std::string& err,
                            const std::string& log, const std::string& ready) {
-  const std::string script = std::string("'") + PXFLOW_WITH_TEST_ROWS + "' " + args + " >'" + out +
-                             "' 2>'" + err + "' & p=$!; n=0; until grep -qE -e '" + ready + "' '" +
-                             log + "' || [ $n -ge 600 ]; do sleep 0.1; n=$((n+1)); done; kill " +
-                             "-INT $p; wait $p; echo rc=$?";
+  const std::string script =
+      std::string("'") + build_paths::pxflow_with_test_rows + "' " + args + " >'" + out + "' 2>'" +
+      err + "' & p=$!; n=0; until grep -qE -e '" + ready + "' '" + log +
+      "' || [ $n -ge 600 ]; do sleep 0.1; n=$((n+1)); done; kill " + "-INT $p; wait $p; echo rc=$?";
   return run_program("/bin/sh", {"-c", script});
 }
 
@@ -66,7 +67,8 @@ TEST_CASE("resume: SIGINT to a running check --json keeps what it checked, --res
   CHECK(stopped["cases_total"] == kLongCampaignCases);
   CHECK(run_program("/bin/ls", {"-A", dir.path("")}).out == "ci.json\nerr.txt\n");
 
-  const RunResult done = run_program(PXFLOW_WITH_TEST_ROWS, {"check", "--resume", json_path});
+  const RunResult done =
+      run_program(build_paths::pxflow_with_test_rows, {"check", "--resume", json_path});
   INFO(done.out << done.err);
   CHECK(done.exit_code == 0);
   const json complete = read(json_path);
@@ -100,17 +102,19 @@ TEST_CASE("resume: SIGINT to a running bench --json keeps its rows, report and c
   CHECK(run_program("/bin/ls", {"-A", dir.path("")}).out == "b.json\nerr.txt\nout.txt\n");
 
   const std::string check = dir.path("c.json");
-  REQUIRE(run_program(PXFLOW_WITH_TEST_ROWS, {"check", "--backends", "ref-original,ref-local",
-                                              "--cases", "300", "--json", check})
+  REQUIRE(run_program(
+              build_paths::pxflow_with_test_rows,
+              {"check", "--backends", "ref-original,ref-local", "--cases", "300", "--json", check})
               .exit_code == 0);
-  const RunResult report =
-      run_program(PXFLOW_WITH_TEST_ROWS, {"report", "--out", dir.path("r"), "--check-json", check,
-                                          "--bench-json", bench, "--no-accuracy"});
+  const RunResult report = run_program(build_paths::pxflow_with_test_rows,
+                                       {"report", "--out", dir.path("r"), "--check-json", check,
+                                        "--bench-json", bench, "--no-accuracy"});
   INFO(report.out << report.err);
   CHECK(report.exit_code == 0);
   CHECK(slurp(dir.path("r/report.md")).find("Incomplete: a signal stopped this bench after") !=
         std::string::npos);
-  const RunResult compare = run_program(PXFLOW_WITH_TEST_ROWS, {"compare", bench, bench});
+  const RunResult compare =
+      run_program(build_paths::pxflow_with_test_rows, {"compare", bench, bench});
   INFO(compare.out << compare.err);
   CHECK(compare.exit_code == 0);
   CHECK(compare.out.find("warning: A is incomplete: a signal stopped its bench after") !=

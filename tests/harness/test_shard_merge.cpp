@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "build_paths.hpp"
 #include "run_program.hpp"
 
 using nlohmann::json;
@@ -17,7 +18,7 @@ using pxflow::test::TempDir;
 namespace {
 
 RunResult pxflow_run(const std::vector<std::string>& args) {
-  return run_program(PXFLOW_WITH_TEST_ROWS, args);
+  return run_program(build_paths::pxflow_with_test_rows, args);
 }
 
 // "<stem><k>.json", appended piece by piece: GCC 12 warns on "s" + std::to_string(k) + ...

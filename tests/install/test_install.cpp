@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.hpp"
 #include "run_program.hpp"
 #include "sample_data.hpp"
 
@@ -147,20 +148,20 @@ void check_binary_alone(const std::string& dir, const std::string& png1, const s
   fs::create_directories(dir);
   const std::string alone = dir + "/pxflow";
   const std::string real_dir = fs::canonical(dir);  // as /proc/self/exe names it
-  fs::copy_file(PXFLOW_BINARY, alone);
+  fs::copy_file(build_paths::pxflow, alone);
   if (PXFLOW_HAS_M4_FIRMWARE && fs::exists("/usr/bin/qemu-system-arm")) {
     const std::string reason = backend_row(alone, "m4-qemu").at("reason");
     CAPTURE(reason);
     CHECK(reason.find("firmware not built or not installed: no pxflow_m4_dut.elf at " + real_dir) !=
           std::string::npos);
-    CHECK(reason.find(PXFLOW_BUILD_DIR) == std::string::npos);
+    CHECK(reason.find(build_paths::build_dir) == std::string::npos);
   }
   const RunResult no_module = run_program(alone, {"flow", png1, png2});
   CAPTURE(no_module.err);
   CHECK(no_module.exit_code == 2);
   CHECK(no_module.err_lines() == 1);
   CHECK(no_module.err.find("the OpenCV module") != std::string::npos);
-  CHECK(no_module.err.find(PXFLOW_BUILD_DIR) == std::string::npos);
+  CHECK(no_module.err.find(build_paths::build_dir) == std::string::npos);
 }
 
 }  // namespace
@@ -170,7 +171,7 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
   pxflow::test::TempDir tmp;
   const std::string prefix = tmp.path("prefix");
   const std::string libdir = prefix + "/" + PXFLOW_LIBDIR;
-  must_run(PXFLOW_CMAKE, {"--install", PXFLOW_BUILD_DIR, "--prefix", prefix});
+  must_run(build_paths::cmake, {"--install", build_paths::build_dir, "--prefix", prefix});
 
   const std::string pxflow = prefix + "/bin/pxflow";
   for (const std::string& file :
@@ -196,14 +197,14 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
 
   // Nothing installed points back into the build or the source tree.
   const std::string source_dir =
-      fs::path(PXFLOW_CONSUMER_DIR).parent_path().parent_path().parent_path();
+      fs::path(build_paths::install_consumer_dir).parent_path().parent_path().parent_path();
   for (const std::string& file :
        {libdir + "/cmake/pxflow/pxflowTargets.cmake", libdir + "/cmake/pxflow/pxflowConfig.cmake",
         libdir + "/pkgconfig/pxflow.pc"}) {
     CAPTURE(file);
     const std::string text = slurp(file);
     REQUIRE(!text.empty());
-    CHECK(text.find(PXFLOW_BUILD_DIR) == std::string::npos);
+    CHECK(text.find(build_paths::build_dir) == std::string::npos);
     CHECK(text.find(source_dir + "/") == std::string::npos);
   }
   // Nor does any program installed: no path of the build tree is compiled in, so none can be
@@ -220,14 +221,14 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
       const bool module = entry.path().extension() == ".so";
       if (!entry.is_regular_file() || !(program || module)) continue;
       CAPTURE(entry.path());
-      CHECK_FALSE(file_contains(entry.path(), PXFLOW_BUILD_DIR));
+      CHECK_FALSE(file_contains(entry.path(), build_paths::build_dir));
     }
   }
 
   // The installed binary is this build's: the same --version line (commit, compiler, families).
   const RunResult version = must_run(pxflow, {"--version"});
   CHECK(version.out.rfind("pxflow ", 0) == 0);
-  CHECK(version.out == must_run(PXFLOW_BINARY, {"--version"}).out);
+  CHECK(version.out == must_run(build_paths::pxflow, {"--version"}).out);
 
   // The man pages: pxflow.1 and one page per subcommand of --help, named in pxflow.1.
   if (PXFLOW_HAS_MAN_PAGES) {
@@ -274,21 +275,21 @@ TEST_CASE("the installed tree runs, and a consumer built against it alone matche
 
   // The consumer, with CMake: find_package(pxflow) from the prefix and nowhere else.
   const std::string cmake_build = tmp.path("consumer-cmake");
-  must_run(PXFLOW_CMAKE,
-           {"-S", PXFLOW_CONSUMER_DIR, "-B", cmake_build, "-DCMAKE_BUILD_TYPE=Release",
-            "-DCMAKE_CXX_COMPILER=" PXFLOW_CXX, "-DCMAKE_PREFIX_PATH=" + prefix,
-            "-DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF"});
+  must_run(build_paths::cmake,
+           {"-S", build_paths::install_consumer_dir, "-B", cmake_build,
+            "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_CXX_COMPILER=" PXFLOW_CXX,
+            "-DCMAKE_PREFIX_PATH=" + prefix, "-DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF"});
   CHECK(slurp(cmake_build + "/CMakeCache.txt")
             .find("pxflow_DIR:PATH=" + libdir + "/cmake/pxflow\n") != std::string::npos);
-  must_run(PXFLOW_CMAKE, {"--build", cmake_build});
+  must_run(build_paths::cmake, {"--build", cmake_build});
 
   // The consumer, with pkg-config: one compiler line, as the README shows it.
   const std::string pc_binary = tmp.path("consumer-pkg-config");
-  must_run(
-      "/bin/sh",
-      {"-c", "PKG_CONFIG_PATH='" + libdir + "/pkgconfig' && export PKG_CONFIG_PATH && '" +
-                 PXFLOW_CXX + "' -std=c++20 -O2 '" + PXFLOW_CONSUMER_DIR + "/consumer.cpp' -o '" +
-                 pc_binary + "' $('" + PXFLOW_PKG_CONFIG + "' --cflags --libs pxflow)"});
+  must_run("/bin/sh",
+           {"-c", "PKG_CONFIG_PATH='" + libdir + "/pkgconfig' && export PKG_CONFIG_PATH && '" +
+                      PXFLOW_CXX + "' -std=c++20 -O2 '" + build_paths::install_consumer_dir +
+                      "/consumer.cpp' -o '" + pc_binary + "' $('" + PXFLOW_PKG_CONFIG +
+                      "' --cflags --libs pxflow)"});
 
   // Both answer with the registry's default backend; pxflow flow runs the same backend on the
   // PNG files, and ref-original on the raw ones (the raw frames are the PNGs' pixels).

@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "build_paths.hpp"
 #include "run_program.hpp"
 
 namespace {
@@ -22,7 +23,8 @@ using pxflow::test::RunResult;
 using Seconds = std::chrono::duration<double>;
 
 std::string fault_firmware(int mode) {
-  return std::string(PXFLOW_M4_FAULT_DIR) + "/pxflow_m4_fault" + std::to_string(mode) + ".elf";
+  return std::string(build_paths::m4_fault_dir) + "/pxflow_m4_fault" + std::to_string(mode) +
+         ".elf";
 }
 
 // PIDs of QEMU processes running `firmware`.
@@ -72,7 +74,7 @@ bool mentions(const RunResult& r, const std::string& text) {
 class Background {
  public:
   explicit Background(const std::vector<std::string>& args) {
-    std::vector<std::string> argv_s = {PXFLOW_BINARY};
+    std::vector<std::string> argv_s = {build_paths::pxflow};
     argv_s.insert(argv_s.end(), args.begin(), args.end());
     pid_ = fork();
     if (pid_ == 0) {
@@ -112,7 +114,7 @@ class Background {
 class PrivateFirmware {
  public:
   PrivateFirmware() : path_(dir_.path("pxflow_m4_dut.elf")) {
-    dir_.write("pxflow_m4_dut.elf", pxflow::test::slurp(PXFLOW_M4_FIRMWARE));
+    dir_.write("pxflow_m4_dut.elf", pxflow::test::slurp(build_paths::m4_firmware));
   }
   operator const std::string&() const { return path_; }
 
@@ -237,7 +239,7 @@ TEST_CASE("m4-qemu: the probe says why the row cannot run", "[m4][fault]") {
   INFO(no_fw.out << no_fw.err);
   CHECK(no_fw.out.find("firmware not found: /nonexistent/pxflow_m4_dut.elf") != std::string::npos);
   const RunResult no_qemu =
-      run_program("/usr/bin/env", {"PATH=/nonexistent", PXFLOW_BINARY, "check", "--backends",
+      run_program("/usr/bin/env", {"PATH=/nonexistent", build_paths::pxflow, "check", "--backends",
                                    "m4-qemu", "--require", "m4-qemu", "--generated-only"});
   INFO(no_qemu.out << no_qemu.err);
   CHECK(no_qemu.exit_code == 1);

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "build_paths.hpp"
 #include "cl_program.hpp"
 #include "device_wait.hpp"
 #include "errors.hpp"
@@ -42,7 +43,7 @@ std::string self_path() {
 }
 
 std::shared_ptr<const cl::DeviceProgram> spin_program() {
-  std::ifstream file(PXFLOW_OPENCL_SPIN_FILE, std::ios::binary);
+  std::ifstream file(build_paths::opencl_spin_source, std::ios::binary);
   std::stringstream source;
   source << file.rdbuf();
   auto prog = std::make_shared<cl::DeviceProgram>();

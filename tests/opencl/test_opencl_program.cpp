@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "build_paths.hpp"
 #include "cl_program.hpp"
 #include "errors.hpp"
 #include "opencl_kernel_source.hpp"
@@ -21,7 +22,7 @@ TEST_CASE("opencl: the row is registered and can run here", "[opencl]") {
 }
 
 TEST_CASE("opencl: the embedded kernel is exactly kernels/opencl/opencl.cl", "[opencl]") {
-  std::ifstream file(PXFLOW_OPENCL_KERNEL_FILE, std::ios::binary);
+  std::ifstream file(build_paths::opencl_kernel_source, std::ios::binary);
   REQUIRE(file);
   std::ostringstream bytes;
   bytes << file.rdbuf();

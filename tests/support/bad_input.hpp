@@ -9,7 +9,6 @@
 
 namespace pxflow::test {
 
-#ifdef PXFLOW_BINARY
 inline void require_bad_input(const std::vector<std::string>& args, const std::string& needle) {
   const auto r = run_pxflow(args);
   INFO("stderr: " << r.err << "stdout: " << r.out);
@@ -18,6 +17,5 @@ inline void require_bad_input(const std::vector<std::string>& args, const std::s
   CHECK(r.err.find(needle) != std::string::npos);
   CHECK(r.out.empty());
 }
-#endif
 
 }  // namespace pxflow::test

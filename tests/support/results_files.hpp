@@ -7,7 +7,6 @@
 
 namespace pxflow::test {
 
-#ifdef PXFLOW_BINARY
 inline void make_small_results(const TempDir& dir) {
   REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
                       dir.path("c.json")})
@@ -16,6 +15,5 @@ inline void make_small_results(const TempDir& dir) {
                       "--json", dir.path("b.json")})
               .exit_code == 0);
 }
-#endif
 
 }  // namespace pxflow::test

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.hpp"
+
 namespace pxflow::test {
 
 struct RunResult {
@@ -29,12 +31,10 @@ pid_t start_program(const std::string& binary, const std::vector<std::string>& a
 // The whole file (empty when it cannot be read).
 std::string slurp(const std::string& path);
 
-#ifdef PXFLOW_BINARY
 // The pxflow binary of this build.
 inline RunResult run_pxflow(const std::vector<std::string>& args) {
-  return run_program(PXFLOW_BINARY, args);
+  return run_program(build_paths::pxflow, args);
 }
-#endif
 
 // A fresh temporary directory for one test's files (removed when the object dies).
 class TempDir {

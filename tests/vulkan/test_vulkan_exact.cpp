@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "build_paths.hpp"
 #include "record.hpp"
 #include "vulkan_test_util.hpp"
 
@@ -100,7 +101,7 @@ TEST_CASE("vulkan: frames with a row stride larger than the width", "[vulkan]") 
 
 TEST_CASE("vulkan: the shader's status and direction values are reference/record.hpp's",
           "[vulkan]") {
-  std::ifstream file(PXFLOW_VULKAN_SHADER_FILE, std::ios::binary);
+  std::ifstream file(build_paths::vulkan_shader_source, std::ios::binary);
   REQUIRE(file);
   std::ostringstream text;
   text << file.rdbuf();

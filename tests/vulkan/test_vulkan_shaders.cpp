@@ -8,6 +8,7 @@
 #include <iterator>
 #include <string>
 
+#include "build_paths.hpp"
 #include "errors.hpp"
 #include "flow_production_wrong_y_spv.h"
 #include "flow_search_above_frame_spv.h"
@@ -67,7 +68,7 @@ PlantedRun run_checked(const std::uint32_t (&code)[N], VulkanShaders shaders) {
 std::string named_line(const std::string& message) {
   const auto at = message.find("flow.comp:") + std::string("flow.comp:").size();
   const int line = std::stoi(message.substr(at));
-  std::ifstream source(PXFLOW_VULKAN_SHADER_FILE);
+  std::ifstream source(build_paths::vulkan_shader_source);
   std::string text;
   for (int n = 1; n <= line && std::getline(source, text); ++n) {
   }
