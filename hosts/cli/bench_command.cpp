@@ -18,6 +18,7 @@
 #include "output_plan.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "registry.hpp"
 
 namespace pxflow::cli {
 namespace {

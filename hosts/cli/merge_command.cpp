@@ -1,6 +1,7 @@
 // pxflow merge: the results files of a campaign's shards (pxflow check --shard K/M --json F)
 // combined into one verdict and one check file (docs/harness.md, "Campaigns over a CI matrix").
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "check_merge.hpp"
 #include "commands.hpp"

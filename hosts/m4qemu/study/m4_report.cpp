@@ -13,6 +13,7 @@
 #include "m4qemu_backend.hpp"
 #include "m4qemu_row.hpp"
 #include "registry.hpp"
+#include "report.hpp"
 #include "synthetic.hpp"
 
 namespace pxflow::cli {
