@@ -1,5 +1,7 @@
 #include "accuracy_json.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace pxflow::accuracy {
 
 Json accuracy_rows_json(const AccuracyReport& report) {

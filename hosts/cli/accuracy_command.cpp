@@ -2,6 +2,7 @@
 // on real video, side by side with OpenCV's Lucas-Kanade and DIS flow (hosts/accuracy/).
 #include <algorithm>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "accuracy_json.hpp"

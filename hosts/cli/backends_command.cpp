@@ -2,6 +2,7 @@
 // as JSON with the family of each row.
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "json_document.hpp"

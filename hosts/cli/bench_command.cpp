@@ -18,6 +18,7 @@
 #include "output_plan.hpp"
 #include "progress.hpp"
 #include "provenance.hpp"
+#include "registry.hpp"
 
 namespace pxflow::cli {
 namespace {
@@ -114,10 +115,9 @@ std::string joined(const std::vector<std::string>& names) {
   return s;
 }
 
-// `bench --processes R`: this binary's bench R times, each a process of its own with 1/R of
-// --min-time; rows of an exact clock (a deterministic count) and rows not timed are taken from the
-// first process alone. A signal, or a process that fails, keeps the processes finished so far.
-BenchReport bench_in_processes(const BenchArgs& a, const BenchOptions& o, std::ostream& out) {
+// The command line of every process: the global options and bench's as given but those of
+// kPerProcess, then one process's share of --min-time (`seconds`) and its JSON on stdout.
+std::vector<std::string> process_command(const BenchArgs& a, const char* seconds) {
   std::vector<std::string> argv = {own_executable()};
   for (const auto& [name, value] : given_option_list(*a.sub->parent))
     argv.push_back(name), value ? argv.push_back(*value) : void();
@@ -127,16 +127,32 @@ BenchReport bench_in_processes(const BenchArgs& a, const BenchOptions& o, std::o
     argv.push_back(name);
     if (value) argv.push_back(*value);
   }
-  char seconds[32];
-  std::snprintf(seconds, sizeof seconds, "%.6g", o.min_seconds / a.processes);
   argv.insert(argv.end(), {"--processes", "1", "--min-time", seconds, "--json", "-"});
-  out << "each point in " << a.processes << " processes of " << seconds
-      << " s of samples per backend; a row's median and 95% interval are its processes' "
-         "medians'\n";
+  return argv;
+}
+
+// The backends of the rows that vary from process to process (timed, by a clock that is not
+// exact): the ones the processes after the first measure again.
+std::vector<std::string> varying_backends(const BenchReport& first) {
+  std::vector<std::string> backends;
+  for (const BenchRow& r : first.rows)
+    if (!r.samples_ns_per_frame.empty() && !r.exact_clock &&
+        std::ranges::find(backends, r.backend) == backends.end())
+      backends.push_back(r.backend);
+  return backends;
+}
+
+// What the processes gave: their reports in order, and what stopped them early, if anything.
+struct ProcessRuns {
   std::vector<BenchReport> runs;
-  std::vector<std::string> backends = o.backends;
   std::optional<Interrupted> stop;
   std::string failed;
+};
+
+// Runs the processes of `argv`: the first over `backends`, the others over its varying rows.
+ProcessRuns run_processes(const BenchArgs& a, std::vector<std::string> argv,
+                          std::vector<std::string> backends, std::ostream& out) {
+  ProcessRuns done;
   for (int k = 1; k <= a.processes; ++k) {
     std::vector<std::string> args = argv;
     if (!backends.empty()) args.insert(args.end(), {"--backends", joined(backends)});
@@ -145,37 +161,42 @@ BenchReport bench_in_processes(const BenchArgs& a, const BenchOptions& o, std::o
     try {
       p = run_bench_process(args);
     } catch (const Interrupted& e) {
-      stop = Interrupted(e.signal, std::string(signal_name(e.signal)) + " after " +
-                                       counted(runs.size(), "process") + " of " +
-                                       std::to_string(a.processes));
+      done.stop = Interrupted(e.signal, std::string(signal_name(e.signal)) + " after " +
+                                            counted(done.runs.size(), "process") + " of " +
+                                            std::to_string(a.processes));
       break;
     }
-    if (p.status == 2 && runs.empty()) throw InputError(p.last_error_line);
+    if (p.status == 2 && done.runs.empty()) throw InputError(p.last_error_line);
     if (p.bench.is_null() || (p.status != 0 && p.status != 1)) {
-      failed = "bench process " + std::to_string(k) + " of " + std::to_string(a.processes) +
-               " failed (" + p.last_error_line + ")";
+      done.failed = "bench process " + std::to_string(k) + " of " + std::to_string(a.processes) +
+                    " failed (" + p.last_error_line + ")";
       break;
     }
-    runs.push_back(bench_report_from_json(p.bench));
-    out << "process " << k << " of " << a.processes << ": " << runs.back().rows.size() << " rows\n";
+    done.runs.push_back(bench_report_from_json(p.bench));
+    out << "process " << k << " of " << a.processes << ": " << done.runs.back().rows.size()
+        << " rows\n";
     if (k > 1) continue;
     if (!a.no_bound) argv.push_back("--no-bound");  // the first process measured it
-    // Only the rows that vary from process to process are measured again.
-    backends.clear();
-    for (const BenchRow& r : runs.front().rows)
-      if (!r.samples_ns_per_frame.empty() && !r.exact_clock &&
-          std::ranges::find(backends, r.backend) == backends.end())
-        backends.push_back(r.backend);
+    backends = varying_backends(done.runs.front());
     if (backends.empty()) break;
   }
   progress("");
+  return done;
+}
+
+// The processes' reports as one, incomplete when a process was stopped or failed.
+BenchReport combined_report(const ProcessRuns& done, const BenchOptions& o) {
   BenchReport r;
-  if (!runs.empty()) r = combine_processes(runs);
+  if (!done.runs.empty()) r = combine_processes(done.runs);
   r.points_total = o.points.size();
-  if (runs.empty()) r.complete = false, r.points_done = 0;
-  if (stop || !failed.empty()) r.complete = false;
-  if (stop) r.stop = *stop;
-  if (!failed.empty()) r.failed = failed;
+  if (done.runs.empty()) r.complete = false, r.points_done = 0;
+  if (done.stop || !done.failed.empty()) r.complete = false;
+  if (done.stop) r.stop = *done.stop;
+  if (!done.failed.empty()) r.failed = done.failed;
+  return r;
+}
+
+void print_combined_report(const BenchReport& r, std::ostream& out) {
   out << "backends (what runs, on which device):\n";
   for (const Json& d : r.backends) {
     const std::string line = description_line(d);
@@ -185,6 +206,20 @@ BenchReport bench_in_processes(const BenchArgs& a, const BenchOptions& o, std::o
   print_bench_rows(r, out);
   for (const auto& s : r.skipped) out << "skipped " << s << "\n";
   out << machine_line(r.machine) << "\n";
+}
+
+// `bench --processes R`: this binary's bench R times, each a process of its own with 1/R of
+// --min-time; rows of an exact clock (a deterministic count) and rows not timed are taken from the
+// first process alone. A signal, or a process that fails, keeps the processes finished so far.
+BenchReport bench_in_processes(const BenchArgs& a, const BenchOptions& o, std::ostream& out) {
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.6g", o.min_seconds / a.processes);
+  std::vector<std::string> argv = process_command(a, seconds);
+  out << "each point in " << a.processes << " processes of " << seconds
+      << " s of samples per backend; a row's median and 95% interval are its processes' "
+         "medians'\n";
+  BenchReport r = combined_report(run_processes(a, std::move(argv), o.backends, out), o);
+  print_combined_report(r, out);
   return r;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "check.hpp"
@@ -264,6 +265,99 @@ int run_check_command(const CheckArgs& a) {
   return r.ok() || merge_judges ? 0 : 1;
 }
 
+// check's options, in the order its --help lists them, a function per group.
+
+// Which backends run, and which must.
+void add_row_options(CommandSpec& sub, CheckArgs& a) {
+  add_backend_option(sub, a.backend, "the one to check");
+  add_backends_option(sub, a.backends, "the ones to check");
+  sub.add("--require", &a.require,
+          "Backends that must run (comma-separated, or 'all': every row but those needing "
+          "hardware this machine lacks, an ISA extension): their skips fail")
+      .type("LIST|all");
+}
+
+// The campaign: its seed and size, the shard of it, its results file and resuming from it.
+void add_campaign_options(CommandSpec& sub, CheckArgs& a) {
+  add_seed_option(sub, a.seed, "printed; it reproduces any failure");
+  sub.add("--cases", &a.cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
+      .in_range(1L, 100000000L);
+  sub.add("--shard", &a.shard,
+          "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
+          "`pxflow merge` combines the parts' --json files). auto: K and M "
+          "from the CI engine's variables, the first set of GitLab "
+          "parallel: (CI_NODE_INDEX/CI_NODE_TOTAL), a Kubernetes Indexed "
+          "Job (JOB_COMPLETION_INDEX/PXFLOW_SHARD_TOTAL), a Slurm array "
+          "(SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT); the --json file "
+          "records the K/M found")
+      .type("K/M|auto");
+  add_json_option(sub, a.json_path,
+                  "also written when a signal stops the check: what it checked, \"complete\": "
+                  "false; --resume goes on from it");
+  sub.add("--resume", &a.resume_path,
+          "Finish the check a signal stopped, from its --json FILE: the "
+          "cases not done, with the file's campaign and options; the "
+          "result (the uninterrupted run's) replaces FILE, or goes to "
+          "--json (docs/harness.md, Stopping and resuming a campaign)")
+      .type("FILE")
+      .path_kind(PathKind::UpdatedFile);
+}
+
+// Which cases of the corpus run, and at which parameters.
+void add_corpus_options(CommandSpec& sub, CheckArgs& a) {
+  add_data_option(sub, a.data_dir);
+  sub.flag("--generated-only", a.generated_only,
+           "Skip the real frames (random, hostile, threshold cases only)");
+  sub.flag("--limits-only", a.limits_only,
+           "Only the limit cases: each backend at the edges its unsupported() declares, and "
+           "SPEC's corners (docs/harness.md)");
+  std::string profiles;
+  for (const auto& n : profile_names()) profiles += (profiles.empty() ? "" : ", ") + n;
+  sub.add("--profile", &a.params.profile,
+          "Run the corpus at this profile's parameters (" + profiles +
+              "), each case at its own frame size; the limit cases keep theirs "
+              "(default: each case's own parameters)")
+      .type("NAME");
+  sub.add("--set", &a.params.sets,
+          "Run the corpus with one parameter overridden, KEY=VALUE (repeatable; every "
+          "key of flow --set but width and height): e.g. --set search_radius=20. Cases "
+          "whose frames are too small for it are left out, each named")
+      .type("KEY=VALUE")
+      .one_word_each();
+}
+
+// What a mismatch leaves behind: the blocks behind it, its reproducer.
+void add_mismatch_options(CommandSpec& sub, CheckArgs& a) {
+  sub.flag("--verbose", a.verbose, "Dump the 8x8 blocks behind each mismatch");
+  sub.add("--repro-dir", &a.repro_dir,
+          "Existing folder for the reproducers of mismatches, one pxflow-repro-N per "
+          "run (default: the --json file's folder, else the working folder)")
+      .type("DIR")
+      .path_kind(PathKind::OutputFolder);
+  sub.flag("--no-repro", a.no_repro,
+           "Write no reproducers (the first differing stage is still named)");
+  sub.add("--repro-seconds", &a.repro_seconds,
+          "Time each backend's reproducer may spend shrinking its failing pair")
+      .with_default()
+      .real_in(0, 3600);
+}
+
+// How the backends run: progress, the hang timeout, the worker mode, threads and device.
+void add_run_options(CommandSpec& sub, CheckArgs& a) {
+  add_progress_flag(sub);
+  sub.add("--case-timeout", &a.case_timeout,
+          "Seconds a backend may take for one case before it is called hung (default: "
+          "an allowance scaled to the case's work and the backend's measured speed; "
+          "docs/harness.md, Isolation)")
+      .type("SECONDS")
+      .real_in(0.001, 1e6);
+  // Hidden: the worker mode of the check's own worker processes
+  // (hosts/harness/check/check_worker.hpp).
+  sub.add(worker::kWorkerOption, &a.worker_row).unlisted();
+  add_threads_option(sub, a.backend_options.threads);
+  add_device_option(sub, a.backend_options.device);
+}
+
 }  // namespace
 
 const std::vector<std::string> kCheckExamples = {
@@ -280,77 +374,11 @@ Command add_check_command(CommandSpec& app) {
   auto a = std::make_shared<CheckArgs>();
   CommandSpec* sub =
       &app.add_subcommand("check", "Check every backend against ref-original, bit for bit");
-  add_backend_option(*sub, a->backend, "the one to check");
-  add_backends_option(*sub, a->backends, "the ones to check");
-  sub->add("--require", &a->require,
-           "Backends that must run (comma-separated, or 'all': every row but those needing "
-           "hardware this machine lacks, an ISA extension): their skips fail")
-      .type("LIST|all");
-  add_seed_option(*sub, a->seed, "printed; it reproduces any failure");
-  sub->add("--cases", &a->cases, "Fuzz campaign: N random pairs instead of the fixed corpus")
-      .in_range(1L, 100000000L);
-  sub->add("--shard", &a->shard,
-           "Run the K-th of M disjoint parts of the campaign (K/M, e.g. 2/4; "
-           "`pxflow merge` combines the parts' --json files). auto: K and M "
-           "from the CI engine's variables, the first set of GitLab "
-           "parallel: (CI_NODE_INDEX/CI_NODE_TOTAL), a Kubernetes Indexed "
-           "Job (JOB_COMPLETION_INDEX/PXFLOW_SHARD_TOTAL), a Slurm array "
-           "(SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT); the --json file "
-           "records the K/M found")
-      .type("K/M|auto");
-  add_json_option(*sub, a->json_path,
-                  "also written when a signal stops the check: what it checked, \"complete\": "
-                  "false; --resume goes on from it");
-  sub->add("--resume", &a->resume_path,
-           "Finish the check a signal stopped, from its --json FILE: the "
-           "cases not done, with the file's campaign and options; the "
-           "result (the uninterrupted run's) replaces FILE, or goes to "
-           "--json (docs/harness.md, Stopping and resuming a campaign)")
-      .type("FILE")
-      .path_kind(PathKind::UpdatedFile);
-  add_data_option(*sub, a->data_dir);
-  sub->flag("--generated-only", a->generated_only,
-            "Skip the real frames (random, hostile, threshold cases only)");
-  sub->flag("--limits-only", a->limits_only,
-            "Only the limit cases: each backend at the edges its unsupported() declares, and "
-            "SPEC's corners (docs/harness.md)");
-  std::string profiles;
-  for (const auto& n : profile_names()) profiles += (profiles.empty() ? "" : ", ") + n;
-  sub->add("--profile", &a->params.profile,
-           "Run the corpus at this profile's parameters (" + profiles +
-               "), each case at its own frame size; the limit cases keep theirs "
-               "(default: each case's own parameters)")
-      .type("NAME");
-  sub->add("--set", &a->params.sets,
-           "Run the corpus with one parameter overridden, KEY=VALUE (repeatable; every "
-           "key of flow --set but width and height): e.g. --set search_radius=20. Cases "
-           "whose frames are too small for it are left out, each named")
-      .type("KEY=VALUE")
-      .one_word_each();
-  sub->flag("--verbose", a->verbose, "Dump the 8x8 blocks behind each mismatch");
-  sub->add("--repro-dir", &a->repro_dir,
-           "Existing folder for the reproducers of mismatches, one pxflow-repro-N per "
-           "run (default: the --json file's folder, else the working folder)")
-      .type("DIR")
-      .path_kind(PathKind::OutputFolder);
-  sub->flag("--no-repro", a->no_repro,
-            "Write no reproducers (the first differing stage is still named)");
-  sub->add("--repro-seconds", &a->repro_seconds,
-           "Time each backend's reproducer may spend shrinking its failing pair")
-      .with_default()
-      .real_in(0, 3600);
-  add_progress_flag(*sub);
-  sub->add("--case-timeout", &a->case_timeout,
-           "Seconds a backend may take for one case before it is called hung (default: "
-           "an allowance scaled to the case's work and the backend's measured speed; "
-           "docs/harness.md, Isolation)")
-      .type("SECONDS")
-      .real_in(0.001, 1e6);
-  // Hidden: the worker mode of the check's own worker processes
-  // (hosts/harness/check/check_worker.hpp).
-  sub->add(worker::kWorkerOption, &a->worker_row).unlisted();
-  add_threads_option(*sub, a->backend_options.threads);
-  add_device_option(*sub, a->backend_options.device);
+  add_row_options(*sub, *a);
+  add_campaign_options(*sub, *a);
+  add_corpus_options(*sub, *a);
+  add_mismatch_options(*sub, *a);
+  add_run_options(*sub, *a);
   return {sub,
           [a, sub] {
             a->sub = sub;

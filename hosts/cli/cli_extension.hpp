@@ -7,7 +7,10 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "report.hpp"
+
+namespace pxflow {
+struct ReportInputs;  // report.hpp, included by the files that add a section
+}  // namespace pxflow
 
 namespace pxflow::cli {
 

@@ -8,6 +8,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "counted.hpp"
@@ -352,6 +353,75 @@ int run_flow(const FlowOptions& o) {
   return run_single(o, row, shaping, raw_size);
 }
 
+// The footer of flow's --help: its three forms, and what a sequence writes and keeps.
+const char* const kFlowForms =
+    "Forms:\n"
+    "  pxflow flow [OPTIONS] PREV NEXT     one pair\n"
+    "  pxflow flow [OPTIONS] SOURCE        every consecutive pair of SOURCE: a video file\n"
+    "                                      (OpenCV videoio), a folder of frames or a quoted\n"
+    "                                      glob ('f/*.png'), both sorted by name, a file of raw\n"
+    "                                      frames back to back (--size), or - (raw frames on\n"
+    "                                      standard input, --size)\n"
+    "  pxflow flow [OPTIONS] --pairs LIST  each line of LIST: PREV NEXT (relative to LIST's\n"
+    "                                      folder; a pipe's to the working directory);\n"
+    "                                      pairs may differ in size, each is its own problem\n"
+    "Every input may be a file or a pipe (a FIFO, /dev/stdin, bash's <(cat a.raw)).\n"
+    "A sequence prints a line per pair and a summary (pairs, frames, pairs/s); --jsonl and\n"
+    "--csv write one object or row per pair (- = stdout, the lines then go to stderr with\n"
+    "--progress or on a terminal).\n"
+    "A sequence that stops early (a signal, a closed pipe, a bad frame, a failed backend)\n"
+    "keeps its completed pairs in --jsonl and --csv, each file then ending in one marker line\n"
+    "(a finished one has none):\n"
+    "  --jsonl  {\"incomplete\": {\"records\": 243, \"stopped_by\": \"SIGINT\"}}\n"
+    "  --csv    # incomplete: 243 records, stopped by SIGINT";
+
+// flow's options, in the order its --help lists them, a function per group (the problem's,
+// the backend's and the shared ones between them).
+
+// What is read of each frame: a raw size, a window, a binning.
+void add_frame_options(CommandSpec& sub, FlowOptions& o) {
+  sub.add("--size", &o.size,
+          "Inputs are raw 8-bit frames of WIDTHxHEIGHT (e.g. 64x64), whatever their name")
+      .type("WxH");
+  sub.add("--crop", &o.crop,
+          "Use the window WxH+X+Y of every frame (e.g. 64x64+100+40), before --bin")
+      .type("WxH+X+Y");
+  sub.add("--bin", &o.bin, "Average N x N pixels into one (after --crop)").in_range(1, 64);
+}
+
+// What is written: one pair's JSON, a sequence's JSON lines and CSV, the pictures.
+void add_output_options(CommandSpec& sub, FlowOptions& o) {
+  add_json_option(sub, o.json, "one object, of one pair (a sequence: --jsonl)");
+  sub.add("--jsonl", &o.jsonl, "Write one JSON object per pair, one per line, to FILE (- = stdout)")
+      .type("FILE")
+      .path_kind(PathKind::OutputFile, ".jsonl");
+  sub.add("--csv", &o.csv, "Write one CSV row per pair to FILE (- = stdout)")
+      .type("FILE")
+      .path_kind(PathKind::OutputFile, ".csv");
+  sub.add("--draw", &o.draw,
+          "Draw the POIs, their vectors and the frame flow into FILE.png (one pair) "
+          "or into the folder DIR as pair-NNNNNN.png (a sequence; pictures of an "
+          "earlier run beyond this run's last are removed)")
+      .type("FILE.png|DIR")
+      .path_kind(PathKind::OutputFile, ".png");
+}
+
+// Where the pairs come from: a list of pairs, the frames or a source, and how many are run.
+void add_source_options(CommandSpec& sub, FlowOptions& o) {
+  sub.add("--pairs", &o.pairs, "A list file of pairs: PREV NEXT a line")
+      .type("FILE")
+      .path_kind(PathKind::InputFile);
+  sub.add("--max-pairs", &o.max_pairs, "Stop a sequence after N pairs (0 = all)")
+      .in_range(0, 100000000);
+  add_progress_flag(sub, &o.progress);
+  sub.add("PREV", &o.first, "First frame (image file, or raw with --size), or SOURCE")
+      .type("PREV|SOURCE")
+      .path_kind(PathKind::InputSource);
+  sub.add("NEXT", &o.second, "Second frame (same size)")
+      .type("NEXT")
+      .path_kind(PathKind::InputFile);
+}
+
 }  // namespace
 
 const std::vector<std::string> kFlowExamples = {
@@ -367,63 +437,14 @@ Command add_flow_command(CommandSpec& app) {
   CommandSpec* sub = &app.add_subcommand(
       "flow",
       "Estimate the flow between two frames, or between every consecutive pair of a sequence");
-  sub->footer =
-      "Forms:\n"
-      "  pxflow flow [OPTIONS] PREV NEXT     one pair\n"
-      "  pxflow flow [OPTIONS] SOURCE        every consecutive pair of SOURCE: a video file\n"
-      "                                      (OpenCV videoio), a folder of frames or a quoted\n"
-      "                                      glob ('f/*.png'), both sorted by name, a file of raw\n"
-      "                                      frames back to back (--size), or - (raw frames on\n"
-      "                                      standard input, --size)\n"
-      "  pxflow flow [OPTIONS] --pairs LIST  each line of LIST: PREV NEXT (relative to LIST's\n"
-      "                                      folder; a pipe's to the working directory);\n"
-      "                                      pairs may differ in size, each is its own problem\n"
-      "Every input may be a file or a pipe (a FIFO, /dev/stdin, bash's <(cat a.raw)).\n"
-      "A sequence prints a line per pair and a summary (pairs, frames, pairs/s); --jsonl and\n"
-      "--csv write one object or row per pair (- = stdout, the lines then go to stderr with\n"
-      "--progress or on a terminal).\n"
-      "A sequence that stops early (a signal, a closed pipe, a bad frame, a failed backend)\n"
-      "keeps its completed pairs in --jsonl and --csv, each file then ending in one marker line\n"
-      "(a finished one has none):\n"
-      "  --jsonl  {\"incomplete\": {\"records\": 243, \"stopped_by\": \"SIGINT\"}}\n"
-      "  --csv    # incomplete: 243 records, stopped by SIGINT";
+  sub->footer = kFlowForms;
   o->problem.add_to(*sub);
-  sub->add("--size", &o->size,
-           "Inputs are raw 8-bit frames of WIDTHxHEIGHT (e.g. 64x64), whatever their name")
-      .type("WxH");
-  sub->add("--crop", &o->crop,
-           "Use the window WxH+X+Y of every frame (e.g. 64x64+100+40), before --bin")
-      .type("WxH+X+Y");
-  sub->add("--bin", &o->bin, "Average N x N pixels into one (after --crop)").in_range(1, 64);
+  add_frame_options(*sub, *o);
   add_backend_option(*sub, o->backend);
   add_threads_option(*sub, o->backend_options.threads);
   add_device_option(*sub, o->backend_options.device);
-  add_json_option(*sub, o->json, "one object, of one pair (a sequence: --jsonl)");
-  sub->add("--jsonl", &o->jsonl,
-           "Write one JSON object per pair, one per line, to FILE (- = stdout)")
-      .type("FILE")
-      .path_kind(PathKind::OutputFile, ".jsonl");
-  sub->add("--csv", &o->csv, "Write one CSV row per pair to FILE (- = stdout)")
-      .type("FILE")
-      .path_kind(PathKind::OutputFile, ".csv");
-  sub->add("--draw", &o->draw,
-           "Draw the POIs, their vectors and the frame flow into FILE.png (one pair) "
-           "or into the folder DIR as pair-NNNNNN.png (a sequence; pictures of an "
-           "earlier run beyond this run's last are removed)")
-      .type("FILE.png|DIR")
-      .path_kind(PathKind::OutputFile, ".png");
-  sub->add("--pairs", &o->pairs, "A list file of pairs: PREV NEXT a line")
-      .type("FILE")
-      .path_kind(PathKind::InputFile);
-  sub->add("--max-pairs", &o->max_pairs, "Stop a sequence after N pairs (0 = all)")
-      .in_range(0, 100000000);
-  add_progress_flag(*sub, &o->progress);
-  sub->add("PREV", &o->first, "First frame (image file, or raw with --size), or SOURCE")
-      .type("PREV|SOURCE")
-      .path_kind(PathKind::InputSource);
-  sub->add("NEXT", &o->second, "Second frame (same size)")
-      .type("NEXT")
-      .path_kind(PathKind::InputFile);
+  add_output_options(*sub, *o);
+  add_source_options(*sub, *o);
   return {sub,
           [o, sub] {
             o->json_given = sub->count("--json") > 0;

@@ -2,6 +2,7 @@
 // combined into one verdict and one check file (docs/ci-campaigns.md, "Campaigns over a CI
 // matrix").
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "check_merge.hpp"
 #include "commands.hpp"

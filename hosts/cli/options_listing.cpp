@@ -1,5 +1,7 @@
 #include "options_listing.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "json_document.hpp"
 #include "real_options.hpp"
 #include "sample_data.hpp"

@@ -7,6 +7,7 @@
 #pragma once
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -50,6 +51,29 @@ class Session {
                          const std::string& hint, bool fatal);
 
  private:
+  // One request as exchange() waits for its reply.
+  struct Request {
+    std::string name;  // the message's name, for failure lines
+    std::uint8_t seq = 0;
+    std::uint8_t expect = 0;             // the reply's type
+    Clock::duration wait{};              // the allowance of one wait
+    std::string allowed_text, for_work;  // "2.5 s", " for ..." (the work), for failure lines
+  };
+
+  // Writes the frame, after a lone delimiter when `delimit`; a broken link is a fatal DutError.
+  void send(const std::string& name, std::span<const std::uint8_t> frame, bool delimit,
+            Clock::time_point deadline);
+  // One attempt's wait: the reply to `r`, or nullopt when it is to be sent again (no answer in
+  // time, a NAK, a corrupted reply that nothing valid followed); `problem` then says why.
+  std::optional<Packet> await_reply(const Request& r, Clock::time_point deadline,
+                                    std::string& problem);
+  // Reads what the link has into pending_, waiting up to `until`; 0: nothing came.
+  std::size_t read_more(const std::string& name, Clock::time_point until);
+  // Feeds the next pending byte to rx_; too many bytes with no valid frame is a fatal DutError.
+  FrameReceiver::Event next_event(const std::string& name);
+  // A reply that copies the request's seq: the packet when of the type expected, else a DutError.
+  Packet accept_reply(const Request& r, const Packet& p);
+
   std::string label_;
   std::unique_ptr<Link> link_;
   std::chrono::duration<double> timeout_;

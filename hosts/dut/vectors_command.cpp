@@ -213,6 +213,68 @@ std::vector<std::string> vector_files(const std::string& format) {
   return {"manifest.json", "pxflow_vectors.h", kCArrays, "pxflow_vectors_check.c"};
 }
 
+// The frames of every pair back to back, prev then next (frames.bin, pxv_frames).
+std::string frames_bytes(const Vectors& v) {
+  std::string frames;
+  for (const auto& op : v.pairs) {
+    frames.append(op.prev.begin(), op.prev.end());
+    frames.append(op.next.begin(), op.next.end());
+  }
+  return frames;
+}
+
+// Per pair: the bits of flow_x and flow_y, quality, meancount, 4 bytes each, little-endian
+// (flow.bin, pxv_flow).
+std::string flow_bytes(const Vectors& v) {
+  std::string flow;
+  for (const FrameResult& r : v.answer.results) {
+    put32(flow, std::bit_cast<std::uint32_t>(r.flow_x));
+    put32(flow, std::bit_cast<std::uint32_t>(r.flow_y));
+    put32(flow, static_cast<std::uint32_t>(r.quality));
+    put32(flow, static_cast<std::uint32_t>(r.meancount));
+  }
+  return flow;
+}
+
+// pxflow_vectors.h of --format c: the problem as macros, the arrays and the checker declared.
+std::string c_header(const Vectors& v, const VectorsArgs& a) {
+  std::ostringstream h;
+  h << "/* pxflow test vectors (pxflow vectors --format c): " << counted(v.pairs.size(), "pair")
+    << " of " << v.p.width << "x" << v.p.height << ", S=" << v.p.search_radius
+    << " B=" << v.p.blocks << ", " << source_text(a)
+    << ". Layout: manifest.json. */\n#ifndef PXFLOW_VECTORS_H\n"
+    << "#define PXFLOW_VECTORS_H\n#include <stdint.h>\n#define PXV_PAIRS " << v.pairs.size()
+    << "u\n#define PXV_WIDTH " << v.p.width << "u\n#define PXV_HEIGHT " << v.p.height
+    << "u\n#define PXV_POIS " << poi_count(v.p) << "u\n#define PXV_S " << v.p.search_radius
+    << "u\n#define PXV_T " << v.p.tile << "u\n#define PXV_B " << v.p.blocks << "u\n#define PXV_FT "
+    << v.p.feature_threshold << "u\n#define PXV_VT " << v.p.sad_threshold << "u\n#define PXV_HF "
+    << (v.p.hist_filter ? 1 : 0) << "u\n#define PXV_MINCOUNT " << v.p.min_count
+    << "u\n#define PXV_GC " << (v.p.gyro_comp ? 1 : 0) << "u\n"
+    << "extern const uint8_t pxv_frames[], pxv_records[], pxv_flow[];\n"
+    << "long pxv_check_records(uint32_t pair, const uint8_t *records);\n"
+    << "int pxv_check_flow(uint32_t pair, uint32_t flow_x_bits, uint32_t flow_y_bits, "
+       "int32_t quality);\n#endif\n";
+  return h.str();
+}
+
+// The files of a.format, into `out` (one planned file per name of vector_files()).
+void write_vector_files(const Vectors& v, const VectorsArgs& a,
+                        std::map<std::string, OutputFile*>& out) {
+  const std::string frames = frames_bytes(v), flow = flow_bytes(v);
+  const std::string records = records_bytes(v.answer.records);
+  out["manifest.json"]->write(json_document(manifest(v, a)));
+  if (a.format == "bin") {
+    out["frames.bin"]->write(frames);
+    out["records.bin"]->write(records);
+    out["flow.bin"]->write(flow);
+  } else {
+    out["pxflow_vectors.h"]->write(c_header(v, a));
+    out[kCArrays]->write("#include \"pxflow_vectors.h\"\n" + c_array("pxv_frames", frames) +
+                         c_array("pxv_records", records) + c_array("pxv_flow", flow));
+    out["pxflow_vectors_check.c"]->write(kCChecker);
+  }
+}
+
 int write_vectors(const VectorsArgs& a) {
   OutputPlan plan;
   PairList list;  // read once: --from may be a pipe
@@ -230,45 +292,7 @@ int write_vectors(const VectorsArgs& a) {
   const std::vector<std::string> previous = manifest_names(a.out, kVectorsManifest);
   plan.prepare();
   const Vectors v = make_vectors(a, list);
-  std::string frames, flow;
-  for (const auto& op : v.pairs) {
-    frames.append(op.prev.begin(), op.prev.end());
-    frames.append(op.next.begin(), op.next.end());
-  }
-  for (const FrameResult& r : v.answer.results) {
-    put32(flow, std::bit_cast<std::uint32_t>(r.flow_x));
-    put32(flow, std::bit_cast<std::uint32_t>(r.flow_y));
-    put32(flow, static_cast<std::uint32_t>(r.quality));
-    put32(flow, static_cast<std::uint32_t>(r.meancount));
-  }
-  const std::string records = records_bytes(v.answer.records);
-  out["manifest.json"]->write(json_document(manifest(v, a)));
-  if (a.format == "bin") {
-    out["frames.bin"]->write(frames);
-    out["records.bin"]->write(records);
-    out["flow.bin"]->write(flow);
-  } else {
-    std::ostringstream h;
-    h << "/* pxflow test vectors (pxflow vectors --format c): " << counted(v.pairs.size(), "pair")
-      << " of " << v.p.width << "x" << v.p.height << ", S=" << v.p.search_radius
-      << " B=" << v.p.blocks << ", " << source_text(a)
-      << ". Layout: manifest.json. */\n#ifndef PXFLOW_VECTORS_H\n"
-      << "#define PXFLOW_VECTORS_H\n#include <stdint.h>\n#define PXV_PAIRS " << v.pairs.size()
-      << "u\n#define PXV_WIDTH " << v.p.width << "u\n#define PXV_HEIGHT " << v.p.height
-      << "u\n#define PXV_POIS " << poi_count(v.p) << "u\n#define PXV_S " << v.p.search_radius
-      << "u\n#define PXV_T " << v.p.tile << "u\n#define PXV_B " << v.p.blocks
-      << "u\n#define PXV_FT " << v.p.feature_threshold << "u\n#define PXV_VT " << v.p.sad_threshold
-      << "u\n#define PXV_HF " << (v.p.hist_filter ? 1 : 0) << "u\n#define PXV_MINCOUNT "
-      << v.p.min_count << "u\n#define PXV_GC " << (v.p.gyro_comp ? 1 : 0) << "u\n"
-      << "extern const uint8_t pxv_frames[], pxv_records[], pxv_flow[];\n"
-      << "long pxv_check_records(uint32_t pair, const uint8_t *records);\n"
-      << "int pxv_check_flow(uint32_t pair, uint32_t flow_x_bits, uint32_t flow_y_bits, "
-         "int32_t quality);\n#endif\n";
-    out["pxflow_vectors.h"]->write(h.str());
-    out[kCArrays]->write("#include \"pxflow_vectors.h\"\n" + c_array("pxv_frames", frames) +
-                         c_array("pxv_records", records) + c_array("pxv_flow", flow));
-    out["pxflow_vectors_check.c"]->write(kCChecker);
-  }
+  write_vector_files(v, a, out);
   // The other format's files of an earlier run go: the folder holds one set of vectors.
   listed.write(manifest_text(vector_files(a.format)));
   std::vector<std::string> may_write = vector_files("bin");

@@ -122,28 +122,125 @@ BatchStats FlowRunner::run(std::span<const FramePair> pairs, const Params& p,
   return stats;
 }
 
-void FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
-                           std::span<PoiRecord> out, const RunOptions& options,
-                           BatchStats& stats) const {
-  const std::size_t n = pairs.size();
-  const std::uint32_t frame = static_cast<std::uint32_t>(p.width * p.height);
-  const std::uint32_t pois = static_cast<std::uint32_t>(poi_count(p));
-  const std::uint32_t rec_bytes = pois * static_cast<std::uint32_t>(sizeof(PoiRecord));
-
+// Where one cluster run ("chunk") puts its parameter block's areas in L2 and its records in L1,
+// and the guard zones around them: the gaps between the L2 areas (up to the next area's start)
+// and after the last, and the L1 heap past the records.
+struct ChunkLayout {
+  struct Zone {
+    std::uint32_t at, bytes;
+  };
   pxflow_gap8_params block{};
+  std::size_t pairs = 0;
+  std::uint32_t frame = 0, pois = 0, rec_bytes = 0;  // per pair: frame bytes, POIs, record bytes
+  std::uint32_t l2_records_end = 0, l1_records_end = 0, l1_heap_end = 0;
+  Zone before_l2{}, after_l2{}, after_results{}, free_l1{};
+};
+
+namespace {
+
+// The frames of the chunk's pairs into L2, back to back: each pair's prev, then its next.
+void write_frames(gap8::Memory& mem, const ChunkLayout& l, std::span<const FramePair> pairs,
+                  const Params& p) {
+  for (std::size_t i = 0; i < l.pairs; ++i) {
+    for (int which = 0; which < 2; ++which) {
+      const FrameView& f = which == 0 ? pairs[i].prev : pairs[i].next;
+      std::uint32_t at = l.block.frames_l2 + static_cast<std::uint32_t>((2 * i + which) * l.frame);
+      for (int y = 0; y < p.height; ++y, at += p.width) mem.Write(at, f.row(y), p.width);
+    }
+  }
+}
+
+void fill_guards(gap8::Memory& mem, const ChunkLayout& l) {
+  const std::vector<std::uint8_t> sentinel(std::max(kGuardBytes * 2, std::size_t{l.free_l1.bytes}),
+                                           kGuardByte);
+  for (const ChunkLayout::Zone& z : {l.before_l2, l.after_l2, l.after_results, l.free_l1})
+    mem.Write(z.at, sentinel.data(), z.bytes);
+}
+
+std::vector<std::uint8_t> read_zone(gap8::Memory& mem, const ChunkLayout::Zone& z) {
+  std::vector<std::uint8_t> bytes(z.bytes);
+  mem.Read(z.at, bytes.data(), z.bytes);
+  return bytes;
+}
+
+// After the run: the tests' planted overrun stored, then every guard zone checked. In L1 the
+// records of the last pair run are the last allocation, or the fast tables are: the zone starts
+// at the allocator's final mark, read from `l1_next_addr`.
+void check_guards(gap8::Memory& mem, const ChunkLayout& l, const RunOptions& options,
+                  std::uint32_t l1_next_addr) {
+  const std::uint8_t planted = 0;
+  if (options.plant_past_l2_records)
+    mem.Write(l.l2_records_end + options.plant_past_l2_records - 1, &planted, 1);
+  if (options.plant_past_l1_records)
+    mem.Write(l.l1_records_end + options.plant_past_l1_records - 1, &planted, 1);
+  const std::uint32_t records = l.pois * static_cast<std::uint32_t>(l.pairs);
+  check_guard_before(read_zone(mem, l.before_l2), "gap8 model (L2 records)");
+  check_guard_after(read_zone(mem, l.after_l2), records, "gap8 model (L2 records)");
+  check_guard_after(read_zone(mem, l.after_results), l.pairs, "gap8 model (L2 results, per pair)");
+  std::uint32_t l1_next = 0;
+  mem.Read(l1_next_addr, &l1_next, sizeof l1_next);
+  if (l1_next < l.l1_records_end || l1_next > l.l1_heap_end)
+    throw BackendError("gap8 model: the kernel's L1 allocations end at " + std::to_string(l1_next) +
+                       ", outside its records' end and the heap's");
+  check_guard_after(read_zone(mem, {l1_next, l.l1_heap_end - l1_next}), l.pois,
+                    l1_next == l.l1_records_end
+                        ? "gap8 model (L1 records)"
+                        : "gap8 model (L1, past the tables after the records)");
+}
+
+// The records into `out`, the kernel's results per pair appended to `stats`.
+void read_outputs(gap8::Memory& mem, const ChunkLayout& l, std::span<PoiRecord> out,
+                  BatchStats& stats) {
+  mem.Read(l.block.records_l2, out.data(), static_cast<std::uint32_t>(l.rec_bytes * l.pairs));
+  const std::size_t first = stats.pairs.size();
+  stats.pairs.resize(first + l.pairs);
+  mem.Read(l.block.results_l2, &stats.pairs[first],
+           static_cast<std::uint32_t>(l.pairs * sizeof(pxflow_gap8_result)));
+}
+
+void add_core_totals(gap8::Cluster& cluster, int cores, BatchStats& stats) {
+  for (int c = 0; c < cores; ++c) {
+    const gap8::EventTotals t = cluster.core(c).Totals();
+    for (std::size_t e = 0; e < t.size(); ++e) stats.cores[c][e] += t[e];
+  }
+}
+
+}  // namespace
+
+ChunkLayout FlowRunner::chunk_layout(const Params& p, std::size_t n,
+                                     const RunOptions& options) const {
+  ChunkLayout l;
+  l.pairs = n;
+  l.frame = static_cast<std::uint32_t>(p.width * p.height);
+  l.pois = static_cast<std::uint32_t>(poi_count(p));
+  l.rec_bytes = l.pois * static_cast<std::uint32_t>(sizeof(PoiRecord));
+  pxflow_gap8_params& block = l.block;
   block.magic = PXFLOW_GAP8_MAGIC;
   block.spec = spec_params(p);
   block.pairs = static_cast<std::uint32_t>(n);
   block.cores = options.cores;
   block.split = options.chunked ? PXFLOW_GAP8_SPLIT_CHUNKED : PXFLOW_GAP8_SPLIT_ROUND_ROBIN;
   block.frames_l2 = io_base_;
-  block.records_l2 = io_base_ + align_up(std::uint64_t(2) * frame * n) + kGuardBytes;
-  block.results_l2 = block.records_l2 + align_up(std::uint64_t(rec_bytes) * n) + kGuardBytes;
+  block.records_l2 = io_base_ + align_up(std::uint64_t(2) * l.frame * n) + kGuardBytes;
+  block.results_l2 = block.records_l2 + align_up(std::uint64_t(l.rec_bytes) * n) + kGuardBytes;
   const std::uint32_t results_end =
       block.results_l2 + static_cast<std::uint32_t>(n * sizeof(pxflow_gap8_result));
-  const std::uint32_t l1_records_end =
-      l1_heap_start_ + align_up(pxflow_gap8_l1_bytes(p.width, p.height, pois, planes_));
+  l.l1_records_end =
+      l1_heap_start_ + align_up(pxflow_gap8_l1_bytes(p.width, p.height, l.pois, planes_));
+  l.l2_records_end = block.records_l2 + l.rec_bytes * static_cast<std::uint32_t>(n);
+  const std::uint32_t frames_end = io_base_ + 2 * l.frame * static_cast<std::uint32_t>(n);
+  l.before_l2 = {frames_end, block.records_l2 - frames_end};
+  l.after_l2 = {l.l2_records_end, block.results_l2 - l.l2_records_end};
+  l.after_results = {results_end, kGuardBytes};
+  l.l1_heap_end = l1_heap_start_ + l1_heap_bytes_;
+  l.free_l1 = {l.l1_records_end, l.l1_heap_end - l.l1_records_end};
+  return l;
+}
 
+void FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
+                           std::span<PoiRecord> out, const RunOptions& options,
+                           BatchStats& stats) const {
+  const ChunkLayout l = chunk_layout(p, pairs.size(), options);
   gap8::ClusterConfig config;
   config.cores = options.cores;
   config.contention = options.contention;
@@ -151,69 +248,18 @@ void FlowRunner::run_chunk(std::span<const FramePair> pairs, const Params& p,
   gap8::Cluster cluster(config);
   gap8::Memory& mem = cluster.memory();
   mem.Write(GAP8_L2_BASE, l2_image_.data(), static_cast<std::uint32_t>(l2_image_.size()));
-  mem.Write(params_addr_, &block, sizeof block);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int which = 0; which < 2; ++which) {
-      const FrameView& f = which == 0 ? pairs[i].prev : pairs[i].next;
-      std::uint32_t at = block.frames_l2 + static_cast<std::uint32_t>((2 * i + which) * frame);
-      for (int y = 0; y < p.height; ++y, at += p.width) mem.Write(at, f.row(y), p.width);
-    }
-  }
-  // Guards: the gaps between the L2 areas (up to the next area's start) and after the last.
-  const std::uint32_t l2_records_end = block.records_l2 + rec_bytes * static_cast<std::uint32_t>(n);
-  struct Zone {
-    std::uint32_t at, bytes;
-  };
-  const std::uint32_t frames_end = io_base_ + 2 * frame * static_cast<std::uint32_t>(n);
-  const Zone before_l2{frames_end, block.records_l2 - frames_end};
-  const Zone after_l2{l2_records_end, block.results_l2 - l2_records_end};
-  const Zone after_results{results_end, kGuardBytes};
-  const std::uint32_t l1_heap_end = l1_heap_start_ + l1_heap_bytes_;
-  const Zone free_l1{l1_records_end, l1_heap_end - l1_records_end};
-  const std::vector<std::uint8_t> sentinel(std::max(kGuardBytes * 2, std::size_t{free_l1.bytes}),
-                                           kGuardByte);
-  for (const Zone& z : {before_l2, after_l2, after_results, free_l1})
-    mem.Write(z.at, sentinel.data(), z.bytes);
+  mem.Write(params_addr_, &l.block, sizeof l.block);
+  write_frames(mem, l, pairs, p);
+  fill_guards(mem, l);
   cluster.Start(entry_);
   const gap8::RunResult result = cluster.Run();
   if (result.fault) throw BackendError("gap8: kernel faulted: " + result.fault->Message());
   if (result.exit_code != 0)
     throw BackendError("gap8: kernel exited with status " + std::to_string(result.exit_code));
-
-  const std::uint8_t planted = 0;
-  if (options.plant_past_l2_records)
-    mem.Write(l2_records_end + options.plant_past_l2_records - 1, &planted, 1);
-  if (options.plant_past_l1_records)
-    mem.Write(l1_records_end + options.plant_past_l1_records - 1, &planted, 1);
-  auto zone = [&](const Zone& z) {
-    std::vector<std::uint8_t> bytes(z.bytes);
-    mem.Read(z.at, bytes.data(), z.bytes);
-    return bytes;
-  };
-  const std::uint32_t records = pois * static_cast<std::uint32_t>(n);
-  check_guard_before(zone(before_l2), "gap8 model (L2 records)");
-  check_guard_after(zone(after_l2), records, "gap8 model (L2 records)");
-  check_guard_after(zone(after_results), n, "gap8 model (L2 results, per pair)");
-  // In L1 the records of the last pair run are the last allocation, or the fast tables are.
-  std::uint32_t l1_next = 0;
-  mem.Read(l1_next_addr_, &l1_next, sizeof l1_next);
-  if (l1_next < l1_records_end || l1_next > l1_heap_end)
-    throw BackendError("gap8 model: the kernel's L1 allocations end at " + std::to_string(l1_next) +
-                       ", outside its records' end and the heap's");
-  check_guard_after(zone({l1_next, l1_heap_end - l1_next}), pois,
-                    l1_next == l1_records_end
-                        ? "gap8 model (L1 records)"
-                        : "gap8 model (L1, past the tables after the records)");
-  mem.Read(block.records_l2, out.data(), static_cast<std::uint32_t>(rec_bytes * n));
-  const std::size_t first = stats.pairs.size();
-  stats.pairs.resize(first + n);
-  mem.Read(block.results_l2, &stats.pairs[first],
-           static_cast<std::uint32_t>(n * sizeof(pxflow_gap8_result)));
+  check_guards(mem, l, options, l1_next_addr_);
+  read_outputs(mem, l, out, stats);
   stats.cycles += result.cycles;
-  for (int c = 0; c < options.cores; ++c) {
-    const gap8::EventTotals t = cluster.core(c).Totals();
-    for (std::size_t e = 0; e < t.size(); ++e) stats.cores[c][e] += t[e];
-  }
+  add_core_totals(cluster, options.cores, stats);
 }
 
 }  // namespace pxflow::gap8_host

@@ -34,6 +34,8 @@ struct BatchStats {
   std::vector<gap8::EventTotals> cores;   // per core: counters summed over the runs
 };
 
+struct ChunkLayout;  // one cluster run's areas and guard zones (gap8_flow_runner.cpp)
+
 class FlowRunner {
  public:
   // Throws BackendError when the variant's image is missing or cannot be loaded.
@@ -53,6 +55,8 @@ class FlowRunner {
  private:
   // Pairs per cluster run: as many as L2 holds beside the image.
   std::size_t pairs_per_chunk(const Params& p) const;
+  // Where a chunk of `pairs` pairs puts its areas, and its parameter block.
+  ChunkLayout chunk_layout(const Params& p, std::size_t pairs, const RunOptions& options) const;
   void run_chunk(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
                  const RunOptions& options, BatchStats& stats) const;
 

@@ -1,5 +1,7 @@
 #include "json_document.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "pxflow_version.h"
 
 namespace pxflow {

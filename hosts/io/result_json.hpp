@@ -1,6 +1,8 @@
 // Results out as JSON (nlohmann::json): the frame estimate, the counts and the records.
+// Declarations only need the type's name: the header includes <nlohmann/json_fwd.hpp>, and a file
+// that builds, reads or copies a Json includes <nlohmann/json.hpp> itself.
 #pragma once
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <span>
 #include <string>
 

@@ -8,7 +8,7 @@ are blanked, then a brace is a function's body when the text before it (since th
 or '}') has a ')' and it opens at namespace or class level. A function's length is its lines from the signature's first
 line to its closing brace. One line per function over N lines (default 60), longest first:
 "path:line: name: L lines". With --fail the exit status is 1 when any is listed (the
-harness_short_functions test), else 0.
+hosts_short_functions test), else 0.
 """
 import argparse
 import pathlib

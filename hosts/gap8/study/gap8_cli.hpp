@@ -3,7 +3,10 @@
 // Tables I-III.
 #pragma once
 #include "commands.hpp"
-#include "report.hpp"
+
+namespace pxflow {
+struct ReportInputs;  // report.hpp
+}  // namespace pxflow
 
 namespace pxflow::cli {
 

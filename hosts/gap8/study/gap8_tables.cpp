@@ -168,65 +168,79 @@ namespace {
 // Cycles, instructions and operations are whole counts, written as JSON integers; the Study keeps
 // them as double for its ratios (and the paper's are "k" figures, 624.2 * 1000).
 std::int64_t whole(double count) { return std::llround(count); }
+
+using nlohmann::json;
+
+json phases_json(const Phases& p) {
+  return json{{"init", whole(p.init)},
+              {"dma", whole(p.dma)},
+              {"flow", whole(p.flow)},
+              {"averaging", whole(p.averaging)},
+              {"output", whole(p.output)}};
+}
+
+// Per core: its counters and its IPC (instructions / active cycles).
+json cores_json(const std::vector<gap8::EventTotals>& cores) {
+  json out = json::array();
+  for (const auto& t : cores) {
+    const double active = double(t[GAP8_EVT_ACTIVE_CYCLES]);
+    out.push_back({{"instructions", t[GAP8_EVT_INSTR]},
+                   {"active_cycles", t[GAP8_EVT_ACTIVE_CYCLES]},
+                   {"ipc", active > 0 ? double(t[GAP8_EVT_INSTR]) / active : 0.0},
+                   {"ld_stall", t[GAP8_EVT_LD_STALL]},
+                   {"tcdm_cont", t[GAP8_EVT_TCDM_CONT]}});
+  }
+  return out;
+}
+
+// The figures the paper gives (those it does not are left out).
+json paper_json(const PaperFigures& p) {
+  json pj = json::object();
+  auto put = [&](const char* key, std::optional<double> x) {
+    if (x) pj[key] = *x;
+  };
+  auto put_count = [&](const char* key, std::optional<double> x) {
+    if (x) pj[key] = whole(*x);
+  };
+  put_count("cycles", p.cycles);
+  put_count("instructions", p.instructions);
+  put_count("interpolations", p.interpolations);
+  put_count("sad_ops", p.sad_ops);
+  put("speedup", p.speedup);
+  put("amdahl_limit", p.amdahl_limit);
+  put("fps", p.fps);
+  if (p.phases) {
+    pj["phases"] = {{"init", whole(p.phases->init)},
+                    {"dma", whole(p.phases->dma)},
+                    {"flow", whole(p.phases->flow)},
+                    {"averaging", whole(p.phases->averaging)}};
+  }
+  return pj;
+}
+
+// One variant on one core count: the model's figures, its cores', and the paper's beside them.
+json measure_json(const Study& s, Gap8Variant v, int cores, const Measure& m) {
+  json e{{"cycles", whole(m.cycles)},
+         {"instructions", whole(m.instructions)},
+         {"interpolations", whole(m.interpolations)},
+         {"sad_ops", whole(m.sad_ops)},
+         {"phases", phases_json(m.phases)},
+         {"speedup", speedup(s, v, cores)},
+         {"amdahl_limit", amdahl_limit(s, v, cores)},
+         {"fps", fps(s, m.cycles)},
+         {"accepted_pois", m.accepted}};
+  e["per_core"] = cores_json(m.cores);
+  if (const auto p = paper_for(s, v, cores)) e["paper"] = paper_json(*p);
+  return e;
+}
+
 }  // namespace
 
 Json to_json(const Study& s) {
-  using nlohmann::json;
   json variants = json::object();
   for (const auto& [v, by] : in_order(s)) {
     json per = json::object();
-    for (const auto& [cores, m] : by) {
-      auto phases = [](const Phases& p) {
-        return json{{"init", whole(p.init)},
-                    {"dma", whole(p.dma)},
-                    {"flow", whole(p.flow)},
-                    {"averaging", whole(p.averaging)},
-                    {"output", whole(p.output)}};
-      };
-      json e{{"cycles", whole(m.cycles)},
-             {"instructions", whole(m.instructions)},
-             {"interpolations", whole(m.interpolations)},
-             {"sad_ops", whole(m.sad_ops)},
-             {"phases", phases(m.phases)},
-             {"speedup", speedup(s, v, cores)},
-             {"amdahl_limit", amdahl_limit(s, v, cores)},
-             {"fps", fps(s, m.cycles)},
-             {"accepted_pois", m.accepted}};
-      json cores_json = json::array();
-      for (const auto& t : m.cores) {
-        const double active = double(t[GAP8_EVT_ACTIVE_CYCLES]);
-        cores_json.push_back({{"instructions", t[GAP8_EVT_INSTR]},
-                              {"active_cycles", t[GAP8_EVT_ACTIVE_CYCLES]},
-                              {"ipc", active > 0 ? double(t[GAP8_EVT_INSTR]) / active : 0.0},
-                              {"ld_stall", t[GAP8_EVT_LD_STALL]},
-                              {"tcdm_cont", t[GAP8_EVT_TCDM_CONT]}});
-      }
-      e["per_core"] = cores_json;
-      if (const auto p = paper_for(s, v, cores)) {
-        json pj = json::object();
-        auto put = [&](const char* key, std::optional<double> x) {
-          if (x) pj[key] = *x;
-        };
-        auto put_count = [&](const char* key, std::optional<double> x) {
-          if (x) pj[key] = whole(*x);
-        };
-        put_count("cycles", p->cycles);
-        put_count("instructions", p->instructions);
-        put_count("interpolations", p->interpolations);
-        put_count("sad_ops", p->sad_ops);
-        put("speedup", p->speedup);
-        put("amdahl_limit", p->amdahl_limit);
-        put("fps", p->fps);
-        if (p->phases) {
-          pj["phases"] = {{"init", whole(p->phases->init)},
-                          {"dma", whole(p->phases->dma)},
-                          {"flow", whole(p->phases->flow)},
-                          {"averaging", whole(p->phases->averaging)}};
-        }
-        e["paper"] = pj;
-      }
-      per[std::to_string(cores)] = e;
-    }
+    for (const auto& [cores, m] : by) per[std::to_string(cores)] = measure_json(s, v, cores, m);
     variants[gap8_variant(v).name] = per;
   }
   json out{{"pair", s.pair_name},

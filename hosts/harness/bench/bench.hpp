@@ -3,6 +3,7 @@
 // clock; speed-ups only between rows of the same clock.
 #pragma once
 #include <iosfwd>
+#include <nlohmann/json.hpp>  // complete: BenchRow and BenchReport hold Json by value
 #include <optional>
 #include <string>
 #include <vector>

@@ -14,6 +14,7 @@
 #include "csv_table.hpp"
 #include "errors.hpp"
 #include "number_text.hpp"
+#include "result_fields_json.hpp"
 
 namespace pxflow {
 namespace {

@@ -8,6 +8,7 @@
 // below, and otherwise calls it inconclusive.
 #pragma once
 #include <iosfwd>
+#include <nlohmann/json.hpp>  // complete: BenchFile holds a Json by value
 #include <span>
 #include <string>
 #include <vector>

@@ -4,6 +4,7 @@
 #include "bench.hpp"
 #include "machine_state.hpp"
 #include "provenance.hpp"
+#include "result_fields_json.hpp"
 
 namespace pxflow {
 namespace {

@@ -16,6 +16,7 @@
 #include "interrupt.hpp"
 #include "machine_state.hpp"
 #include "registry.hpp"
+#include "result_fields_json.hpp"
 
 namespace pxflow {
 namespace {

@@ -6,6 +6,7 @@
 // one side of a comparison.
 #pragma once
 #include <iosfwd>
+#include <nlohmann/json.hpp>  // complete: BenchProcess holds a Json by value
 #include <span>
 #include <string>
 #include <vector>

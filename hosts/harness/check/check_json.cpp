@@ -5,6 +5,7 @@
 
 #include "check.hpp"
 #include "errors.hpp"
+#include "result_fields_json.hpp"
 
 namespace pxflow {
 namespace {

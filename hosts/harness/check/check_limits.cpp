@@ -1,6 +1,7 @@
 #include "check_limits.hpp"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 #include "check_radius_sweep.hpp"
 #include "errors.hpp"

@@ -1,5 +1,6 @@
 #include "csv_table.hpp"
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace pxflow {

@@ -3,6 +3,7 @@
 // shows) and CSV files. Provenance comes first; every figure names its command and clock.
 #pragma once
 #include <map>
+#include <nlohmann/json.hpp>  // complete: ReportInputs holds Json by value
 #include <string>
 #include <vector>
 
