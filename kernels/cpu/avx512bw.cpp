@@ -12,8 +12,6 @@
 // slide down the window one row per dy.
 #include <immintrin.h>
 
-#include <cstring>
-
 #include "cpu_kernel.hpp"
 #include "x86_feature.hpp"
 
@@ -63,8 +61,11 @@ inline __m512i row_sad(const __m512i block[8], const __m512i cand[8]) {
 constexpr int kPositionBits = 12;
 constexpr int kRowPositions = 64;
 
-void search_chunk(const __m512i block[8], const RowLoader& loader, int radius, int chunk,
-                  __m512i& best) {
+// Always inlined: as a call, GCC kept the block and the candidate rows in stack memory and
+// passed `best` through it, which cost a quarter of the search at S = 4 and 8.
+__attribute__((always_inline)) inline void search_chunk(const __m512i block[8],
+                                                        const RowLoader& loader, int radius,
+                                                        int chunk, __m512i& best) {
   const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   const int valid = 2 * radius + 1 - 16 * chunk;  // dx' of this chunk that exist
   const __mmask16 beyond = static_cast<__mmask16>(valid >= 16 ? 0 : 0xFFFF << valid);
@@ -108,31 +109,43 @@ BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
           static_cast<int>(position / kRowPositions) - S, key >> kPositionBits};
 }
 
+// Eight rows of 8 bytes, row r of `p + r * stride` in qword r. Each row is a vpbroadcastq from
+// memory (a load) merged under a one-qword mask: no store to a stack buffer that a 64-byte load
+// would then have to wait for (a failed store forward per plane cost more than the SADs).
+inline __m512i qword_rows(const std::uint8_t* p, std::ptrdiff_t stride, int n) {
+  __m512i z = _mm512_setzero_si512();
+  for (int r = 0; r < n; ++r)
+    z = _mm512_mask_broadcastq_epi64(
+        z, static_cast<__mmask8>(1u << r),
+        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p + r * stride)));
+  return z;
+}
+
 // SPEC §3 step 3 with the eight block rows as the eight qwords of a zmm: psadbw then gives one
-// direction's eight row SADs at once. The rows are gathered through a small stack buffer (three
-// column offsets u = -1, 0, +1 of rows -1..8), complemented so that pavgb floors (see
-// x86_half_pixel.hpp), averaged plane by plane, and the eight direction sums are reduced
-// together, four u16 fields per qword (a field's sum is at most 16,320: no carry).
+// direction's eight row SADs at once. For each column offset u = -1, 0, +1 the rows -1..6 and
+// 7..8 are loaded once, complemented so that pavgb floors (see x86_half_pixel.hpp), and the
+// rows starting at 0 and at +1 are the same data moved down one or two qwords (valignq), after
+// the horizontal averages. The eight direction sums are reduced together: four u16 fields per
+// qword (a field's sum is at most 16,320: no carry), two vectors folded into one, the eight sums
+// then sit as u16 in one xmm.
 void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, std::uint32_t sub[8],
                 OpCounts*) {
-  alignas(64) std::uint64_t planes[3][10];  // planes[s][v + 1]: row v from column s - 1
-  alignas(64) std::uint64_t block[8];
-  for (int v = 0; v < 10; ++v)
-    for (int s = 0; s < 3; ++s) std::memcpy(&planes[s][v], around + v * stride + s, 8);
-  for (int r = 0; r < 8; ++r) std::memcpy(&block[r], prev.data + r * prev.stride, 8);
   const __m512i ones = _mm512_set1_epi8(-1);
-  // Rows r + t (r = 0..7) of plane s, complemented.
-  auto rows = [&](int s, int t) {
-    return _mm512_xor_si512(_mm512_loadu_si512(&planes[s][t + 1]), ones);
+  __m512i top[3], low[3];  // column s - 1: rows -1..6, and rows 7..8 in qwords 0..1
+  for (int s = 0; s < 3; ++s) {
+    top[s] = _mm512_xor_si512(qword_rows(around + s, stride, 8), ones);
+    low[s] = _mm512_xor_si512(qword_rows(around + 8 * stride + s, stride, 2), ones);
+  }
+  // Rows r + t (r = 0..7) of a plane given as its rows -1..6 and 7..8.
+  auto down = [](__m512i lo8, __m512i hi2, int t) {
+    return t == 0 ? _mm512_alignr_epi64(hi2, lo8, 1) : _mm512_alignr_epi64(hi2, lo8, 2);
   };
-  const __m512i p_up = rows(1, -1), p_mid = rows(1, 0), p_down = rows(1, 1);
-  const __m512i hl_up = _mm512_avg_epu8(rows(0, -1), p_up);  // ~h(c-1, r-1)
-  const __m512i hr_up = _mm512_avg_epu8(p_up, rows(2, -1));  // ~h(c, r-1)
-  const __m512i hl = _mm512_avg_epu8(rows(0, 0), p_mid);
-  const __m512i hr = _mm512_avg_epu8(p_mid, rows(2, 0));
-  const __m512i hl_down = _mm512_avg_epu8(rows(0, 1), p_down);
-  const __m512i hr_down = _mm512_avg_epu8(p_down, rows(2, 1));
-  const __m512i q = _mm512_xor_si512(_mm512_load_si512(block), ones);
+  const __m512i hl_top = _mm512_avg_epu8(top[0], top[1]), hl_low = _mm512_avg_epu8(low[0], low[1]);
+  const __m512i hr_top = _mm512_avg_epu8(top[1], top[2]), hr_low = _mm512_avg_epu8(low[1], low[2]);
+  const __m512i p_up = top[1], p_mid = down(top[1], low[1], 0), p_down = down(top[1], low[1], 1);
+  const __m512i hl_up = hl_top, hl = down(hl_top, hl_low, 0), hl_down = down(hl_top, hl_low, 1);
+  const __m512i hr_up = hr_top, hr = down(hr_top, hr_low, 0), hr_down = down(hr_top, hr_low, 1);
+  const __m512i q = _mm512_xor_si512(qword_rows(prev.data, prev.stride, 8), ones);
   const __m512i s[8] = {_mm512_sad_epu8(hr, q),                              // k0 h(c, r)
                         _mm512_sad_epu8(_mm512_avg_epu8(hr, hr_down), q),    // k1 d(c, r)
                         _mm512_sad_epu8(_mm512_avg_epu8(p_mid, p_down), q),  // k2 g(c, r)
@@ -141,14 +154,21 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
                         _mm512_sad_epu8(_mm512_avg_epu8(hl_up, hl), q),      // k5 d(c-1, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(p_up, p_mid), q),    // k6 g(c, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(hr_up, hr), q)};     // k7 d(c, r-1)
-  for (int half = 0; half < 2; ++half) {
-    const __m512i* d = s + 4 * half;
-    const __m512i packed =
-        _mm512_or_si512(_mm512_or_si512(d[0], _mm512_slli_epi64(d[1], 16)),
-                        _mm512_or_si512(_mm512_slli_epi64(d[2], 32), _mm512_slli_epi64(d[3], 48)));
-    const auto sums = static_cast<std::uint64_t>(_mm512_reduce_add_epi64(packed));
-    for (int k = 0; k < 4; ++k) sub[4 * half + k] = (sums >> (16 * k)) & 0xFFFF;
-  }
+  auto pack = [](const __m512i* d) {  // d[k]'s qword sums in u16 field k of each qword
+    return _mm512_or_si512(
+        _mm512_or_si512(d[0], _mm512_slli_epi64(d[1], 16)),
+        _mm512_or_si512(_mm512_slli_epi64(d[2], 32), _mm512_slli_epi64(d[3], 48)));
+  };
+  const __m512i p0 = pack(s), p1 = pack(s + 4);
+  // Lanes 0..1: p0's four 128-bit lanes folded to two; lanes 2..3: p1's.
+  const __m512i f = _mm512_add_epi64(_mm512_shuffle_i64x2(p0, p1, 0x44),    // p0 lanes 0,1, p1 0,1
+                                     _mm512_shuffle_i64x2(p0, p1, 0xEE));   // p0 lanes 2,3, p1 2,3
+  const __m512i g = _mm512_add_epi64(f, _mm512_shuffle_i64x2(f, f, 0xB1));  // lane pairs summed
+  // Lane 0 holds p0's two qword halves, lane 2 p1's; one more add within each lane.
+  const __m512i h = _mm512_add_epi64(g, _mm512_shuffle_epi32(g, _MM_PERM_BADC));
+  const __m128i sums =
+      _mm_unpacklo_epi64(_mm512_castsi512_si128(h), _mm512_extracti32x4_epi32(h, 2));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(sub), _mm256_cvtepu16_epi32(sums));
   _mm256_zeroupper();
 }
 
