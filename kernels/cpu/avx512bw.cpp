@@ -55,34 +55,69 @@ inline __m512i row_sad(const __m512i block[8], const __m512i cand[8]) {
 }
 
 // The first minimum in raster order without a table: each candidate becomes the key
-// sad << 12 | (dy' * 64 + dx'), which orders by SAD first and then by raster position (the
-// tie rule of SPEC §3), and one vpminud per row keeps the smallest. Candidates beyond dx' = 2S
-// get all-ones keys. sad <= 16,320 and the position < 4,096, so a key fits 26 bits.
-constexpr int kPositionBits = 12;
+// sad << 16 | (dy' * 64 + dx'), which orders by SAD first and then by raster position (the tie
+// rule of SPEC §3), and vpminud keeps the smallest. sad <= 16,320 and the position < 4,096.
+//
+// Two rows dy', dy'+1 are keyed together, without widening: their sums a and b become
+// H = [a.lo + a.hi | b.lo + b.hi] (two vshufi64x2 and one add: u16 lane j holds dx' = j of
+// dy', lane 16 + j dx' = j of dy' + 1), then H << 16 is the key of the even lanes' SADs and
+// H & 0xFFFF0000 that of the odd ones, each ORed with the even lane's position. An odd key
+// therefore names dx' one too small: its vector gets + 1 at the end, before the two are merged.
+// Lanes beyond dx' = 2S (and the missing row after the last, 2S + 1 being odd) are masked out
+// of the vpminud. Per pair of rows this is one shuffle per row instead of the extract and the
+// zero extension each row took, both on the port vdbpsadbw and vpermd need.
+constexpr int kPositionBits = 16;
 constexpr int kRowPositions = 64;
 
-// Always inlined: as a call, GCC kept the block and the candidate rows in stack memory and
-// passed `best` through it, which cost a quarter of the search at S = 4 and 8.
-__attribute__((always_inline)) inline void search_chunk(const __m512i block[8],
-                                                        const RowLoader& loader, int radius,
-                                                        int chunk, __m512i& best) {
-  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+struct Keys {
+  __m512i even = _mm512_set1_epi32(-1);
+  __m512i odd = _mm512_set1_epi32(-1);
+};
+
+inline void slide(__m512i cand[8], const RowLoader& loader, int window_row) {
+  for (int r = 0; r < 7; ++r) cand[r] = cand[r + 1];
+  cand[7] = loader.row(window_row);
+}
+
+void search_chunk(const __m512i block[8], const RowLoader& loader, int radius, int chunk,
+                  Keys& best) {
+  // Dword i: u16 lanes 2i and 2i + 1 of H, i.e. dx' = 2 (i mod 8) of row dy' + i / 8.
+  const __m512i pairs =
+      _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, kRowPositions + 0, kRowPositions + 2,
+                        kRowPositions + 4, kRowPositions + 6, kRowPositions + 8, kRowPositions + 10,
+                        kRowPositions + 12, kRowPositions + 14);
   const int valid = 2 * radius + 1 - 16 * chunk;  // dx' of this chunk that exist
-  const __mmask16 beyond = static_cast<__mmask16>(valid >= 16 ? 0 : 0xFFFF << valid);
-  const __m512i invalid = _mm512_maskz_set1_epi32(beyond, -1);
-  __m512i position = _mm512_add_epi32(lanes, _mm512_set1_epi32(16 * chunk));
+  __mmask16 even_ok = 0, odd_ok = 0;
+  for (int i = 0; i < 8; ++i) {
+    const auto both = static_cast<__mmask16>((1u << i) | (1u << (i + 8)));
+    if (2 * i < valid) even_ok = static_cast<__mmask16>(even_ok | both);
+    if (2 * i + 1 < valid) odd_ok = static_cast<__mmask16>(odd_ok | both);
+  }
+  const __m512i high = _mm512_set1_epi32(static_cast<int>(0xFFFF0000u));
+  __m512i position = _mm512_add_epi32(pairs, _mm512_set1_epi32(16 * chunk));
   __m512i cand[8];
   for (int r = 0; r < 8; ++r) cand[r] = loader.row(r + 1);
-  for (int dy = 0; dy <= 2 * radius; ++dy) {
-    const __m512i acc = row_sad(block, cand);
-    const __m256i sum =
-        _mm256_add_epi16(_mm512_castsi512_si256(acc), _mm512_extracti64x4_epi64(acc, 1));
-    const __m512i sad = _mm512_slli_epi32(_mm512_cvtepu16_epi32(sum), kPositionBits);
-    best = _mm512_min_epu32(best, _mm512_ternarylogic_epi32(sad, position, invalid, 0xFE));
-    if (dy == 2 * radius) break;
-    position = _mm512_add_epi32(position, _mm512_set1_epi32(kRowPositions));
-    for (int r = 0; r < 7; ++r) cand[r] = cand[r + 1];
-    cand[7] = loader.row(dy + 9);
+  for (int dy = 0; dy <= 2 * radius; dy += 2) {
+    const __m512i a = row_sad(block, cand);
+    __m512i b = a;
+    __mmask16 rows = 0xFFFF;
+    if (dy < 2 * radius) {
+      slide(cand, loader, dy + 9);
+      b = row_sad(block, cand);
+    } else {
+      rows = 0x00FF;  // no row dy' + 1
+    }
+    const __m512i h = _mm512_add_epi16(_mm512_shuffle_i64x2(a, b, 0x44),   // a.lo, b.lo
+                                       _mm512_shuffle_i64x2(a, b, 0xEE));  // a.hi, b.hi
+    const __m512i even = _mm512_or_si512(_mm512_slli_epi32(h, kPositionBits), position);
+    const __m512i odd = _mm512_ternarylogic_epi32(h, high, position, 0xEA);  // (h & high) | pos
+    best.even =
+        _mm512_mask_min_epu32(best.even, static_cast<__mmask16>(even_ok & rows), best.even, even);
+    best.odd =
+        _mm512_mask_min_epu32(best.odd, static_cast<__mmask16>(odd_ok & rows), best.odd, odd);
+    if (dy + 1 >= 2 * radius) break;
+    slide(cand, loader, dy + 10);
+    position = _mm512_add_epi32(position, _mm512_set1_epi32(2 * kRowPositions));
   }
 }
 
@@ -95,14 +130,19 @@ BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
         _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev.data + r * prev.stride));
     block[r] = _mm512_permutexvar_epi32(halves, _mm512_zextsi128_si512(row));
   }
-  __m512i best = _mm512_set1_epi32(-1);
+  Keys best;
   for (int c = 0; c < chunks_of_16(S); ++c) {
     const int last_dx = (2 * S - 16 * c < 15) ? 2 * S - 16 * c : 15;
     const RowLoader loader{next.data + 1 + 16 * c, next.stride, (1ull << (last_dx + 8)) - 1,
                            _mm512_setr_epi32(0, 1, 2, 3, 2, 3, 4, 5, 1, 2, 3, 4, 3, 4, 5, 6)};
     search_chunk(block, loader, S, c, best);
   }
-  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(best));
+  // An odd key's position + 1 names its own dx'; the all-ones of lanes never replaced stay.
+  const __m512i none = _mm512_set1_epi32(-1);
+  const __m512i odd = _mm512_mask_add_epi32(best.odd, _mm512_cmpneq_epu32_mask(best.odd, none),
+                                            best.odd, _mm512_set1_epi32(1));
+  const __m512i keys = _mm512_min_epu32(best.even, odd);
+  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(keys));
   const std::uint32_t position = key & ((1u << kPositionBits) - 1);
   _mm256_zeroupper();
   return {static_cast<int>(position % kRowPositions) - S,
