@@ -121,34 +121,6 @@ void search_chunk(const __m512i block[8], const RowLoader& loader, int radius, i
   }
 }
 
-BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
-  const int S = radius;
-  const __m512i halves = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
-  __m512i block[8];
-  for (int r = 0; r < 8; ++r) {
-    const __m128i row =
-        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev.data + r * prev.stride));
-    block[r] = _mm512_permutexvar_epi32(halves, _mm512_zextsi128_si512(row));
-  }
-  Keys best;
-  for (int c = 0; c < chunks_of_16(S); ++c) {
-    const int last_dx = (2 * S - 16 * c < 15) ? 2 * S - 16 * c : 15;
-    const RowLoader loader{next.data + 1 + 16 * c, next.stride, (1ull << (last_dx + 8)) - 1,
-                           _mm512_setr_epi32(0, 1, 2, 3, 2, 3, 4, 5, 1, 2, 3, 4, 3, 4, 5, 6)};
-    search_chunk(block, loader, S, c, best);
-  }
-  // An odd key's position + 1 names its own dx'; the all-ones of lanes never replaced stay.
-  const __m512i none = _mm512_set1_epi32(-1);
-  const __m512i odd = _mm512_mask_add_epi32(best.odd, _mm512_cmpneq_epu32_mask(best.odd, none),
-                                            best.odd, _mm512_set1_epi32(1));
-  const __m512i keys = _mm512_min_epu32(best.even, odd);
-  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(keys));
-  const std::uint32_t position = key & ((1u << kPositionBits) - 1);
-  _mm256_zeroupper();
-  return {static_cast<int>(position % kRowPositions) - S,
-          static_cast<int>(position / kRowPositions) - S, key >> kPositionBits};
-}
-
 // Eight rows of 8 bytes, row r of `p + r * stride` in qword r. Each row is a vpbroadcastq from
 // memory (a load) merged under a one-qword mask: no store to a stack buffer that a 64-byte load
 // would then have to wait for (a failed store forward per plane cost more than the SADs).
@@ -159,6 +131,94 @@ inline __m512i qword_rows(const std::uint8_t* p, std::ptrdiff_t stride, int n) {
         z, static_cast<__mmask8>(1u << r),
         _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p + r * stride)));
   return z;
+}
+
+// The eight totals of eight vectors of eight qword SADs (psadbw results, each total <= 16,320),
+// as the u16 lanes of one xmm: four vectors share a vector as u16 fields of each qword (no
+// carry between fields), and the two such vectors are folded together lane by lane.
+inline __m128i sums_of_eight(const __m512i d[8]) {
+  auto pack = [](const __m512i* q) {  // q[k]'s qword sums in u16 field k of each qword
+    return _mm512_or_si512(
+        _mm512_or_si512(q[0], _mm512_slli_epi64(q[1], 16)),
+        _mm512_or_si512(_mm512_slli_epi64(q[2], 32), _mm512_slli_epi64(q[3], 48)));
+  };
+  const __m512i p0 = pack(d), p1 = pack(d + 4);
+  // Lanes 0..1: p0's four 128-bit lanes folded to two; lanes 2..3: p1's.
+  const __m512i f = _mm512_add_epi64(_mm512_shuffle_i64x2(p0, p1, 0x44),    // p0 lanes 0,1, p1 0,1
+                                     _mm512_shuffle_i64x2(p0, p1, 0xEE));   // p0 lanes 2,3, p1 2,3
+  const __m512i g = _mm512_add_epi64(f, _mm512_shuffle_i64x2(f, f, 0xB1));  // lane pairs summed
+  // Lane 0 holds p0's two qword halves, lane 2 p1's; one more add within each lane.
+  const __m512i h = _mm512_add_epi64(g, _mm512_shuffle_epi32(g, _MM_PERM_BADC));
+  return _mm_unpacklo_epi64(_mm512_castsi512_si128(h), _mm512_extracti32x4_epi32(h, 2));
+}
+
+// The last column alone, for 2S + 1 = 16k + 1 (S = 8, 16, 24): a 16-dx' chunk for one dx' would
+// spend as many vdbpsadbw as a full one. Instead each candidate (dx' = 2S, dy') is one psadbw of
+// the block's eight rows (qwords) against the window's column strip, rows dy'+1 .. dy'+8 taken
+// from the strip by valignq; eight candidates' row SADs are summed together (sums_of_eight).
+void search_last_column(const __m512i rows, Window next, int radius, Keys& best) {
+  const int side = 2 * radius + 1;
+  const std::uint8_t* strip = next.data + 1 + 2 * radius;  // window column 2S + 1
+  __m512i part[9];  // window rows 1 + 8m .. 8 + 8m (2S + 8 <= 70 rows: at most 9 parts)
+  const int parts = (side + 7 + 7) / 8;
+  for (int m = 0; m < parts; ++m) {
+    const int n = side + 7 - 8 * m;  // rows of the strip left from 1 + 8m
+    part[m] = qword_rows(strip + (1 + 8 * m) * next.stride, next.stride, n < 8 ? n : 8);
+  }
+  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  for (int g = 0; 16 * g < side; ++g) {  // dy' = 16g .. 16g + 15
+    __m128i half[2];
+    for (int h = 0; h < 2; ++h) {
+      const int m = 2 * g + h;  // dy' = 8m + j: window rows 8m + j + 1 .., qword j of part m on
+      half[h] = _mm_setzero_si128();
+      if (8 * m >= side) continue;
+      __m512i sads[8];
+      for (int j = 0; j < 8; ++j) {
+        const __m512i cand = _mm512_alignr_epi64(part[m + 1 < parts ? m + 1 : m], part[m], j);
+        sads[j] = 8 * m + j < side ? _mm512_sad_epu8(rows, cand) : _mm512_setzero_si512();
+      }
+      half[h] = sums_of_eight(sads);
+    }
+    const __m512i sad =
+        _mm512_cvtepu16_epi32(_mm256_inserti128_si256(_mm256_castsi128_si256(half[0]), half[1], 1));
+    const __m512i dy = _mm512_add_epi32(lanes, _mm512_set1_epi32(16 * g));
+    const __m512i key =
+        _mm512_or_si512(_mm512_slli_epi32(sad, kPositionBits),
+                        _mm512_add_epi32(_mm512_slli_epi32(dy, 6), _mm512_set1_epi32(2 * radius)));
+    const __mmask16 valid = _mm512_cmplt_epi32_mask(dy, _mm512_set1_epi32(side));
+    best.even = _mm512_mask_min_epu32(best.even, valid, best.even, key);
+  }
+}
+
+BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
+  const int S = radius;
+  const __m512i halves = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
+  __m512i block[8];
+  for (int r = 0; r < 8; ++r) {
+    const __m128i row =
+        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev.data + r * prev.stride));
+    block[r] = _mm512_permutexvar_epi32(halves, _mm512_zextsi128_si512(row));
+  }
+  Keys best;
+  const bool column = (2 * S + 1) % 16 == 1;
+  const int chunks = chunks_of_16(S) - (column ? 1 : 0);
+  for (int c = 0; c < chunks; ++c) {
+    const int last_dx = (2 * S - 16 * c < 15) ? 2 * S - 16 * c : 15;
+    const RowLoader loader{next.data + 1 + 16 * c, next.stride, (1ull << (last_dx + 8)) - 1,
+                           _mm512_setr_epi32(0, 1, 2, 3, 2, 3, 4, 5, 1, 2, 3, 4, 3, 4, 5, 6)};
+    search_chunk(block, loader, S, c, best);
+  }
+  if (column) search_last_column(qword_rows(prev.data, prev.stride, 8), next, S, best);
+  // An odd key's position + 1 names its own dx'; the all-ones of lanes never replaced stay.
+  const __m512i none = _mm512_set1_epi32(-1);
+  const __m512i odd = _mm512_mask_add_epi32(best.odd, _mm512_cmpneq_epu32_mask(best.odd, none),
+                                            best.odd, _mm512_set1_epi32(1));
+  const __m512i keys = _mm512_min_epu32(best.even, odd);
+  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(keys));
+  const std::uint32_t position = key & ((1u << kPositionBits) - 1);
+  _mm256_zeroupper();
+  return {static_cast<int>(position % kRowPositions) - S,
+          static_cast<int>(position / kRowPositions) - S, key >> kPositionBits};
 }
 
 // SPEC §3 step 3 with the eight block rows as the eight qwords of a zmm: psadbw then gives one
@@ -194,20 +254,7 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
                         _mm512_sad_epu8(_mm512_avg_epu8(hl_up, hl), q),      // k5 d(c-1, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(p_up, p_mid), q),    // k6 g(c, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(hr_up, hr), q)};     // k7 d(c, r-1)
-  auto pack = [](const __m512i* d) {  // d[k]'s qword sums in u16 field k of each qword
-    return _mm512_or_si512(
-        _mm512_or_si512(d[0], _mm512_slli_epi64(d[1], 16)),
-        _mm512_or_si512(_mm512_slli_epi64(d[2], 32), _mm512_slli_epi64(d[3], 48)));
-  };
-  const __m512i p0 = pack(s), p1 = pack(s + 4);
-  // Lanes 0..1: p0's four 128-bit lanes folded to two; lanes 2..3: p1's.
-  const __m512i f = _mm512_add_epi64(_mm512_shuffle_i64x2(p0, p1, 0x44),    // p0 lanes 0,1, p1 0,1
-                                     _mm512_shuffle_i64x2(p0, p1, 0xEE));   // p0 lanes 2,3, p1 2,3
-  const __m512i g = _mm512_add_epi64(f, _mm512_shuffle_i64x2(f, f, 0xB1));  // lane pairs summed
-  // Lane 0 holds p0's two qword halves, lane 2 p1's; one more add within each lane.
-  const __m512i h = _mm512_add_epi64(g, _mm512_shuffle_epi32(g, _MM_PERM_BADC));
-  const __m128i sums =
-      _mm_unpacklo_epi64(_mm512_castsi512_si128(h), _mm512_extracti32x4_epi32(h, 2));
+  const __m128i sums = sums_of_eight(s);
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(sub), _mm256_cvtepu16_epi32(sums));
   _mm256_zeroupper();
 }
