@@ -159,12 +159,15 @@ inline __m128i sums_of_eight(const __m512i d[8]) {
 void search_last_column(const __m512i rows, Window next, int radius, Keys& best) {
   const int side = 2 * radius + 1;
   const std::uint8_t* strip = next.data + 1 + 2 * radius;  // window column 2S + 1
-  __m512i part[9];  // window rows 1 + 8m .. 8 + 8m (2S + 8 <= 70 rows: at most 9 parts)
+  // Window rows 1 + 8m .. 8 + 8m (2S + 8 <= 70 rows: at most 9 parts), then a zero part: the
+  // last part's candidate dy' = 8m is its qwords 0..7 alone, the later ones are never keyed.
+  __m512i part[10];
   const int parts = (side + 7 + 7) / 8;
   for (int m = 0; m < parts; ++m) {
     const int n = side + 7 - 8 * m;  // rows of the strip left from 1 + 8m
     part[m] = qword_rows(strip + (1 + 8 * m) * next.stride, next.stride, n < 8 ? n : 8);
   }
+  part[parts] = _mm512_setzero_si512();
   const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   for (int g = 0; 16 * g < side; ++g) {  // dy' = 16g .. 16g + 15
     __m128i half[2];
@@ -174,7 +177,7 @@ void search_last_column(const __m512i rows, Window next, int radius, Keys& best)
       if (8 * m >= side) continue;
       __m512i sads[8];
       for (int j = 0; j < 8; ++j) {
-        const __m512i cand = _mm512_alignr_epi64(part[m + 1 < parts ? m + 1 : m], part[m], j);
+        const __m512i cand = _mm512_alignr_epi64(part[m + 1], part[m], j);
         sads[j] = 8 * m + j < side ? _mm512_sad_epu8(rows, cand) : _mm512_setzero_si512();
       }
       half[h] = sums_of_eight(sads);
