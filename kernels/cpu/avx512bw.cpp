@@ -12,8 +12,6 @@
 // slide down the window one row per dy.
 #include <immintrin.h>
 
-#include <cstring>
-
 #include "cpu_kernel.hpp"
 #include "x86_feature.hpp"
 
@@ -57,31 +55,141 @@ inline __m512i row_sad(const __m512i block[8], const __m512i cand[8]) {
 }
 
 // The first minimum in raster order without a table: each candidate becomes the key
-// sad << 12 | (dy' * 64 + dx'), which orders by SAD first and then by raster position (the
-// tie rule of SPEC §3), and one vpminud per row keeps the smallest. Candidates beyond dx' = 2S
-// get all-ones keys. sad <= 16,320 and the position < 4,096, so a key fits 26 bits.
-constexpr int kPositionBits = 12;
+// sad << 16 | (dy' * 64 + dx'), which orders by SAD first and then by raster position (the tie
+// rule of SPEC §3), and vpminud keeps the smallest. sad <= 16,320 and the position < 4,096.
+//
+// Two rows dy', dy'+1 are keyed together, without widening: their sums a and b become
+// H = [a.lo + a.hi | b.lo + b.hi] (two vshufi64x2 and one add: u16 lane j holds dx' = j of
+// dy', lane 16 + j dx' = j of dy' + 1), then H << 16 is the key of the even lanes' SADs and
+// H & 0xFFFF0000 that of the odd ones, each ORed with the even lane's position. An odd key
+// therefore names dx' one too small: its vector gets + 1 at the end, before the two are merged.
+// Lanes beyond dx' = 2S (and the missing row after the last, 2S + 1 being odd) are masked out
+// of the vpminud. Per pair of rows this is one shuffle per row instead of the extract and the
+// zero extension each row took, both on the port vdbpsadbw and vpermd need.
+constexpr int kPositionBits = 16;
 constexpr int kRowPositions = 64;
 
+struct Keys {
+  __m512i even = _mm512_set1_epi32(-1);
+  __m512i odd = _mm512_set1_epi32(-1);
+};
+
+inline void slide(__m512i cand[8], const RowLoader& loader, int window_row) {
+  for (int r = 0; r < 7; ++r) cand[r] = cand[r + 1];
+  cand[7] = loader.row(window_row);
+}
+
 void search_chunk(const __m512i block[8], const RowLoader& loader, int radius, int chunk,
-                  __m512i& best) {
-  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+                  Keys& best) {
+  // Dword i: u16 lanes 2i and 2i + 1 of H, i.e. dx' = 2 (i mod 8) of row dy' + i / 8.
+  const __m512i pairs =
+      _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, kRowPositions + 0, kRowPositions + 2,
+                        kRowPositions + 4, kRowPositions + 6, kRowPositions + 8, kRowPositions + 10,
+                        kRowPositions + 12, kRowPositions + 14);
   const int valid = 2 * radius + 1 - 16 * chunk;  // dx' of this chunk that exist
-  const __mmask16 beyond = static_cast<__mmask16>(valid >= 16 ? 0 : 0xFFFF << valid);
-  const __m512i invalid = _mm512_maskz_set1_epi32(beyond, -1);
-  __m512i position = _mm512_add_epi32(lanes, _mm512_set1_epi32(16 * chunk));
+  __mmask16 even_ok = 0, odd_ok = 0;
+  for (int i = 0; i < 8; ++i) {
+    const auto both = static_cast<__mmask16>((1u << i) | (1u << (i + 8)));
+    if (2 * i < valid) even_ok = static_cast<__mmask16>(even_ok | both);
+    if (2 * i + 1 < valid) odd_ok = static_cast<__mmask16>(odd_ok | both);
+  }
+  const __m512i high = _mm512_set1_epi32(static_cast<int>(0xFFFF0000u));
+  __m512i position = _mm512_add_epi32(pairs, _mm512_set1_epi32(16 * chunk));
   __m512i cand[8];
   for (int r = 0; r < 8; ++r) cand[r] = loader.row(r + 1);
-  for (int dy = 0; dy <= 2 * radius; ++dy) {
-    const __m512i acc = row_sad(block, cand);
-    const __m256i sum =
-        _mm256_add_epi16(_mm512_castsi512_si256(acc), _mm512_extracti64x4_epi64(acc, 1));
-    const __m512i sad = _mm512_slli_epi32(_mm512_cvtepu16_epi32(sum), kPositionBits);
-    best = _mm512_min_epu32(best, _mm512_ternarylogic_epi32(sad, position, invalid, 0xFE));
-    if (dy == 2 * radius) break;
-    position = _mm512_add_epi32(position, _mm512_set1_epi32(kRowPositions));
-    for (int r = 0; r < 7; ++r) cand[r] = cand[r + 1];
-    cand[7] = loader.row(dy + 9);
+  for (int dy = 0; dy <= 2 * radius; dy += 2) {
+    const __m512i a = row_sad(block, cand);
+    __m512i b = a;
+    __mmask16 rows = 0xFFFF;
+    if (dy < 2 * radius) {
+      slide(cand, loader, dy + 9);
+      b = row_sad(block, cand);
+    } else {
+      rows = 0x00FF;  // no row dy' + 1
+    }
+    const __m512i h = _mm512_add_epi16(_mm512_shuffle_i64x2(a, b, 0x44),   // a.lo, b.lo
+                                       _mm512_shuffle_i64x2(a, b, 0xEE));  // a.hi, b.hi
+    const __m512i even = _mm512_or_si512(_mm512_slli_epi32(h, kPositionBits), position);
+    const __m512i odd = _mm512_ternarylogic_epi32(h, high, position, 0xEA);  // (h & high) | pos
+    best.even =
+        _mm512_mask_min_epu32(best.even, static_cast<__mmask16>(even_ok & rows), best.even, even);
+    best.odd =
+        _mm512_mask_min_epu32(best.odd, static_cast<__mmask16>(odd_ok & rows), best.odd, odd);
+    if (dy + 1 >= 2 * radius) break;
+    slide(cand, loader, dy + 10);
+    position = _mm512_add_epi32(position, _mm512_set1_epi32(2 * kRowPositions));
+  }
+}
+
+// Eight rows of 8 bytes, row r of `p + r * stride` in qword r. Each row is a vpbroadcastq from
+// memory (a load) merged under a one-qword mask: no store to a stack buffer that a 64-byte load
+// would then have to wait for (a failed store forward per plane cost more than the SADs).
+inline __m512i qword_rows(const std::uint8_t* p, std::ptrdiff_t stride, int n) {
+  __m512i z = _mm512_setzero_si512();
+  for (int r = 0; r < n; ++r)
+    z = _mm512_mask_broadcastq_epi64(
+        z, static_cast<__mmask8>(1u << r),
+        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p + r * stride)));
+  return z;
+}
+
+// The eight totals of eight vectors of eight qword SADs (psadbw results, each total <= 16,320),
+// as the u16 lanes of one xmm: four vectors share a vector as u16 fields of each qword (no
+// carry between fields), and the two such vectors are folded together lane by lane.
+inline __m128i sums_of_eight(const __m512i d[8]) {
+  auto pack = [](const __m512i* q) {  // q[k]'s qword sums in u16 field k of each qword
+    return _mm512_or_si512(
+        _mm512_or_si512(q[0], _mm512_slli_epi64(q[1], 16)),
+        _mm512_or_si512(_mm512_slli_epi64(q[2], 32), _mm512_slli_epi64(q[3], 48)));
+  };
+  const __m512i p0 = pack(d), p1 = pack(d + 4);
+  // Lanes 0..1: p0's four 128-bit lanes folded to two; lanes 2..3: p1's.
+  const __m512i f = _mm512_add_epi64(_mm512_shuffle_i64x2(p0, p1, 0x44),    // p0 lanes 0,1, p1 0,1
+                                     _mm512_shuffle_i64x2(p0, p1, 0xEE));   // p0 lanes 2,3, p1 2,3
+  const __m512i g = _mm512_add_epi64(f, _mm512_shuffle_i64x2(f, f, 0xB1));  // lane pairs summed
+  // Lane 0 holds p0's two qword halves, lane 2 p1's; one more add within each lane.
+  const __m512i h = _mm512_add_epi64(g, _mm512_shuffle_epi32(g, _MM_PERM_BADC));
+  return _mm_unpacklo_epi64(_mm512_castsi512_si128(h), _mm512_extracti32x4_epi32(h, 2));
+}
+
+// The last column alone, for 2S + 1 = 16k + 1 (S = 8, 16, 24): a 16-dx' chunk for one dx' would
+// spend as many vdbpsadbw as a full one. Instead each candidate (dx' = 2S, dy') is one psadbw of
+// the block's eight rows (qwords) against the window's column strip, rows dy'+1 .. dy'+8 taken
+// from the strip by valignq; eight candidates' row SADs are summed together (sums_of_eight).
+void search_last_column(const __m512i rows, Window next, int radius, Keys& best) {
+  const int side = 2 * radius + 1;
+  const std::uint8_t* strip = next.data + 1 + 2 * radius;  // window column 2S + 1
+  // Window rows 1 + 8m .. 8 + 8m (2S + 8 <= 70 rows: at most 9 parts), then a zero part: the
+  // last part's candidate dy' = 8m is its qwords 0..7 alone, the later ones are never keyed.
+  __m512i part[10];
+  const int parts = (side + 7 + 7) / 8;
+  for (int m = 0; m < parts; ++m) {
+    const int n = side + 7 - 8 * m;  // rows of the strip left from 1 + 8m
+    part[m] = qword_rows(strip + (1 + 8 * m) * next.stride, next.stride, n < 8 ? n : 8);
+  }
+  part[parts] = _mm512_setzero_si512();
+  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  for (int g = 0; 16 * g < side; ++g) {  // dy' = 16g .. 16g + 15
+    __m128i half[2];
+    for (int h = 0; h < 2; ++h) {
+      const int m = 2 * g + h;  // dy' = 8m + j: window rows 8m + j + 1 .., qword j of part m on
+      half[h] = _mm_setzero_si128();
+      if (8 * m >= side) continue;
+      __m512i sads[8];
+      for (int j = 0; j < 8; ++j) {
+        const __m512i cand = _mm512_alignr_epi64(part[m + 1], part[m], j);
+        sads[j] = 8 * m + j < side ? _mm512_sad_epu8(rows, cand) : _mm512_setzero_si512();
+      }
+      half[h] = sums_of_eight(sads);
+    }
+    const __m512i sad =
+        _mm512_cvtepu16_epi32(_mm256_inserti128_si256(_mm256_castsi128_si256(half[0]), half[1], 1));
+    const __m512i dy = _mm512_add_epi32(lanes, _mm512_set1_epi32(16 * g));
+    const __m512i key =
+        _mm512_or_si512(_mm512_slli_epi32(sad, kPositionBits),
+                        _mm512_add_epi32(_mm512_slli_epi32(dy, 6), _mm512_set1_epi32(2 * radius)));
+    const __mmask16 valid = _mm512_cmplt_epi32_mask(dy, _mm512_set1_epi32(side));
+    best.even = _mm512_mask_min_epu32(best.even, valid, best.even, key);
   }
 }
 
@@ -94,14 +202,22 @@ BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
         _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev.data + r * prev.stride));
     block[r] = _mm512_permutexvar_epi32(halves, _mm512_zextsi128_si512(row));
   }
-  __m512i best = _mm512_set1_epi32(-1);
-  for (int c = 0; c < chunks_of_16(S); ++c) {
+  Keys best;
+  const bool column = (2 * S + 1) % 16 == 1;
+  const int chunks = chunks_of_16(S) - (column ? 1 : 0);
+  for (int c = 0; c < chunks; ++c) {
     const int last_dx = (2 * S - 16 * c < 15) ? 2 * S - 16 * c : 15;
     const RowLoader loader{next.data + 1 + 16 * c, next.stride, (1ull << (last_dx + 8)) - 1,
                            _mm512_setr_epi32(0, 1, 2, 3, 2, 3, 4, 5, 1, 2, 3, 4, 3, 4, 5, 6)};
     search_chunk(block, loader, S, c, best);
   }
-  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(best));
+  if (column) search_last_column(qword_rows(prev.data, prev.stride, 8), next, S, best);
+  // An odd key's position + 1 names its own dx'; the all-ones of lanes never replaced stay.
+  const __m512i none = _mm512_set1_epi32(-1);
+  const __m512i odd = _mm512_mask_add_epi32(best.odd, _mm512_cmpneq_epu32_mask(best.odd, none),
+                                            best.odd, _mm512_set1_epi32(1));
+  const __m512i keys = _mm512_min_epu32(best.even, odd);
+  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(keys));
   const std::uint32_t position = key & ((1u << kPositionBits) - 1);
   _mm256_zeroupper();
   return {static_cast<int>(position % kRowPositions) - S,
@@ -109,30 +225,30 @@ BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
 }
 
 // SPEC §3 step 3 with the eight block rows as the eight qwords of a zmm: psadbw then gives one
-// direction's eight row SADs at once. The rows are gathered through a small stack buffer (three
-// column offsets u = -1, 0, +1 of rows -1..8), complemented so that pavgb floors (see
-// x86_half_pixel.hpp), averaged plane by plane, and the eight direction sums are reduced
-// together, four u16 fields per qword (a field's sum is at most 16,320: no carry).
+// direction's eight row SADs at once. For each column offset u = -1, 0, +1 the rows -1..6 and
+// 7..8 are loaded once, complemented so that pavgb floors (see x86_half_pixel.hpp), and the
+// rows starting at 0 and at +1 are the same data moved down one or two qwords (valignq), after
+// the horizontal averages. The eight direction sums are reduced together: four u16 fields per
+// qword (a field's sum is at most 16,320: no carry), two vectors folded into one, the eight sums
+// then sit as u16 in one xmm.
 void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, std::uint32_t sub[8],
                 OpCounts*) {
-  alignas(64) std::uint64_t planes[3][10];  // planes[s][v + 1]: row v from column s - 1
-  alignas(64) std::uint64_t block[8];
-  for (int v = 0; v < 10; ++v)
-    for (int s = 0; s < 3; ++s) std::memcpy(&planes[s][v], around + v * stride + s, 8);
-  for (int r = 0; r < 8; ++r) std::memcpy(&block[r], prev.data + r * prev.stride, 8);
   const __m512i ones = _mm512_set1_epi8(-1);
-  // Rows r + t (r = 0..7) of plane s, complemented.
-  auto rows = [&](int s, int t) {
-    return _mm512_xor_si512(_mm512_loadu_si512(&planes[s][t + 1]), ones);
+  __m512i top[3], low[3];  // column s - 1: rows -1..6, and rows 7..8 in qwords 0..1
+  for (int s = 0; s < 3; ++s) {
+    top[s] = _mm512_xor_si512(qword_rows(around + s, stride, 8), ones);
+    low[s] = _mm512_xor_si512(qword_rows(around + 8 * stride + s, stride, 2), ones);
+  }
+  // Rows r + t (r = 0..7) of a plane given as its rows -1..6 and 7..8.
+  auto down = [](__m512i lo8, __m512i hi2, int t) {
+    return t == 0 ? _mm512_alignr_epi64(hi2, lo8, 1) : _mm512_alignr_epi64(hi2, lo8, 2);
   };
-  const __m512i p_up = rows(1, -1), p_mid = rows(1, 0), p_down = rows(1, 1);
-  const __m512i hl_up = _mm512_avg_epu8(rows(0, -1), p_up);  // ~h(c-1, r-1)
-  const __m512i hr_up = _mm512_avg_epu8(p_up, rows(2, -1));  // ~h(c, r-1)
-  const __m512i hl = _mm512_avg_epu8(rows(0, 0), p_mid);
-  const __m512i hr = _mm512_avg_epu8(p_mid, rows(2, 0));
-  const __m512i hl_down = _mm512_avg_epu8(rows(0, 1), p_down);
-  const __m512i hr_down = _mm512_avg_epu8(p_down, rows(2, 1));
-  const __m512i q = _mm512_xor_si512(_mm512_load_si512(block), ones);
+  const __m512i hl_top = _mm512_avg_epu8(top[0], top[1]), hl_low = _mm512_avg_epu8(low[0], low[1]);
+  const __m512i hr_top = _mm512_avg_epu8(top[1], top[2]), hr_low = _mm512_avg_epu8(low[1], low[2]);
+  const __m512i p_up = top[1], p_mid = down(top[1], low[1], 0), p_down = down(top[1], low[1], 1);
+  const __m512i hl_up = hl_top, hl = down(hl_top, hl_low, 0), hl_down = down(hl_top, hl_low, 1);
+  const __m512i hr_up = hr_top, hr = down(hr_top, hr_low, 0), hr_down = down(hr_top, hr_low, 1);
+  const __m512i q = _mm512_xor_si512(qword_rows(prev.data, prev.stride, 8), ones);
   const __m512i s[8] = {_mm512_sad_epu8(hr, q),                              // k0 h(c, r)
                         _mm512_sad_epu8(_mm512_avg_epu8(hr, hr_down), q),    // k1 d(c, r)
                         _mm512_sad_epu8(_mm512_avg_epu8(p_mid, p_down), q),  // k2 g(c, r)
@@ -141,14 +257,8 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
                         _mm512_sad_epu8(_mm512_avg_epu8(hl_up, hl), q),      // k5 d(c-1, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(p_up, p_mid), q),    // k6 g(c, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(hr_up, hr), q)};     // k7 d(c, r-1)
-  for (int half = 0; half < 2; ++half) {
-    const __m512i* d = s + 4 * half;
-    const __m512i packed =
-        _mm512_or_si512(_mm512_or_si512(d[0], _mm512_slli_epi64(d[1], 16)),
-                        _mm512_or_si512(_mm512_slli_epi64(d[2], 32), _mm512_slli_epi64(d[3], 48)));
-    const auto sums = static_cast<std::uint64_t>(_mm512_reduce_add_epi64(packed));
-    for (int k = 0; k < 4; ++k) sub[4 * half + k] = (sums >> (16 * k)) & 0xFFFF;
-  }
+  const __m128i sums = sums_of_eight(s);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(sub), _mm256_cvtepu16_epi32(sums));
   _mm256_zeroupper();
 }
 
