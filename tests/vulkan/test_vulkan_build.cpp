@@ -6,12 +6,10 @@
 // cut to 0.1 s per work unit, far below the compile of S = 12, and the run must still pass, with
 // the compile counted as the backend's build time.
 #include <catch2/catch.hpp>
-#include <cstdlib>
-#include <optional>
-#include <string>
 
 #include "device_wait.hpp"
 #include "grid.hpp"
+#include "scoped_env.hpp"
 #include "vulkan_test_util.hpp"
 
 using namespace pxflow;
@@ -20,28 +18,6 @@ using namespace pxflow::test;
 namespace {
 
 constexpr double kTinyTimeout = 0.1;
-
-// Sets an environment variable for its lifetime, then puts the old value back.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const char* value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    setenv(name, value, 1);
-  }
-  ~ScopedEnv() {
-    if (old_) {
-      setenv(name_, old_->c_str(), 1);
-    } else {
-      unsetenv(name_);
-    }
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
 
 struct ScopedDeviceTimeout {
   explicit ScopedDeviceTimeout(double s) { device_timeout_seconds() = s; }
