@@ -241,7 +241,10 @@ void VulkanBackend::warm(vk::FlowPipeline& pipeline, VulkanShaders build, const 
   const vk::BatchLayout layout = vk::batch_layout(p);
   ensure_buffers(layout.pair_bytes, layout.record_bytes_per_pair);
   pipeline.bind_buffers(frames_->buffer(), records_->buffer(), records_front_, faults_->buffer());
-  vk::FlowPushConstants pc{};  // item_count 0
+  // The problem's own push constants (a driver may specialize on their values), no items.
+  vk::FlowPushConstants pc = push_constants(p, layout);
+  pc.first_item = 0;
+  pc.item_count = 0;
   runner_->run_build(
       [&](VkCommandBuffer cmd) {
         pipeline.bind(cmd);
