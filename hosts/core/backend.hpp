@@ -33,6 +33,13 @@ class Backend {
   virtual void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
                    OpCounts& counts) = 0;
 
+  // Builds what run() needs for problems of these parameters (p valid and supported): the
+  // kernels a driver compiles (vulkan: the pipelines of S, each warmed by a dispatch of no work,
+  // since lavapipe compiles at the first dispatch). Build time is not the kernel's: run() builds
+  // what it lacks before any wait sized by its work, and a caller that limits run()'s time (check's
+  // case allowance) calls this first, within an allowance of its own. Throws BackendError.
+  virtual void prepare(const Params&) {}
+
   // Empty when this backend supports a problem of these parameters; otherwise the documented
   // limit it is outside (e.g. a frame too large for the device's local memory). The checker
   // counts such a case "n/a" for this backend.

@@ -28,6 +28,12 @@ inline constexpr double kCandidatesPerWorkUnit = 1e6;
 // ninefold margin (docs/harness.md, "Waiting on a device").
 inline constexpr double kDefaultDeviceTimeout = 30.0;
 
+// How long building one kernel may take: a driver's compile of a pipeline (lavapipe compiles at a
+// pipeline's first dispatch, seconds at a large search radius with a cold shader cache on a busy
+// machine). Build time, not device work: no --device-timeout applies, and a wait for a build
+// notices a stop signal (docs/harness.md, "Waiting on a device"). 300 s, as for opening a backend.
+inline constexpr double kBuildSeconds = 300;
+
 // The --device-timeout in seconds (default kDefaultDeviceTimeout); set by the option, or by a
 // test before it opens a device.
 double& device_timeout_seconds();

@@ -1,6 +1,7 @@
 #include "command_runner.hpp"
 
 #include "errors.hpp"
+#include "interrupt.hpp"
 #include "vk_error.hpp"
 
 namespace pxflow::vk {
@@ -53,17 +54,28 @@ void CommandRunner::release() {
 }
 
 void CommandRunner::run(const std::function<void(VkCommandBuffer)>& body, const DeviceWork& work) {
+  submit(body);
+  wait(work);
+  read_timestamps();
+}
+
+void CommandRunner::run_build(const std::function<void(VkCommandBuffer)>& body,
+                              const std::string& what) {
+  submit(body);
+  wait_build(what);
+  last_ns_.reset();  // a build's dispatch is no chunk's time
+}
+
+void CommandRunner::submit(const std::function<void(VkCommandBuffer)>& body) {
   ensure_usable();
   record(body);
   check(vkResetFences(device_, 1, &fence_), "vkResetFences");
-  auto submit = zeroed<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd_;
-  const VkResult r = vkQueueSubmit(queue_, 1, &submit, fence_);
+  auto info = zeroed<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+  info.commandBufferCount = 1;
+  info.pCommandBuffers = &cmd_;
+  const VkResult r = vkQueueSubmit(queue_, 1, &info, fence_);
   if (r == VK_ERROR_DEVICE_LOST) broken_ = "device lost at vkQueueSubmit";
   check(r, "vkQueueSubmit");
-  wait(work);
-  read_timestamps();
 }
 
 void CommandRunner::ensure_usable() const {
@@ -91,13 +103,41 @@ void CommandRunner::wait(const DeviceWork& work) {
       vkWaitForFences(device_, 1, &fence_, VK_TRUE, static_cast<std::uint64_t>(ns.count()));
   if (r == VK_TIMEOUT) {
     const std::chrono::duration<double> waited = std::chrono::steady_clock::now() - start;
-    const std::string line = wait_failure_line("vulkan", waited.count(), work);
-    broken_ = line;
-    ctx_->abandon();
-    throw BackendError(line);
+    give_up(wait_failure_line("vulkan", waited.count(), work));
   }
   if (r == VK_ERROR_DEVICE_LOST) broken_ = "device lost";
   check(r, "vkWaitForFences");
+}
+
+void CommandRunner::wait_build(const std::string& what) {
+  constexpr std::uint64_t kSliceNs = 100'000'000;  // how soon a stop signal is noticed
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    const VkResult r = vkWaitForFences(device_, 1, &fence_, VK_TRUE, kSliceNs);
+    if (r != VK_TIMEOUT) {
+      if (r == VK_ERROR_DEVICE_LOST) broken_ = "device lost";
+      check(r, "vkWaitForFences");
+      return;
+    }
+    if (interrupt_signal() != 0) {
+      broken_ = "stopped while building " + what;
+      ctx_->abandon();  // the compile may still run: nothing waits for it
+      stop_if_interrupted_while("building " + what);
+    }
+    const std::chrono::duration<double> waited = std::chrono::steady_clock::now() - start;
+    if (waited.count() >= kBuildSeconds)
+      give_up("vulkan: building " + what +
+              " (its first dispatch, which makes the driver compile it) " +
+              "did not finish within " + setting_text(kBuildSeconds) + " s: the driver hangs");
+  }
+}
+
+// The wait fired while the command buffer may still run: the runner refuses further work, and
+// nothing made from the context is destroyed (Context::abandon).
+void CommandRunner::give_up(const std::string& line) {
+  broken_ = line;
+  ctx_->abandon();
+  throw BackendError(line);
 }
 
 void CommandRunner::read_timestamps() {

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <functional>
 #include <optional>
+#include <string>
 
 #include "context.hpp"
 #include "device_wait.hpp"
@@ -26,6 +27,14 @@ class CommandRunner {
   // buffer may still run: Context::abandon).
   void run(const std::function<void(VkCommandBuffer)>& body, const DeviceWork& work);
 
+  // Records `body` (a dispatch of no work that makes the driver compile a pipeline, which
+  // lavapipe does at the first dispatch), submits it and waits as long as a build may take
+  // (kBuildSeconds), in slices that notice a stop signal: a compile is build time, never part of a
+  // wait sized by the work of a dispatch. `what` names the build ("the checked shader at S=31")
+  // in the failure line. Throws BackendError (a build that never ends abandons the context, as
+  // run() does) or Interrupted.
+  void run_build(const std::function<void(VkCommandBuffer)>& body, const std::string& what);
+
   // Throws BackendError when an earlier timeout or lost device made the runner refuse work.
   // Callers check before touching buffers that a pending command buffer may still use.
   void ensure_usable() const;
@@ -35,8 +44,11 @@ class CommandRunner {
   std::optional<double> last_device_ns() const { return last_ns_; }
 
  private:
+  void submit(const std::function<void(VkCommandBuffer)>& body);
   void record(const std::function<void(VkCommandBuffer)>& body);
   void wait(const DeviceWork& work);
+  void wait_build(const std::string& what);
+  [[noreturn]] void give_up(const std::string& line);
   void read_timestamps();
   void release();
 

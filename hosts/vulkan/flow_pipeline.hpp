@@ -1,14 +1,17 @@
-// The compute pipeline of kernels/vulkan/flow.comp for one search radius: shader module,
-// descriptor set (frames, records, shader faults), push constants, and the pipeline itself.
-// S is a specialization constant (the driver unrolls the search loops for it), so a backend keeps
-// one pipeline per radius it has seen: lavapipe JIT-compiles at vkCreateComputePipelines, which
-// takes a noticeable fraction of a second.
+// The compute pipeline of kernels/vulkan/flow.comp for one search radius (a ComputePipeline:
+// descriptor set of frames, records and shader faults; push constants), and the texel buffer
+// view through which it reads the frames. S is a specialization constant (the driver unrolls the
+// search loops for it), so a backend keeps one pipeline per radius it has seen. When the driver
+// compiles it varies: at vkCreateComputePipelines, or (lavapipe) at its first dispatch, which is
+// why the backend warms each new pipeline with a dispatch of no work (docs/vulkan.md, "Building a
+// pipeline").
 #pragma once
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
 #include <span>
 
+#include "compute_pipeline.hpp"
 #include "context.hpp"
 
 namespace pxflow::vk {
@@ -52,23 +55,18 @@ class FlowPipeline {
   void bind(VkCommandBuffer cmd) const;
   void push(VkCommandBuffer cmd, const FlowPushConstants& pc) const;
 
- private:
-  void create_layouts();
-  void create_pipeline(std::span<const std::uint32_t> spirv);
-  void create_descriptor_set();
-  void release();
+  // Whether a dispatch has run it (the backend's warm-up, VulkanBackend::prepare): then the
+  // driver has compiled it, whenever it does.
+  bool warmed() const { return warmed_; }
+  void set_warmed() { warmed_ = true; }
 
+ private:
   const Context* ctx_;
-  VkDevice device_;
-  std::uint32_t local_size_ = 64;
-  std::int32_t search_radius_;
-  VkShaderModule shader_ = VK_NULL_HANDLE;
-  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
-  VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  std::uint32_t local_size_;
+  std::int32_t constants_[2];
+  ComputePipeline pipeline_;
   VkBufferView frames_view_ = VK_NULL_HANDLE;  // the frames buffer as R32_UINT texels
+  bool warmed_ = false;
 };
 
 }  // namespace pxflow::vk

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cstring>
 #include <span>
 #include <string>
@@ -69,6 +70,15 @@ void pack_frame(const FrameView& f, std::byte* dst, std::uint32_t words) {
   std::memset(dst + used, 0, std::size_t(words) * 4 - used);
 }
 
+// The frames buffer's size for `bytes` of frames: never a power of two. lavapipe compiles a
+// variant of a pipeline for each kind of texel buffer it reads, and whether the buffer's size is a
+// power of two is part of the kind (llvmpipe's sampler key), so a pipeline warmed on one kind
+// compiled again, inside a chunk's wait, on the other (8 s at S=17 with a cold shader cache).
+std::uint64_t frames_buffer_bytes(std::uint64_t bytes) {
+  bytes = std::max<std::uint64_t>(bytes, 12);
+  return std::has_single_bit(bytes) ? bytes + 4 : bytes;
+}
+
 // Device writes become visible to the host's reads of the mapped records after the fence.
 void barrier_to_host(VkCommandBuffer cmd) {
   auto barrier = vk::zeroed<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -83,10 +93,10 @@ void barrier_to_host(VkCommandBuffer cmd) {
 VulkanBackend::VulkanBackend(const VulkanConfig& config)
     : config_(config), shaders_(config.shaders) {
   ctx_ = std::make_unique<vk::Context>(vk::ContextOptions{config.device, config.validation});
+  runner_ = std::make_unique<vk::CommandRunner>(*ctx_);
   // A broken pipeline fails create() early.
   for (const VulkanShaders build : {VulkanShaders::checked, VulkanShaders::production})
-    pipeline_for(build, profile(kDefaultProfile).search_radius);
-  runner_ = std::make_unique<vk::CommandRunner>(*ctx_);
+    ready_pipeline(build, profile(kDefaultProfile));
   fail_on_validation_messages();
 }
 
@@ -148,6 +158,13 @@ std::string VulkanBackend::select_timed(bool timed) {
   return vk::shader_name(VulkanShaders::production);
 }
 
+void VulkanBackend::prepare(const Params& p) {
+  runner_->ensure_usable();
+  if (shaders_ != VulkanShaders::production) ready_pipeline(VulkanShaders::checked, p);
+  if (shaders_ != VulkanShaders::checked) ready_pipeline(VulkanShaders::production, p);
+  fail_on_validation_messages();
+}
+
 void VulkanBackend::run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
                         OpCounts&) {
   last_device_seconds_.reset();
@@ -174,7 +191,7 @@ std::optional<double> VulkanBackend::run_shader(VulkanShaders build,
   const vk::BatchLayout layout = vk::batch_layout(p);
   const std::size_t per_chunk =
       vk::pairs_per_chunk(layout, {buffer_limit(), config_.max_chunk_work});
-  vk::FlowPipeline& pipeline = pipeline_for(build, p.search_radius);
+  vk::FlowPipeline& pipeline = ready_pipeline(build, p);
   double device_ns = 0;
   bool timed = true;
   for (std::size_t start = 0; start < pairs.size(); start += per_chunk) {
@@ -191,15 +208,51 @@ std::optional<double> VulkanBackend::run_shader(VulkanShaders build,
   return device_ns;
 }
 
-vk::FlowPipeline& VulkanBackend::pipeline_for(VulkanShaders build, int search_radius) {
-  auto& slot = pipelines_[{build, search_radius}];
-  if (slot) return *slot;
-  const auto& custom =
-      build == VulkanShaders::checked ? config_.checked_spirv : config_.production_spirv;
-  slot = std::make_unique<vk::FlowPipeline>(
-      *ctx_, search_radius,
-      custom.empty() ? vk::built_in_spirv(build) : std::span<const std::uint32_t>(custom));
+vk::FlowPipeline& VulkanBackend::ready_pipeline(VulkanShaders build, const Params& p) {
+  auto& slot = pipelines_[{build, p.search_radius}];
+  if (slot && slot->warmed()) return *slot;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    if (!slot) {
+      const auto& custom =
+          build == VulkanShaders::checked ? config_.checked_spirv : config_.production_spirv;
+      slot = std::make_unique<vk::FlowPipeline>(
+          *ctx_, p.search_radius,
+          custom.empty() ? vk::built_in_spirv(build) : std::span<const std::uint32_t>(custom));
+    }
+    warm(*slot, build, p);
+  } catch (...) {
+    build_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    throw;
+  }
+  build_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return *slot;
+}
+
+// Where the driver compiles a pipeline varies: some at vkCreateComputePipelines, lavapipe at its
+// first dispatch, inside the fence wait, where a compile of seconds (a large S, a cold shader
+// cache, a busy machine) would count against the allowance of the first chunk's work. So each new
+// pipeline runs one dispatch of no work first (item_count 0: every invocation returns at once),
+// bound to the backend's own buffers as a chunk binds them, and that wait is build time.
+void VulkanBackend::warm(vk::FlowPipeline& pipeline, VulkanShaders build, const Params& p) {
+  // No submission is pending: the buffers may be regrown. At least one pair's worth, as a chunk of
+  // p binds them: lavapipe compiled again for a chunk after a warm-up on buffers of 12 bytes.
+  const vk::BatchLayout layout = vk::batch_layout(p);
+  ensure_buffers(layout.pair_bytes, layout.record_bytes_per_pair);
+  pipeline.bind_buffers(frames_->buffer(), records_->buffer(), records_front_, faults_->buffer());
+  // The problem's own push constants (a driver may specialize on their values), no items.
+  vk::FlowPushConstants pc = push_constants(p, layout);
+  pc.first_item = 0;
+  pc.item_count = 0;
+  runner_->run_build(
+      [&](VkCommandBuffer cmd) {
+        pipeline.bind(cmd);
+        pipeline.push(cmd, pc);
+        vkCmdDispatch(cmd, 1, 1, 1);
+      },
+      "the " + vk::shader_name(build) + " at S=" + std::to_string(p.search_radius));
+  pipeline.set_warmed();
 }
 
 void VulkanBackend::ensure_buffers(std::uint64_t frame_bytes, std::uint64_t record_bytes) {
@@ -211,7 +264,7 @@ void VulkanBackend::ensure_buffers(std::uint64_t frame_bytes, std::uint64_t reco
   if (frames_ && records_ && frames_->size() >= frame_bytes && records_->size() >= guarded) return;
   records_.reset();
   frames_.reset();
-  frames_ = std::make_unique<vk::HostBuffer>(*ctx_, frame_bytes);
+  frames_ = std::make_unique<vk::HostBuffer>(*ctx_, frames_buffer_bytes(frame_bytes));
   records_ = std::make_unique<vk::HostBuffer>(*ctx_, guarded);
 }
 

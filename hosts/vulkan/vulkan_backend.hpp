@@ -58,6 +58,9 @@ class VulkanBackend final : public Backend {
 
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
            OpCounts& counts) override;
+  // Builds and warms the pipelines run() runs at p.search_radius (docs/vulkan.md, "Building a
+  // pipeline"); run() does it itself for any it lacks.
+  void prepare(const Params& p) override;
   std::string unsupported(const Params& p) const override;
   // false: config.shaders; true: the production shader alone (what `pxflow bench` times).
   std::string select_timed(bool timed) override;
@@ -71,6 +74,9 @@ class VulkanBackend final : public Backend {
   // Chunks (submissions) and dispatches of each shader's pass over the last run()'s pairs.
   std::size_t last_chunks() const { return last_chunks_; }
   std::size_t last_dispatches() const { return last_dispatches_; }
+  // Seconds spent building pipelines so far (creating each and waiting for its warm-up dispatch,
+  // in which lavapipe compiles it): time no run() and no device wait counts.
+  double build_seconds() const { return build_seconds_; }
   std::string device_name() const;
   // The device and its driver (VkPhysicalDeviceDriverProperties, core in Vulkan 1.2).
   Description describe() const override;
@@ -79,7 +85,10 @@ class VulkanBackend final : public Backend {
 
  private:
   std::uint64_t buffer_limit() const;
-  vk::FlowPipeline& pipeline_for(VulkanShaders build, int search_radius);
+  // The pipeline of `build` at p.search_radius, created and warmed (a dispatch of no work, waited
+  // for as build time) if it was not yet.
+  vk::FlowPipeline& ready_pipeline(VulkanShaders build, const Params& p);
+  void warm(vk::FlowPipeline& pipeline, VulkanShaders build, const Params& p);
   void ensure_buffers(std::uint64_t frame_bytes, std::uint64_t record_bytes);
   // One build's pass over the pairs, chunk by chunk; returns its device nanoseconds, if timed.
   std::optional<double> run_shader(VulkanShaders build, std::span<const FramePair> pairs,
@@ -105,6 +114,7 @@ class VulkanBackend final : public Backend {
   std::optional<double> last_device_seconds_;
   std::size_t last_chunks_ = 0;
   std::size_t last_dispatches_ = 0;
+  double build_seconds_ = 0;
 };
 
 }  // namespace pxflow

@@ -11,31 +11,10 @@
 #include "isa_mask.hpp"
 #include "isa_table.hpp"
 #include "run_program.hpp"
+#include "scoped_env.hpp"
 
 using namespace pxflow;
-
-namespace {
-
-// Sets an environment variable for one scope, restoring what was there before.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const char* value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    setenv(name, value, 1);
-  }
-  ~ScopedEnv() {
-    if (old_)
-      setenv(name_, old_->c_str(), 1);
-    else
-      unsetenv(name_);
-  }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
-
-}  // namespace
+using pxflow::test::ScopedEnv;
 
 TEST_CASE("PXFLOW_DISABLE with an unknown ISA is exit 2 naming the valid ISAs", "[cpu][mask]") {
   const ScopedEnv env("PXFLOW_DISABLE", "avx-512");

@@ -126,6 +126,7 @@ class Checker {
   bool run_case(Contender& k, const CheckCase& c, const ReferenceAnswer& e, long index,
                 double reference_seconds) {
     IsolatedRow::CaseRun run = k.backend->run(c, index, reference_seconds);
+    k.outcome.build_seconds += run.build_seconds;
     if (run.not_applicable) {
       ++k.outcome.not_applicable;
       return true;

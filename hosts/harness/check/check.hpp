@@ -60,6 +60,7 @@ struct BackendOutcome {
   long passed = 0, failed = 0, not_applicable = 0;  // cases
   long pairs = 0;
   double seconds = 0;                 // host time inside run()
+  double build_seconds = 0;           // host time inside prepare(): building kernels, not run()
   std::vector<std::string> failures;  // the mismatch lines printed
   // The limit cases it ran, n/a ones not (check_limits.hpp: limit_entry()).
   std::vector<std::string> limits;

@@ -23,6 +23,9 @@ std::string note(const BackendOutcome& b) {
   if (!b.implementation.empty() && b.implementation != b.name) s = b.implementation;
   if (!b.device.empty() && b.device != "host") s += (s.empty() ? "on " : " on ") + b.device;
   if (!b.reason.empty()) s += (s.empty() ? "" : "; ") + b.reason;
+  // Kernels built before the cases ran (a driver's compile), outside the run time.
+  if (b.build_seconds >= 0.05)
+    s += (s.empty() ? "" : "; ") + format("kernels built in %.2f s", b.build_seconds);
   return s;
 }
 

@@ -87,6 +87,23 @@ std::vector<std::uint8_t> run_one(Backend& backend, const DecodedCase& c, Type& 
   return encode(d);
 }
 
+// Builds the case's kernels (its frames are none): kPrepared with the seconds it took.
+std::vector<std::uint8_t> prepare_one(Backend& backend, const DecodedCase& c, Type& type) {
+  if (std::string why = backend.unsupported(c.params); !why.empty()) {
+    type = Type::kNotApplicable;
+    return Writer().text(why).take();
+  }
+  const auto t0 = Clock::now();
+  try {
+    backend.prepare(c.params);
+  } catch (const std::exception& e) {
+    type = Type::kError;
+    return Writer().text(e.what()).take();
+  }
+  type = Type::kPrepared;
+  return Writer().pod(std::chrono::duration<double>(Clock::now() - t0).count()).take();
+}
+
 std::string os_error(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
 
 }  // namespace
@@ -109,10 +126,13 @@ int serve(const std::string& row, const BackendOptions& options) {
     std::uint32_t length;
     std::memcpy(&length, header + 1, sizeof length);
     std::vector<std::uint8_t> payload(length);
-    if (static_cast<Type>(header[0]) != Type::kCase || !read_all(in, payload.data(), length))
+    const auto asked = static_cast<Type>(header[0]);
+    if ((asked != Type::kCase && asked != Type::kPrepare) || !read_all(in, payload.data(), length))
       return 3;
     Type type{};
-    const std::vector<std::uint8_t> reply = run_one(*backend, decode_case(payload), type);
+    const DecodedCase c = decode_case(payload);
+    const std::vector<std::uint8_t> reply =
+        asked == Type::kPrepare ? prepare_one(*backend, c, type) : run_one(*backend, c, type);
     answer(out, type, reply);
   }
 }
@@ -212,8 +232,17 @@ std::optional<Hello> WorkerProcess::hello(Clock::time_point deadline, Reply& gon
 
 Reply WorkerProcess::run(const Params& p, std::span<const FramePair> pairs,
                          Clock::time_point deadline) {
+  return ask(Type::kCase, encode_case(p, pairs), deadline);
+}
+
+Reply WorkerProcess::prepare(const Params& p, Clock::time_point deadline) {
+  return ask(Type::kPrepare, encode_case(p, {}), deadline);
+}
+
+Reply WorkerProcess::ask(Type type, const std::vector<std::uint8_t>& payload,
+                         Clock::time_point deadline) {
   Reply r;
-  if (!send(frame_message(Type::kCase, encode_case(p, pairs)), deadline, r)) return r;
+  if (!send(frame_message(type, payload), deadline, r)) return r;
   for (;;) {
     std::optional<Message> m = receive(deadline, r);
     if (!m) return r;
@@ -225,6 +254,9 @@ Reply WorkerProcess::run(const Params& p, std::span<const FramePair> pairs,
         return {Reply::Kind::kError, words.text(), {}, {}};
       case Type::kDone:
         r.done = decode_done(m->payload);
+        return r;
+      case Type::kPrepared:
+        r.done.seconds = words.pod<double>();
         return r;
       case Type::kFault:  // its last words; the end of its pipe follows
         r.fault = words.pod<Fault>();

@@ -48,6 +48,10 @@ class WorkerProcess {
   std::optional<Hello> hello(Clock::time_point deadline, Reply& gone);
   // Runs one case. Ctrl-C while waiting throws Interrupted.
   Reply run(const Params& p, std::span<const FramePair> pairs, Clock::time_point deadline);
+  // Has the backend build what run() needs for `p` (Backend::prepare), so that the case's
+  // allowance covers no build: kDone with done.seconds the build's time, or kNotApplicable,
+  // kError, kDied, kTimedOut as for a case.
+  Reply prepare(const Params& p, Clock::time_point deadline);
 
  private:
   // Reads one message; nullopt when the worker ended (then `gone` says how) or the deadline
@@ -55,6 +59,8 @@ class WorkerProcess {
   std::optional<Message> receive(Clock::time_point deadline, Reply& gone);
   bool send(const std::vector<std::uint8_t>& bytes, Clock::time_point deadline, Reply& gone);
   void ended(Reply& gone);
+  // Sends one request and reads messages until its reply.
+  Reply ask(Type type, const std::vector<std::uint8_t>& payload, Clock::time_point deadline);
 
   PipedChild child_;
 };

@@ -84,6 +84,10 @@ bool IsolatedRow::outside_limits(const Params& p) {
 
 IsolatedRow::PairsRun IsolatedRow::run_pairs(std::span<const FramePair> pairs, const Params& p) {
   if (!worker_) return {{}, "its check worker is not running"};
+  if (const Reply b = prepare(p); b.kind != Reply::Kind::kDone)
+    return {{},
+            b.kind == Reply::Kind::kNotApplicable ? "n/a: " + b.text
+                                                  : "building its kernels: " + b.text};
   const Reply r = worker_->run(p, pairs, after(allowance(p, pairs.size(), 1.0)));
   switch (r.kind) {
     case Reply::Kind::kDone:
@@ -118,11 +122,12 @@ IsolatedRow::CaseRun IsolatedRow::run(const CheckCase& c, long index, double ref
     dead_ = true;
     return out;
   }
+  const std::string which = "case " + std::to_string(index) + " " + quoted(c.name);
+  if (!built(c.params, which, out)) return out;
   std::vector<FramePair> views;
   for (const auto& p : c.pairs) views.push_back(p.view());
   const double allowed = allowance(c.params, views.size(), reference_seconds);
   Reply r = worker_->run(c.params, views, after(allowed));
-  const std::string which = "case " + std::to_string(index) + " " + quoted(c.name);
   switch (r.kind) {
     case Reply::Kind::kNotApplicable:
       out.not_applicable = true;
@@ -167,6 +172,36 @@ IsolatedRow::CaseRun IsolatedRow::run(const CheckCase& c, long index, double ref
   return out;
 }
 
+Reply IsolatedRow::prepare(const Params& p) {
+  Reply b = worker_->prepare(p, after(kPrepareSeconds));
+  if (b.kind == Reply::Kind::kDied || b.kind == Reply::Kind::kTimedOut) worker_.reset();
+  return b;
+}
+
+bool IsolatedRow::built(const Params& p, const std::string& which, CaseRun& out) {
+  const Reply b = prepare(p);
+  switch (b.kind) {
+    case Reply::Kind::kDone:
+      out.build_seconds = b.done.seconds;
+      return true;
+    case Reply::Kind::kNotApplicable:
+      out.not_applicable = true;
+      return false;
+    case Reply::Kind::kError:
+      out.failure = "error: " + b.text;
+      return false;
+    case Reply::Kind::kTimedOut:
+      out.failure = "did not build its kernels for " + which + " within " +
+                    setting_text(kPrepareSeconds) +
+                    " s (a build's allowance, apart from the case's)";
+      return false;
+    case Reply::Kind::kDied:
+      break;
+  }
+  out.failure = b.text + " while building its kernels for " + which;
+  return false;
+}
+
 // Runs the case's pairs one at a time in a fresh worker until one ends it: " pair N 'name'".
 std::string IsolatedRow::locate_crash(const CheckCase& c, double reference_seconds,
                                       std::string& note) {
@@ -174,6 +209,10 @@ std::string IsolatedRow::locate_crash(const CheckCase& c, double reference_secon
   std::string why;
   for (std::size_t i = 0; i < c.pairs.size(); ++i) {
     if (!worker_ && !restart(why)) return " (its worker could not be restarted to find the pair)";
+    if (const Reply b = prepare(c.params);
+        b.kind == Reply::Kind::kDied || b.kind == Reply::Kind::kTimedOut)
+      return " (its worker ended while building its kernels, before pair " + std::to_string(i) +
+             ")";
     const FramePair one[] = {c.pairs[i].view()};
     const Reply r = worker_->run(c.params, one, after(allowance(c.params, 1, per_pair)));
     if (r.kind != Reply::Kind::kDied && r.kind != Reply::Kind::kTimedOut) continue;

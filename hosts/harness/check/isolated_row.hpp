@@ -8,6 +8,7 @@
 
 #include "check_corpus.hpp"
 #include "check_worker.hpp"
+#include "device_wait.hpp"
 
 namespace pxflow {
 
@@ -25,6 +26,10 @@ inline constexpr double kOpenSeconds = 300;
 // (device_wait.hpp's rule) plus kSlowMargin times the case's reference time times the row's
 // slowest measured ratio to the reference so far (kFirstRatio before it has one).
 inline constexpr double kSlowMargin = 20;
+// How long a worker may take to build a case's kernels before the case runs (Backend::prepare:
+// vulkan compiles up to two pipelines, each allowed kBuildSeconds by its own wait), apart from
+// the case's allowance: a build is not the case's work (docs/harness.md, "Isolation").
+inline constexpr double kPrepareSeconds = 2 * kBuildSeconds + 60;
 inline constexpr double kFirstRatio = 1000;
 
 class IsolatedRow {
@@ -48,7 +53,8 @@ class IsolatedRow {
     std::string failure;   // the line's text after the case's prefix; empty: compare `records`
     std::vector<PoiRecord> records;
     OpCounts counts;
-    double seconds = 0;  // inside run()
+    double seconds = 0;        // inside run()
+    double build_seconds = 0;  // inside prepare(), before run()
   };
   // `index`: the case's number in the campaign; `reference_seconds`: ref-original's time on it.
   CaseRun run(const CheckCase& c, long index, double reference_seconds);
@@ -74,6 +80,11 @@ class IsolatedRow {
 
  private:
   std::string locate_crash(const CheckCase& c, double reference_seconds, std::string& note);
+  // The worker's prepare(p) within kPrepareSeconds; a worker that died or did not finish is
+  // dropped (restarted by the next run()).
+  worker::Reply prepare(const Params& p);
+  // Builds the case's kernels; false when that ended the case (`out` says how).
+  bool built(const Params& p, const std::string& which, CaseRun& out);
   bool restart(std::string& why);
 
   std::string row_;

@@ -24,6 +24,8 @@ struct WireError : std::runtime_error {
 enum class Type : std::uint8_t {
   kHello = 'H',          // worker -> pxflow, once: the backend opened, or why not
   kCase = 'C',           // pxflow -> worker: params and pairs to run
+  kPrepare = 'P',        // pxflow -> worker: params (no pairs) whose kernels to build first
+  kPrepared = 'R',       // built (Backend::prepare): the seconds it took
   kNotApplicable = 'N',  // the backend does not support the case's params: why
   kDone = 'D',           // records, counts, seconds, and what the guards saw
   kError = 'E',          // run() threw: the message
