@@ -112,7 +112,7 @@ TEST_CASE("results.csv: a column per bench row field, empty where a row lacks it
 TEST_CASE("conformance.csv: a column per scalar field of a check backend", "[schema]") {
   CheckReport r;
   r.backends.push_back(
-      {"ref-local", BackendState::kPassed, "", "", "host", 3, 0, 1, 6, 0.5, {}, {}});
+      {"ref-local", BackendState::kPassed, "", "", "host", 3, 0, 1, 6, 0.5, 0.0, {}, {}});
   const std::string csv = conformance_csv(check_json(r));
   CHECK(csv_line(csv, 0) == csv_columns(backend_outcome_fields()));
   std::set<std::string> all = keys_of(backend_outcome_fields());
@@ -136,6 +136,7 @@ TEST_CASE("check file: written and read back through its table, field for field"
                         0,
                         6,
                         0.25,
+                        0.0,
                         {"a line"},
                         {}});
   const CheckReport back = check_from_json(check_json(r));
