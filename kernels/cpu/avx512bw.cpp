@@ -12,6 +12,8 @@
 // slide down the window one row per dy.
 #include <immintrin.h>
 
+#include <utility>
+
 #include "cpu_kernel.hpp"
 #include "x86_feature.hpp"
 
@@ -176,10 +178,15 @@ void search_last_column(const __m512i rows, Window next, int radius, Keys& best)
       half[h] = _mm_setzero_si128();
       if (8 * m >= side) continue;
       __m512i sads[8];
-      for (int j = 0; j < 8; ++j) {
-        const __m512i cand = _mm512_alignr_epi64(part[m + 1], part[m], j);
-        sads[j] = 8 * m + j < side ? _mm512_sad_epu8(rows, cand) : _mm512_setzero_si512();
+      // valignq takes its shift as an immediate: the eight shifts are spelled out at compile
+      // time (a loop counter is one only where the optimiser unrolls the loop, not at -O0/-O1).
+      [&]<int... J>(std::integer_sequence<int, J...>) {
+        ((sads[J] = 8 * m + J < side
+                        ? _mm512_sad_epu8(rows, _mm512_alignr_epi64(part[m + 1], part[m], J))
+                        : _mm512_setzero_si512()),
+         ...);
       }
+      (std::make_integer_sequence<int, 8>{});
       half[h] = sums_of_eight(sads);
     }
     const __m512i sad =
