@@ -72,8 +72,10 @@ void pack_frame(const FrameView& f, std::byte* dst, std::uint32_t words) {
 
 // The frames buffer's size for `bytes` of frames: never a power of two. lavapipe compiles a
 // variant of a pipeline for each kind of texel buffer it reads, and whether the buffer's size is a
-// power of two is part of the kind (llvmpipe's sampler key), so a pipeline warmed on one kind
-// compiled again, inside a chunk's wait, on the other (8 s at S=17 with a cold shader cache).
+// power of two is part of the kind (Mesa's gallivm, lp_bld_sample.h: the static texture state
+// embedded in the generated code has `pot_width`, "is the width a power of two?"), so a pipeline
+// warmed on one kind compiled again, inside a chunk's wait, on the other (8 s at S=17 with a cold
+// shader cache).
 std::uint64_t frames_buffer_bytes(std::uint64_t bytes) {
   bytes = std::max<std::uint64_t>(bytes, 12);
   return std::has_single_bit(bytes) ? bytes + 4 : bytes;
