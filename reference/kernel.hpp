@@ -17,6 +17,10 @@ enum class RefVariant {
   kGlobal,    // per frame, three full-frame planes h, g, d before any matching
 };
 
+// Every variant, in the order above.
+inline constexpr RefVariant kRefVariants[] = {RefVariant::kOriginal, RefVariant::kLocal,
+                                              RefVariant::kGlobal};
+
 // The registry name of a variant: "ref-original", "ref-local", "ref-global".
 std::string_view ref_variant_name(RefVariant v);
 

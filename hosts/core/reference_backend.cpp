@@ -36,7 +36,7 @@ BackendFamily reference_family() {
   BackendFamily family;
   family.name = "reference";
   auto& rows = family.rows;
-  for (RefVariant v : {RefVariant::kOriginal, RefVariant::kLocal, RefVariant::kGlobal}) {
+  for (RefVariant v : kRefVariants) {
     BackendRow& row = rows.emplace_back(
         std::string(ref_variant_name(v)), "nothing (portable scalar C++)",
         [] { return std::string(); },

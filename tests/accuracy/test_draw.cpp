@@ -5,14 +5,13 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "run_program.hpp"
-#include "sample_data.hpp"
+#include "sample_frames.hpp"
 #include "truth_pairs.hpp"
 
+using pxflow::test::kData;
 using pxflow::test::run_pxflow;
 
 namespace {
-
-const std::string kData = pxflow::kSampleDataDir;
 
 // Pixels close to the drawing's colour for accepted POIs (BGR 90, 230, 90) and frame flow.
 int count_colour(const cv::Mat& img, cv::Vec3b colour) {

@@ -5,14 +5,13 @@
 #include <opencv2/imgproc.hpp>
 
 #include "estimators.hpp"
-#include "sample_data.hpp"
+#include "sample_frames.hpp"
 #include "truth_pairs.hpp"
 
 using namespace pxflow::accuracy;
+using pxflow::test::kData;
 
 namespace {
-
-const std::string kData = pxflow::kSampleDataDir;
 
 cv::Mat mat(const pxflow::Frame& f) {
   return cv::Mat(f.height, f.width, CV_8UC1, const_cast<std::uint8_t*>(f.pixels.data())).clone();

@@ -14,16 +14,15 @@
 #include "flow_report.hpp"
 #include "frame_ops.hpp"
 #include "run_program.hpp"
-#include "sample_data.hpp"
+#include "sample_frames.hpp"
 
 using nlohmann::json;
+using pxflow::test::kData;
 using pxflow::test::run_program;
 using pxflow::test::run_pxflow;
 using pxflow::test::TempDir;
 
 namespace {
-
-const std::string kData = pxflow::kSampleDataDir;
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> out;

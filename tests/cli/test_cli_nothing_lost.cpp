@@ -12,25 +12,20 @@
 #include "build_paths.hpp"
 #include "results_files.hpp"
 #include "run_program.hpp"
-#include "sample_data.hpp"
+#include "sample_frames.hpp"
 
 using namespace pxflow;
+using test::kSampleNext;
+using test::kSamplePrev;
 using test::require_bad_input;
 using test::run_pxflow;
 using test::slurp;
 
-namespace {
-
-const std::string kPrev = std::string(kSampleDataDir) + "/rubberwhale1.png";
-const std::string kNext = std::string(kSampleDataDir) + "/rubberwhale2.png";
-
-}  // namespace
-
 TEST_CASE("an output path that is one of the inputs is refused before any work", "[cli][lost]") {
   test::TempDir dir;
   const std::string a = dir.path("a.png"), b = dir.path("b.png");
-  dir.write("a.png", slurp(kPrev));
-  dir.write("b.png", slurp(kNext));
+  dir.write("a.png", slurp(kSamplePrev));
+  dir.write("b.png", slurp(kSampleNext));
   const std::string before = slurp(a);
   require_bad_input({"flow", "--draw", a, a, b}, "is an input");
   CHECK(slurp(a) == before);
@@ -43,7 +38,7 @@ TEST_CASE("an output path that is one of the inputs is refused before any work",
 TEST_CASE("a failed write is an error: stdout and files", "[cli][lost]") {
   const auto to_full =
       test::run_program("/bin/sh", {"-c", std::string(build_paths::pxflow) + " flow --json - " +
-                                              kPrev + " " + kNext + " > /dev/full"});
+                                              kSamplePrev + " " + kSampleNext + " > /dev/full"});
   CHECK(to_full.exit_code == 1);
   CHECK(to_full.err.find("cannot write to standard output") != std::string::npos);
   const auto check = run_pxflow(
@@ -82,12 +77,12 @@ TEST_CASE("a check that compared nothing but the reference is not a pass", "[cli
 TEST_CASE("options that would have no effect are refused", "[cli][green]") {
   require_bad_input({"check", "--backends", "ref-local", "--require", "ref-global"},
                     "--require ref-global: not among the backends");
-  require_bad_input({"flow", "--backend", "ref-local", "--device", "0", kPrev, kNext},
+  require_bad_input({"flow", "--backend", "ref-local", "--device", "0", kSamplePrev, kSampleNext},
                     "no selected backend has devices");
   require_bad_input({"check", "--backends", "ref-original,ref-local", "--device", "1"},
                     "no selected backend has devices");
-  require_bad_input({"flow", "--draw", "", kPrev, kNext}, "--draw needs a file name");
-  require_bad_input({"flow", "--set", "gyro_comp=1", kPrev, kNext}, "gyro_comp=1");
+  require_bad_input({"flow", "--draw", "", kSamplePrev, kSampleNext}, "--draw needs a file name");
+  require_bad_input({"flow", "--set", "gyro_comp=1", kSamplePrev, kSampleNext}, "gyro_comp=1");
   require_bad_input({"bench", "--batch", ""}, "--batch: needs at least one value");
   require_bad_input({"bench", "--set", "search_radius=6", "--radius", "2"},
                     "--radius and --set search_radius");

@@ -12,16 +12,15 @@
 #include "build_paths.hpp"
 #include "results_files.hpp"
 #include "run_program.hpp"
-#include "sample_data.hpp"
+#include "sample_frames.hpp"
 
 using namespace pxflow;
+using pxflow::test::kData;
 using test::require_bad_input;
 using test::run_pxflow;
 using test::slurp;
 
 namespace {
-
-const std::string kData = kSampleDataDir;
 
 std::string quoted(const std::vector<std::string>& args) {
   // Not "'" + std::string(...): GCC 12 warns on that one (-Wrestrict, a false positive, GCC

@@ -16,17 +16,16 @@
 #include "build_paths.hpp"
 #include "results_files.hpp"
 #include "run_program.hpp"
-#include "sample_data.hpp"
+#include "sample_frames.hpp"
 
 using namespace pxflow;
+using test::kSampleNext;
+using test::kSamplePrev;
 using test::require_bad_input;
 using test::run_pxflow;
 using test::slurp;
 
 namespace {
-
-const std::string kPrev = std::string(kSampleDataDir) + "/rubberwhale1.png";
-const std::string kNext = std::string(kSampleDataDir) + "/rubberwhale2.png";
 
 std::string sh_quoted(const std::string& s) { return std::string("'") + s + "'"; }
 
@@ -111,7 +110,7 @@ TEST_CASE("a symbolic link is written at its target, which keeps its mode", "[cl
   dir.write("real.json", "old\n");
   REQUIRE(::chmod(dir.path("real.json").c_str(), 0600) == 0);
   REQUIRE(::symlink("real.json", dir.path("link.json").c_str()) == 0);
-  const auto r = run_pxflow({"flow", "--json", dir.path("link.json"), kPrev, kNext});
+  const auto r = run_pxflow({"flow", "--json", dir.path("link.json"), kSamplePrev, kSampleNext});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   CHECK(is_symlink(dir.path("link.json")));
@@ -124,24 +123,26 @@ TEST_CASE("/dev/stdout and its other spellings are standard output", "[cli][writ
   test::TempDir dir;
   // Whatever /dev/stdout is here (a link to /proc/self/fd/1), the run leaves it as it was.
   const auto before = identity("/dev/stdout");
-  const auto r = sh(pxflow_line({"flow", "--json", "/dev/stdout", kPrev, kNext}) + " > " +
-                    sh_quoted(dir.path("out.json")));
+  const auto r = sh(pxflow_line({"flow", "--json", "/dev/stdout", kSamplePrev, kSampleNext}) +
+                    " > " + sh_quoted(dir.path("out.json")));
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   CHECK(nlohmann::json::parse(slurp(dir.path("out.json"))).contains("flow_x"));
   CHECK(identity("/dev/stdout") == before);  // never replaced by a file
   CHECK(listing(dir) == "out.json\n");
-  require_bad_input({"flow", "--json", "/dev/stdout", "--csv", "-", kPrev, kNext},
+  require_bad_input({"flow", "--json", "/dev/stdout", "--csv", "-", kSamplePrev, kSampleNext},
                     "only one of them can write to standard output");
-  require_bad_input({"flow", "--json", "/dev/fd/1", "--csv", "/proc/self/fd/1", kPrev, kNext},
-                    "only one of them can write to standard output");
+  require_bad_input(
+      {"flow", "--json", "/dev/fd/1", "--csv", "/proc/self/fd/1", kSamplePrev, kSampleNext},
+      "only one of them can write to standard output");
 }
 
 TEST_CASE("a read-only output is refused before any work and left as it was", "[cli][writes]") {
   test::TempDir dir;
   dir.write("ro.json", "mine\n");
   REQUIRE(::chmod(dir.path("ro.json").c_str(), 0444) == 0);
-  require_bad_input({"flow", "--json", dir.path("ro.json"), kPrev, kNext}, "is read-only");
+  require_bad_input({"flow", "--json", dir.path("ro.json"), kSamplePrev, kSampleNext},
+                    "is read-only");
   dir.write("f.raw", std::string(3 * 64 * 64, '\x40'));
   require_bad_input({"flow", "--size", "64x64", "--jsonl", dir.path("ro.json"), dir.path("f.raw")},
                     "is read-only");
@@ -151,15 +152,15 @@ TEST_CASE("a read-only output is refused before any work and left as it was", "[
 }
 
 TEST_CASE("a device or a FIFO output is written in place", "[cli][writes]") {
-  const auto null = run_pxflow({"flow", "--json", "/dev/null", kPrev, kNext});
+  const auto null = run_pxflow({"flow", "--json", "/dev/null", kSamplePrev, kSampleNext});
   CHECK(null.exit_code == 0);
   CHECK(S_ISCHR(mode_of("/dev/null")));
   test::TempDir dir;
   const std::string fifo = dir.path("out.fifo");
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-  const auto r =
-      sh("cat " + sh_quoted(fifo) + " > " + sh_quoted(dir.path("got.json")) + " & c=$!; " +
-         pxflow_line({"flow", "--json", fifo, kPrev, kNext}) + " >/dev/null; echo rc=$?; wait $c");
+  const auto r = sh("cat " + sh_quoted(fifo) + " > " + sh_quoted(dir.path("got.json")) +
+                    " & c=$!; " + pxflow_line({"flow", "--json", fifo, kSamplePrev, kSampleNext}) +
+                    " >/dev/null; echo rc=$?; wait $c");
   INFO(r.out << r.err);
   CHECK(r.out == "rc=0\n");
   CHECK(S_ISFIFO(mode_of(fifo)));

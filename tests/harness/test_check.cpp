@@ -15,6 +15,7 @@
 #include "build_paths.hpp"
 #include "run_program.hpp"
 
+using pxflow::test::last_line;
 using pxflow::test::run_program;
 
 namespace {
@@ -22,13 +23,6 @@ namespace {
 pxflow::test::RunResult check(std::vector<std::string> args) {
   args.insert(args.begin(), "check");
   return run_program(build_paths::pxflow_with_test_rows, args);
-}
-
-std::string last_line(const std::string& out) {
-  const auto end = out.find_last_not_of('\n');
-  const auto start = out.rfind('\n', end);
-  return out.substr(start == std::string::npos ? 0 : start + 1,
-                    end - (start == std::string::npos ? 0 : start + 1) + 1);
 }
 
 }  // namespace

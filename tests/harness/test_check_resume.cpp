@@ -8,9 +8,11 @@
 #include <nlohmann/json.hpp>
 
 #include "build_paths.hpp"
+#include "json_file.hpp"
 #include "run_program.hpp"
 
 using nlohmann::json;
+using pxflow::test::read_json;
 using pxflow::test::run_program;
 using pxflow::test::RunResult;
 using pxflow::test::slurp;
@@ -19,16 +21,11 @@ using pxflow::test::TempDir;
 namespace {
 
 // pxflow with the test rows, stopped by itself after `stop_after` cases (0: never).
-RunResult pxflow_run(std::vector<std::string> args, int stop_after = 0) {
+RunResult test_rows_run(std::vector<std::string> args, int stop_after = 0) {
   if (stop_after == 0) return run_program(build_paths::pxflow_with_test_rows, args);
   args.insert(args.begin(), {"PXFLOW_TEST_STOP_AFTER_CASES=" + std::to_string(stop_after),
                              build_paths::pxflow_with_test_rows});
   return run_program("/usr/bin/env", args);
-}
-
-json read(const std::string& path) {
-  std::ifstream in(path);
-  return json::parse(in);
 }
 
 // The file without its times: what an uninterrupted and a resumed run must agree on.
@@ -51,33 +48,33 @@ std::pair<json, json> whole_and_resumed(const TempDir& dir, const std::vector<st
                                         int first, int second, int expected_exit) {
   const std::string file = dir.path("ci.json");
   const std::vector<std::string> run = with(with({"check"}, args), {"--json", file});
-  const RunResult whole = pxflow_run(run);
+  const RunResult whole = test_rows_run(run);
   INFO(whole.out << whole.err);
   REQUIRE(whole.exit_code == expected_exit);
-  const json whole_json = read(file);
+  const json whole_json = read_json(file);
   CHECK(whole_json["complete"] == true);
 
-  const RunResult stopped = pxflow_run(run, first);
+  const RunResult stopped = test_rows_run(run, first);
   INFO(stopped.out << stopped.err);
   REQUIRE(stopped.exit_code == 130);
   CHECK(stopped.err.find("pxflow: interrupted: SIGINT after " + std::to_string(first) + " of ") !=
         std::string::npos);
   CHECK(stopped.err.find("pxflow check --resume " + file + " goes on") != std::string::npos);
-  const json part = read(file);
+  const json part = read_json(file);
   CHECK(part["complete"] == false);
   CHECK(part["verdict"] == "incomplete");
   CHECK(part["cases"] == first);
   CHECK(part["cases_total"] == whole_json["cases_total"]);
 
-  const RunResult again = pxflow_run({"check", "--resume", file}, second);
+  const RunResult again = test_rows_run({"check", "--resume", file}, second);
   INFO(again.out << again.err);
   REQUIRE(again.exit_code == 130);
-  CHECK(read(file)["cases"] == first + second);  // the union of both runs' work
+  CHECK(read_json(file)["cases"] == first + second);  // the union of both runs' work
 
-  const RunResult rest = pxflow_run({"check", "--resume", file});
+  const RunResult rest = test_rows_run({"check", "--resume", file});
   INFO(rest.out << rest.err);
   CHECK(rest.exit_code == expected_exit);
-  return {whole_json, read(file)};
+  return {whole_json, read_json(file)};
 }
 
 }  // namespace
@@ -114,13 +111,13 @@ TEST_CASE("resume: the fixed corpus with n/a cases and a required skip", "[resum
 TEST_CASE("resume: the stopped file names its campaign, its backends are incomplete", "[resume]") {
   TempDir dir;
   const std::string file = dir.path("ci.json");
-  const RunResult r = pxflow_run({"check", "--backends", "ref-original,ref-local", "--cases",
-                                  "2000", "--seed", "7", "--json", file},
-                                 2);
+  const RunResult r = test_rows_run({"check", "--backends", "ref-original,ref-local", "--cases",
+                                     "2000", "--seed", "7", "--json", file},
+                                    2);
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 130);
   CHECK(r.out.find("incomplete: stopped after 2 cases of 8") != std::string::npos);
-  const json j = read(file);
+  const json j = read_json(file);
   CHECK(j["seed"] == 7);
   CHECK(j["campaign"]["fuzz_pairs"] == 2000);
   CHECK(j["campaign"]["backends"] == json({"ref-original", "ref-local"}));
@@ -131,8 +128,8 @@ TEST_CASE("resume: the stopped file names its campaign, its backends are incompl
   CHECK(j["backends"][1]["state"] == "incomplete");
   CHECK(j["backends"][1]["passed"] == 2);
   // The report shows a stopped check as such, and it is not a pass.
-  const RunResult shown = pxflow_run({"report", "--out", dir.path("r"), "--check-json", file,
-                                      "--no-accuracy", "--quick", "--backends", "ref-original"});
+  const RunResult shown = test_rows_run({"report", "--out", dir.path("r"), "--check-json", file,
+                                         "--no-accuracy", "--quick", "--backends", "ref-original"});
   INFO(shown.out << shown.err);
   CHECK(shown.exit_code == 1);
   CHECK(shown.out.find("the check was stopped before its end") != std::string::npos);
@@ -141,12 +138,13 @@ TEST_CASE("resume: the stopped file names its campaign, its backends are incompl
         std::string::npos);
   // Resumed into another file: the stopped one is an input, left as it was.
   const std::string before = slurp(file);
-  const RunResult done = pxflow_run({"check", "--resume", file, "--json", dir.path("done.json")});
+  const RunResult done =
+      test_rows_run({"check", "--resume", file, "--json", dir.path("done.json")});
   INFO(done.out << done.err);
   CHECK(done.exit_code == 0);
   CHECK(slurp(file) == before);
-  CHECK(read(dir.path("done.json"))["complete"] == true);
-  CHECK(read(dir.path("done.json"))["backends"][1]["passed"] == 8);
+  CHECK(read_json(dir.path("done.json"))["complete"] == true);
+  CHECK(read_json(dir.path("done.json"))["backends"][1]["passed"] == 8);
   CHECK(run_program("/bin/ls", {"-A", dir.path("")}).out == "ci.json\ndone.json\nr\n");
 }
 
@@ -157,20 +155,20 @@ TEST_CASE("resume: what cannot be resumed is refused with one line, exit 2", "[r
                                         "--cases", "1000",       "--seed",
                                         "7",       "--json",     file};
   auto refused = [&](const std::vector<std::string>& args, const std::string& what) {
-    const RunResult r = pxflow_run(args);
+    const RunResult r = test_rows_run(args);
     INFO(r.out << r.err);
     CHECK(r.exit_code == 2);
     CHECK(r.err_lines() == 1);
     CHECK(r.err.find(what) != std::string::npos);
   };
-  REQUIRE(pxflow_run(run).exit_code == 0);
+  REQUIRE(test_rows_run(run).exit_code == 0);
   refused({"check", "--resume", file}, "the check is complete (verdict passed): nothing to resume");
-  REQUIRE(pxflow_run(run, 1).exit_code == 130);
+  REQUIRE(test_rows_run(run, 1).exit_code == 130);
   refused({"check", "--resume", file, "--seed", "8"}, "--seed given with --resume");
   refused({"check", "--resume", file, "--backends", "ref-original"},
           "--backends given with --resume");
   refused({"check", "--resume", dir.path("none.json")}, "none.json");
-  const json stopped = read(file);
+  const json stopped = read_json(file);
   auto tampered = [&](const char* name, auto change) {
     json j = stopped;
     change(j);
@@ -200,19 +198,19 @@ TEST_CASE("resume: a stopped report keeps its check in --out, the next one finis
   const std::vector<std::string> report = {
       "report", "--out",         out,      "--backends", "ref-original,ref-local", "--seed",
       "3",      "--no-accuracy", "--quick"};
-  const RunResult stopped = pxflow_run(report, 3);
+  const RunResult stopped = test_rows_run(report, 3);
   INFO(stopped.out << stopped.err);
   REQUIRE(stopped.exit_code == 130);
   CHECK(stopped.err.find(out + "/check.json keeps the check (stopped)") != std::string::npos);
-  const json kept = read(out + "/check.json");
+  const json kept = read_json(out + "/check.json");
   CHECK(kept["complete"] == false);
   CHECK(kept["cases"] == 3);
   CHECK(slurp(out + "/.pxflow-report") == "check.json\n");
-  const RunResult rest = pxflow_run(report);
+  const RunResult rest = test_rows_run(report);
   INFO(rest.out << rest.err);
   CHECK(rest.exit_code == 0);
   CHECK(rest.out.find("(resuming " + out + "/check.json after 3 cases)") != std::string::npos);
-  const json results = read(out + "/results.json");
+  const json results = read_json(out + "/results.json");
   CHECK(results["check"]["complete"] == true);
   CHECK(results["check"]["cases"] == kept["cases_total"]);
   CHECK(slurp(out + "/check.json").empty());  // a complete report removes it

@@ -35,12 +35,6 @@ RunResult report_from(const TempDir& dir, const std::string& out,
   return run_pxflow(args);
 }
 
-const json* section(const json& results, const std::string& key) {
-  for (const auto& s : results["sections"])
-    if (s["key"] == key) return &s;
-  return nullptr;
-}
-
 }  // namespace
 
 #ifdef PXFLOW_TEST_CPU_BUILT

@@ -32,12 +32,6 @@ void write_as_machine(const TempDir& dir, json bench, const std::string& name,
   dir.write(name, bench.dump());
 }
 
-const json* section(const json& results, const std::string& key) {
-  for (const auto& s : results["sections"])
-    if (s["key"] == key) return &s;
-  return nullptr;
-}
-
 // Every cell and text of the sections whose key starts with `prefix`, one string.
 std::string sections_text(const json& results, const std::string& prefix) {
   std::string all;

@@ -7,20 +7,17 @@
 #include <nlohmann/json.hpp>
 
 #include "build_paths.hpp"
+#include "json_file.hpp"
 #include "run_program.hpp"
 
 using nlohmann::json;
+using pxflow::test::read_json;
 using pxflow::test::run_program;
 using pxflow::test::RunResult;
 using pxflow::test::slurp;
 using pxflow::test::TempDir;
 
 namespace {
-
-json read(const std::string& path) {
-  std::ifstream in(path);
-  return json::parse(in);
-}
 
 // Starts `pxflow ARGS` in the background (stdout to `out`, stderr to `err`), waits until `log`
 // shows the extended regular expression `ready` (at most 60 s), sends SIGINT and prints "rc=N" with
@@ -60,7 +57,7 @@ TEST_CASE("resume: SIGINT to a running check --json keeps what it checked, --res
   INFO(r.out << slurp(err));
   REQUIRE(r.out.rfind("rc=130", 0) == 0);
   CHECK(slurp(err).find("pxflow: interrupted: SIGINT after ") != std::string::npos);
-  const json stopped = read(json_path);
+  const json stopped = read_json(json_path);
   CHECK(stopped["complete"] == false);
   CHECK(stopped["verdict"] == "incomplete");
   CHECK(stopped["cases"].get<long>() > 0);
@@ -71,7 +68,7 @@ TEST_CASE("resume: SIGINT to a running check --json keeps what it checked, --res
       run_program(build_paths::pxflow_with_test_rows, {"check", "--resume", json_path});
   INFO(done.out << done.err);
   CHECK(done.exit_code == 0);
-  const json complete = read(json_path);
+  const json complete = read_json(json_path);
   CHECK(complete["complete"] == true);
   CHECK(complete["verdict"] == "passed");
   CHECK(complete["cases"] == kLongCampaignCases);
@@ -93,7 +90,7 @@ TEST_CASE("resume: SIGINT to a running bench --json keeps its rows, report and c
       out, dir.path("err.txt"), out, "batch=4 threads");
   INFO(r.out << slurp(out) << slurp(dir.path("err.txt")));
   REQUIRE(r.out.rfind("rc=130", 0) == 0);
-  const json b = read(bench);
+  const json b = read_json(bench);
   CHECK(b["complete"] == false);
   CHECK(b["points_total"] == 4);
   CHECK(b["points_done"].get<long>() >= 1);

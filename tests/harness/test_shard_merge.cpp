@@ -7,9 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "build_paths.hpp"
+#include "json_file.hpp"
 #include "run_program.hpp"
 
 using nlohmann::json;
+using pxflow::test::last_line;
+using pxflow::test::read_json;
 using pxflow::test::run_program;
 using pxflow::test::RunResult;
 using pxflow::test::slurp;
@@ -28,17 +31,6 @@ std::string numbered_json(const char* stem, int k) {
   name += std::to_string(k);
   name += ".json";
   return name;
-}
-
-json read(const std::string& path) {
-  std::ifstream in(path);
-  return json::parse(in);
-}
-
-std::string last_line(const std::string& out) {
-  const auto end = out.find_last_not_of('\n');
-  const auto start = out.rfind('\n', end);
-  return out.substr(start + 1, end - start);
 }
 
 // Runs `check` with `args` once whole and once as `m` shards, merges the shards (given in
@@ -67,7 +59,7 @@ std::pair<json, json> whole_and_merged(const TempDir& dir, std::vector<std::stri
   INFO(merged.out << merged.err);
   CHECK(merged.exit_code == expected_exit);
   CHECK(last_line(merged.out) == last_line(whole.out));  // "N passed, M failed, K skipped"
-  return {read(dir.path("whole.json")), read(dir.path("merged.json"))};
+  return {read_json(dir.path("whole.json")), read_json(dir.path("merged.json"))};
 }
 
 void require_same_results(const json& whole, const json& merged) {
@@ -103,7 +95,7 @@ TEST_CASE("shard: a fuzz campaign in 3 shards merges into the unsharded run, fai
   // The shards are disjoint, contiguous and together the whole campaign.
   long next = 0, pairs = 0;
   for (int k = 1; k <= 3; ++k) {
-    const json s = read(dir.path(numbered_json("shard", k)));
+    const json s = read_json(dir.path(numbered_json("shard", k)));
     CHECK(s["shard"]["index"] == k);
     CHECK(s["shard"]["first_case"] == next);
     next = s["shard"]["end_case"];
@@ -154,7 +146,7 @@ TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the camp
                                     "--shard", std::to_string(k) + "/12", "--json", file});
     INFO(r.out);
     CHECK(r.exit_code == 0);
-    const json j = read(file);
+    const json j = read_json(file);
     CHECK(j["verdict"] == (k != 3 ? "passed" : "nothing-checked"));
     if (k == 3)
       CHECK(r.out.find("compared nothing: exit 0, pxflow merge judges") != std::string::npos);
@@ -162,7 +154,7 @@ TEST_CASE("shard: a shard whose cases are all n/a exits 0, merge judges the camp
   }
   const RunResult m = pxflow_run(merge);
   CHECK(m.exit_code == 0);
-  CHECK(read(dir.path("m.json"))["passed"] == 51);
+  CHECK(read_json(dir.path("m.json"))["passed"] == 51);
   // A campaign in which no shard compared anything tested nothing: merge exits 1.
   std::vector<std::string> skipped = {"merge", "--json", "-"};
   for (int k = 1; k <= 2; ++k) {
@@ -194,10 +186,10 @@ TEST_CASE("merge: mismatched, repeated or merged files are refused with one line
   shard("of3.json", {"--shard", "2/3"});
   shard("more.json", {"--shard", "2/2"}, "ref-local,ref-global");
   // A shard of another build: the same file with another commit.
-  json other = read(dir.path("a2.json"));
+  json other = read_json(dir.path("a2.json"));
   other["pxflow"]["commit"] = "0123456789ab";
   dir.write("commit.json", other.dump());
-  json inputs = read(dir.path("a2.json"));
+  json inputs = read_json(dir.path("a2.json"));
   inputs["campaign"]["corpus_fingerprint"] = "0000000000000000";
   dir.write("inputs.json", inputs.dump());
   dir.write("broken.json", "{\"seed\": 1");
@@ -297,7 +289,7 @@ TEST_CASE("report: a check's failure lines and an incomplete merge, named, and n
   const RunResult failed = pxflow_run({"check", "--backends", "ref-original,test-bitflip",
                                        "--generated-only", "--json", dir.path("f.json")});
   REQUIRE(failed.exit_code == 1);
-  const std::string line = read(dir.path("f.json"))["backends"][1]["failures"][0];
+  const std::string line = read_json(dir.path("f.json"))["backends"][1]["failures"][0];
   REQUIRE(line.rfind("FAIL test-bitflip case=", 0) == 0);
   const std::string md = report("f.json", "rf");
   const auto conformance = md.find("## Conformance");

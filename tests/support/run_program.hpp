@@ -31,6 +31,15 @@ pid_t start_program(const std::string& binary, const std::vector<std::string>& a
 // The whole file (empty when it cannot be read).
 std::string slurp(const std::string& path);
 
+// The last line of a program's output (trailing newlines dropped).
+inline std::string last_line(const std::string& out) {
+  const auto end = out.find_last_not_of('\n');
+  if (end == std::string::npos) return "";
+  const auto start = out.rfind('\n', end);
+  const auto first = start == std::string::npos ? 0 : start + 1;
+  return out.substr(first, end - first + 1);
+}
+
 // The pxflow binary of this build.
 inline RunResult run_pxflow(const std::vector<std::string>& args) {
   return run_program(build_paths::pxflow, args);

@@ -12,8 +12,6 @@ using test::run_ref;
 
 namespace {
 
-constexpr RefVariant kVariants[] = {RefVariant::kOriginal, RefVariant::kLocal, RefVariant::kGlobal};
-
 FrameResult estimate_with(RefVariant v, const OwnedPair& pair, const Params& p) {
   return estimate_flow(run_ref(v, pair.view(), p), p);
 }
@@ -67,7 +65,7 @@ TEST_CASE("random texture shifted by (+2, -1) gives flow (2, -1), quality 255", 
   for (auto& v : op.prev) v = static_cast<std::uint8_t>(rng.uniform(0, 255));
   shift_into(op.prev, op.next, 64, 64, +2, -1, 7);  // next(x, y) = prev(x-2, y+1)
   REQUIRE(op.next[10 * 64 + 20] == op.prev[11 * 64 + 18]);
-  for (RefVariant v : kVariants)
+  for (RefVariant v : kRefVariants)
     for (bool hf : {true, false}) {
       CAPTURE(ref_variant_name(v), hf);
       Params p;
@@ -82,7 +80,7 @@ TEST_CASE("random texture shifted by (+2, -1) gives flow (2, -1), quality 255", 
 
 TEST_CASE("smoothed texture shifted by (+1.5, +2) gives flow (1.5, 2) with HF off", "[known]") {
   const OwnedPair op = smooth_half_pixel_pair();
-  for (RefVariant v : kVariants) {
+  for (RefVariant v : kRefVariants) {
     CAPTURE(ref_variant_name(v));
     Params p;
     p.hist_filter = false;
@@ -96,7 +94,7 @@ TEST_CASE("smoothed texture shifted by (+1.5, +2) gives flow (1.5, 2) with HF of
 TEST_CASE("a constant image gives flow 0, quality 0", "[known]") {
   OwnedPair op{"constant", 64, 64, std::vector<std::uint8_t>(64 * 64, 77),
                std::vector<std::uint8_t>(64 * 64, 77)};
-  for (RefVariant v : kVariants)
+  for (RefVariant v : kRefVariants)
     for (bool hf : {true, false}) {
       Params p;
       p.hist_filter = hf;

@@ -13,8 +13,6 @@ using test::run_ref;
 
 namespace {
 
-constexpr RefVariant kVariants[] = {RefVariant::kOriginal, RefVariant::kLocal, RefVariant::kGlobal};
-
 // next tiles rows (1, 0) over (1, 2): every horizontal pair sums to an odd number (floor and
 // round-up differ) and every 2x2 window is SPEC §3's diagonal example in some orientation.
 OwnedPair trap_pair() {
@@ -50,7 +48,7 @@ TEST_CASE("half-pixel SADs use floor averages and the two-horizontal diagonal", 
   const Rules wrong[] = {{Rounding::kRoundUp, Diagonal::kTwoHorizontalAverages},
                          {Rounding::kFloor, Diagonal::kFourPixelMean},
                          {Rounding::kFloor, Diagonal::kVerticalFirst}};
-  for (RefVariant v : kVariants) {
+  for (RefVariant v : kRefVariants) {
     CAPTURE(ref_variant_name(v));
     int checked = 0, wrong_rule_differs[3] = {0, 0, 0};
     for (const auto& r : run_ref(v, f, p)) {
@@ -98,7 +96,7 @@ TEST_CASE("integer search: a tie keeps the first candidate in raster order", "[t
           px[y * 64 + x] = static_cast<std::uint8_t>(40 * (x & 1) + 90 * (y & 1));
       OwnedPair op{"periodic", 64, 64, px, px};
       if (odd) shift_into(px, op.next, 64, 64, 1, 0, 0);  // ties now at odd dx
-      for (RefVariant v : kVariants)
+      for (RefVariant v : kRefVariants)
         for (const auto& r : run_ref(v, op.view(), p)) {
           REQUIRE(r.status == kAccepted);
           REQUIRE(r.sad == 0);
@@ -138,7 +136,7 @@ TEST_CASE("feature exactly at FT is kept, one below is dropped", "[traps]") {
   px[(5 + 2 + 1) * 64 + (5 + 2 + 1)] = 110;   // POI (5, 5): Q(1, 1)
   px[(5 + 2 + 0) * 64 + (11 + 2 + 1)] = 113;  // POI (11, 5): Q(1, 0)
   OwnedPair op{"ft", 64, 64, px, px};
-  for (RefVariant v : kVariants) {
+  for (RefVariant v : kRefVariants) {
     const auto recs = run_ref(v, op.view(), Params{});
     CHECK(recs[0].feature == 40);
     CHECK(recs[0].status != kDropped);
@@ -157,7 +155,7 @@ TEST_CASE("SAD exactly at VT is rejected, one below is accepted", "[traps]") {
   for (std::size_t n = 0; n < base.size() && tried < 5; ++n) {
     if (base[n].status != kAccepted || base[n].sad == 0) continue;
     ++tried;
-    for (RefVariant v : kVariants) {
+    for (RefVariant v : kRefVariants) {
       Params p = loose;
       p.sad_threshold = base[n].sad;
       CHECK(run_ref(v, op.view(), p)[n].status == kRejected);
@@ -172,7 +170,7 @@ TEST_CASE("fields a status does not define are exactly zero", "[traps]") {
   int seen[3] = {0, 0, 0};
   for (std::uint64_t seed = 0; seed < 60; ++seed) {
     const OwnedPair op = random_pair(64, 64, 4, seed);
-    for (RefVariant v : kVariants)
+    for (RefVariant v : kRefVariants)
       for (const auto& r : run_ref(v, op.view(), Params{})) {
         REQUIRE(r.pad0 == 0);
         REQUIRE(r.pad1 == 0);
