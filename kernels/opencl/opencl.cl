@@ -240,7 +240,10 @@ __attribute__((always_inline)) inline uint4 quad_sads(const uchar16 block2[8],
     upper += convert_ushort16(max(u[r], block2[r]) - min(u[r], block2[r]));
     lower += convert_ushort16(max(u[r + 2], block2[r]) - min(u[r + 2], block2[r]));
   }
-  return (uint4)(lane_sum(upper.lo), lane_sum(upper.hi), lane_sum(lower.lo), lane_sum(lower.hi));
+  // The four horizontal sums as one pairwise-add tree (ushort holds a block SAD, <= 16320).
+  const ushort16 pairs = (ushort16)(upper.even, lower.even) + (ushort16)(upper.odd, lower.odd);
+  const ushort8 quads = pairs.even + pairs.odd;
+  return convert_uint4(quads.even + quads.odd);
 }
 
 // The minimum key over all (2S+1)^2 candidates; `origin` is the top-left pixel of (-S, -S).
