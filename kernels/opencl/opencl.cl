@@ -227,7 +227,8 @@ __kernel void flow_group_per_poi(__global const uchar* frames, __global uint* re
 // of (dx, dy). u[j] pairs next rows j and j+1 in one uchar16, so against (block row r, block row
 // r) u[r] gives row r of (dx, dy) in lanes 0-7 and of (dx, dy+1) in lanes 8-15, and u[r+2] the
 // same for (dx, dy+2) and (dx, dy+3): eleven row loads serve 32 row SADs, each 16-byte operation
-// does two candidates' rows, and LLVM keeps it all in registers (docs/opencl.md, "Why quads").
+// does two candidates' rows, and LLVM keeps it all in registers (docs/opencl.md, "Work
+// decomposition" and "Why OpenCL on PoCL is a fraction of native").
 // always_inline: PoCL's LLVM otherwise calls it with the block spilled to the stack (measured).
 __attribute__((always_inline)) inline uint4 quad_sads(const uchar16 block2[8],
                                                       __global const uchar* w, int stride) {
