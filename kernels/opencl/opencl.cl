@@ -223,6 +223,58 @@ __kernel void flow_group_per_poi(__global const uchar* frames, __global uint* re
 
 // --- flow_item_per_poi -------------------------------------------------------------------
 
+// Four vertically adjacent candidates (dx, dy) .. (dx, dy+3) at once, `w` at the top-left pixel
+// of (dx, dy). u[j] pairs next rows j and j+1 in one uchar16, so against (block row r, block row
+// r) u[r] gives row r of (dx, dy) in lanes 0-7 and of (dx, dy+1) in lanes 8-15, and u[r+2] the
+// same for (dx, dy+2) and (dx, dy+3): eleven row loads serve 32 row SADs, each 16-byte operation
+// does two candidates' rows, and LLVM keeps it all in registers (docs/opencl.md, "Work
+// decomposition" and "Why OpenCL on PoCL is a fraction of native").
+// always_inline: PoCL's LLVM otherwise calls it with the block spilled to the stack (measured).
+__attribute__((always_inline)) inline uint4 quad_sads(const uchar16 block2[8],
+                                                      __global const uchar* w, int stride) {
+  uchar8 row[11];
+  _Pragma("unroll") for (int r = 0; r < 11; ++r) row[r] = vload8(0, w + r * stride);
+  uchar16 u[10];
+  _Pragma("unroll") for (int j = 0; j < 10; ++j) u[j] = (uchar16)(row[j], row[j + 1]);
+  ushort16 upper = (ushort16)(0), lower = (ushort16)(0);
+  _Pragma("unroll") for (int r = 0; r < 8; ++r) {
+    upper += convert_ushort16(max(u[r], block2[r]) - min(u[r], block2[r]));
+    lower += convert_ushort16(max(u[r + 2], block2[r]) - min(u[r + 2], block2[r]));
+  }
+  // The four horizontal sums as one pairwise-add tree (ushort holds a block SAD, <= 16320).
+  const ushort16 pairs = (ushort16)(upper.even, lower.even) + (ushort16)(upper.odd, lower.odd);
+  const ushort8 quads = pairs.even + pairs.odd;
+  return convert_uint4(quads.even + quads.odd);
+}
+
+// The minimum key over all (2S+1)^2 candidates; `origin` is the top-left pixel of (-S, -S).
+// Candidate rows go four at a time (quad_sads), the last (2S+1) mod 4 one candidate at a time.
+// Keys make the order of evaluation irrelevant: the minimum is the first lowest SAD in raster
+// order either way.
+inline uint best_key_global(const uchar8 block[8], __global const uchar* origin, int width,
+                            int radius) {
+  const int span = 2 * radius + 1;
+  uchar16 block2[8];
+  for (int r = 0; r < 8; ++r) block2[r] = (uchar16)(block[r], block[r]);
+  uint best = 0xFFFFFFFFu;
+  int dy = 0;
+  for (; dy + 3 < span; dy += 4) {
+    for (int dx = 0; dx < span; ++dx) {
+      const uint4 sad = quad_sads(block2, origin + dy * width + dx, width);
+      const uint4 key =
+          (sad << KEY_INDEX_BITS) | ((uint4)(dy * span + dx) + (uint4)(0, 1, 2, 3) * (uint)span);
+      best = min(best, min(min(key.s0, key.s1), min(key.s2, key.s3)));
+    }
+  }
+  for (; dy < span; ++dy) {
+    for (int dx = 0; dx < span; ++dx) {
+      const uint sad = block_sad___global(block, origin + dy * width + dx, width);
+      best = min(best, (sad << KEY_INDEX_BITS) | (uint)(dy * span + dx));
+    }
+  }
+  return best;
+}
+
 // One work-item per POI, global memory only. Launched with at least pairs * POIs-per-pair
 // work-items; `total` is that exact count.
 __kernel void flow_item_per_poi(__global const uchar* frames, __global uint* records, int width,
@@ -244,18 +296,11 @@ __kernel void flow_item_per_poi(__global const uchar* frames, __global uint* rec
     store_dropped(out, poi, feature);
     return;
   }
-  uint best = 0xFFFFFFFFu;
-  int bx = 0, by = 0;
-  for (int dy = -radius; dy <= radius; ++dy) {
-    for (int dx = -radius; dx <= radius; ++dx) {
-      const uint sad = block_sad___global(block, next + (poi.y + dy) * width + poi.x + dx, width);
-      if (sad < best) {  // strict: a tie keeps the earlier candidate in raster order
-        best = sad;
-        bx = dx;
-        by = dy;
-      }
-    }
-  }
+  const int span = 2 * radius + 1;
+  const uint key =
+      best_key_global(block, next + (poi.y - radius) * width + poi.x - radius, width, radius);
+  const uint index = key & KEY_INDEX_MASK, best = key >> KEY_INDEX_BITS;
+  const int bx = (int)(index % (uint)span) - radius, by = (int)(index / (uint)span) - radius;
   uint sub[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   uint status = STATUS_REJECTED, dir = DIR_NONE;
   if (best < sad_threshold) {
