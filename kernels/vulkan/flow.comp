@@ -91,12 +91,18 @@ uint feature_value(uint blk[16]) {
   return sum;
 }
 
-// Step 2, the integer search, dy outer, dx inner (raster order). For one dy and one block row r,
-// the candidates dx = -S..S all read the same 2S+8 pixels of next: they are unpacked once into
-// `seg` and every candidate's row SAD comes from registers. S is a specialization constant, so
-// the loops over dx, c and the segment have constant trip counts, and `seg` and the sums live in
-// registers instead of memory. [[unroll]] makes sure of it for the block-row loop: left as a
-// loop, it indexed prev's block words dynamically and the search was about 20 % slower.
+// Step 2, the integer search, dy outer, dx inner (raster order). The search window (rows y-S ..
+// y+S+7, columns x-S .. x+S+7 of next) is read once per POI, one row per step of the t loop:
+// `win` holds the 8 rows under the block at the current dy as packed words, and each step moves
+// them up by one row and reads the next. Reading rows per (dy, block row) instead cost 8 times the
+// texel fetches (360 against 80 per POI at S = 4), and each fetch is a call to lavapipe's gather
+// helper (docs/vulkan.md, "Benchmark"). For one dy and one block row r, the candidates dx = -S..S
+// all read the same 2S+8 pixels of next: they are unpacked once into `seg` and every candidate's
+// row SAD comes from registers. S is a specialization constant, so the loops over dx, c and the
+// segment have constant trip counts, and `win`, `seg` and the sums are registers instead of
+// memory. [[unroll]] makes sure of it for the block-row loop: left as a loop, it indexed prev's
+// block dynamically and the search was about 20 % slower. The t loop stays a loop (unrolled, it
+// compiled for seconds and gained nothing).
 layout(constant_id = 1) const int S = 4;
 const int kSide = 2 * S + 1;                // candidates per axis
 const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of one row
@@ -106,39 +112,44 @@ const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of 
 // add per pixel instead of a subtract, an abs and an add. N comes from running 8-pixel sums along
 // each row of next (two operations per candidate), A once per POI. All exact in 32 bits.
 // Only a STRICTLY smaller SAD replaces, so ties keep the first candidate in raster order.
-// prev's block comes from blk (held in registers for the whole search), not from memory.
+// prev's block is unpacked once per POI into `pv` (the loop-invariant pixels, which the JIT keeps
+// in registers or reads as memory operands), not once per dy.
 void integer_search(uint blk[16], uint n, out uint best, out int bx, out int by) {
   best = 0xFFFFFFFFu;
   bx = 0;
   by = 0;
+  int pv[64];  // prev's block, pixel (c, r) at 8 r + c
+  POISON(pv);
   int block_sum = 0;  // A
-  [[unroll]] for (int k = 0; k < 16; ++k) {
-    for (int j = 0; j < 4; ++j) block_sum += int((AT(blk, k) >> (8u * uint(j))) & 0xFFu);
+  [[unroll]] for (int k = 0; k < 64; ++k) {
+    AT(pv, k) = int((AT(blk, k >> 2) >> (8u * uint(k & 3))) & 0xFFu);
+    block_sum += AT(pv, k);
   }
-  for (int dy = -S; dy <= S; ++dy) {
+  // (Arrays sized by S stay in this function: passing them to functions breaks SPIR-V validation.)
+  uint win[8 * kSegWords];  // window rows t-7 .. t from column x - S, kSegWords packed words each
+  POISON(win);
+  uint m = uint(int(n) - S * int(pc.width) - S);  // window row t's first pixel
+  for (int t = 0; t < kSide + 7; ++t) {
+    [[unroll]] for (int k = 0; k < 7 * kSegWords; ++k) AT(win, k) = AT(win, k + kSegWords);
+    uint q = m >> 2;
+    uint sh = (m & 3u) * 8u;
+    uint lo = FRAME_WORD(kNext, q);
+    [[unroll]] for (int k = 0; k < kSegWords; ++k) {
+      uint hi = FRAME_WORD(kNext, q + uint(k) + 1u);
+      AT(win, 7 * kSegWords + k) = funnel(lo, hi, sh);
+      lo = hi;
+    }
+    m += pc.width;
+    if (t < 7) continue;  // the first 7 rows only fill `win`
+    int dy = t - 7 - S;
     int twice_max_minus_next[kSide];  // 2 M - N, summed over the block rows
     POISON(twice_max_minus_next);
     for (int k = 0; k < kSide; ++k) AT(twice_max_minus_next, k) = 0;
     [[unroll]] for (int r = 0; r < 8; ++r) {
-      uint row = n + uint(r) * pc.width;
-      int pv[8];
-      POISON(pv);
-      for (int c = 0; c < 4; ++c) {
-        AT(pv, c) = int((AT(blk, 2 * r) >> (8u * uint(c))) & 0xFFu);
-        AT(pv, c + 4) = int((AT(blk, 2 * r + 1) >> (8u * uint(c))) & 0xFFu);
-      }
-      // The 4 * kSegWords pixels of next from column x - S of row y + r + dy, unpacked. (Arrays
-      // sized by S stay in this function: passing them to functions breaks SPIR-V validation.)
-      uint m = uint(int(row) + dy * int(pc.width) - S);
-      uint q = m >> 2;
-      uint sh = (m & 3u) * 8u;
-      uint lo = FRAME_WORD(kNext, q);
-      int seg[kSegWords * 4];
+      int seg[kSegWords * 4];  // window row t - 7 + r, unpacked
       POISON(seg);
       [[unroll]] for (int k = 0; k < kSegWords; ++k) {
-        uint hi = FRAME_WORD(kNext, q + uint(k) + 1u);
-        uint w = funnel(lo, hi, sh);
-        lo = hi;
+        uint w = AT(win, r * kSegWords + k);
         for (int j = 0; j < 4; ++j) AT(seg, 4 * k + j) = int((w >> (8u * uint(j))) & 0xFFu);
       }
       int next_sum = 0;  // the 8 pixels of next under the block row at candidate dx
@@ -146,7 +157,7 @@ void integer_search(uint blk[16], uint n, out uint best, out int bx, out int by)
       [[unroll]] for (int dx = 0; dx < kSide; ++dx) {
         if (dx > 0) next_sum += AT(seg, dx + 7) - AT(seg, dx - 1);
         int max_sum = 0;
-        for (int c = 0; c < 8; ++c) max_sum += max(AT(pv, c), AT(seg, dx + c));
+        for (int c = 0; c < 8; ++c) max_sum += max(AT(pv, 8 * r + c), AT(seg, dx + c));
         AT(twice_max_minus_next, dx) += 2 * max_sum - next_sum;
       }
     }
