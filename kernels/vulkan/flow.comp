@@ -109,8 +109,9 @@ const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of 
 
 // Why max, not abs: |a - b| = 2 max(a, b) - a - b, so SAD(dx, dy) = 2 M - A - N with M the sum of
 // max(prev, next) over the block, A the block's pixel sum and N the candidate's: one max and one
-// add per pixel instead of a subtract, an abs and an add. N comes from running 8-pixel sums along
-// each row of next (two operations per candidate), A once per POI. All exact in 32 bits.
+// add per pixel instead of a subtract, an abs and an add. N comes from the window's column sums
+// under the block (one add per column and block row), run along the row once per dy (two
+// operations per candidate), A once per POI. All exact in 32 bits.
 // Only a STRICTLY smaller SAD replaces, so ties keep the first candidate in raster order.
 // prev's block is unpacked once per POI into `pv` (the loop-invariant pixels, which the JIT keeps
 // in registers or reads as memory operands), not once per dy.
@@ -142,9 +143,12 @@ void integer_search(uint blk[16], uint n, out uint best, out int bx, out int by)
     m += pc.width;
     if (t < 7) continue;  // the first 7 rows only fill `win`
     int dy = t - 7 - S;
-    int twice_max_minus_next[kSide];  // 2 M - N, summed over the block rows
-    POISON(twice_max_minus_next);
-    for (int k = 0; k < kSide; ++k) AT(twice_max_minus_next, k) = 0;
+    int max_sums[kSide];  // M of each candidate dx of this dy
+    POISON(max_sums);
+    for (int k = 0; k < kSide; ++k) AT(max_sums, k) = 0;
+    int column_sums[kSegWords * 4];  // the 8 window rows under the block, summed per column
+    POISON(column_sums);
+    for (int k = 0; k < kSegWords * 4; ++k) AT(column_sums, k) = 0;
     [[unroll]] for (int r = 0; r < 8; ++r) {
       int seg[kSegWords * 4];  // window row t - 7 + r, unpacked
       POISON(seg);
@@ -152,17 +156,16 @@ void integer_search(uint blk[16], uint n, out uint best, out int bx, out int by)
         uint w = AT(win, r * kSegWords + k);
         for (int j = 0; j < 4; ++j) AT(seg, 4 * k + j) = int((w >> (8u * uint(j))) & 0xFFu);
       }
-      int next_sum = 0;  // the 8 pixels of next under the block row at candidate dx
-      for (int c = 0; c < 8; ++c) next_sum += AT(seg, c);
+      for (int k = 0; k < kSegWords * 4; ++k) AT(column_sums, k) += AT(seg, k);
       [[unroll]] for (int dx = 0; dx < kSide; ++dx) {
-        if (dx > 0) next_sum += AT(seg, dx + 7) - AT(seg, dx - 1);
-        int max_sum = 0;
-        for (int c = 0; c < 8; ++c) max_sum += max(AT(pv, 8 * r + c), AT(seg, dx + c));
-        AT(twice_max_minus_next, dx) += 2 * max_sum - next_sum;
+        for (int c = 0; c < 8; ++c) AT(max_sums, dx) += max(AT(pv, 8 * r + c), AT(seg, dx + c));
       }
     }
+    int next_sum = 0;  // N of candidate dx: 8 column sums, running along the row
+    for (int c = 0; c < 8; ++c) next_sum += AT(column_sums, c);
     for (int k = 0; k < kSide; ++k) {
-      uint sad = uint(AT(twice_max_minus_next, k) - block_sum);
+      if (k > 0) next_sum += AT(column_sums, k + 7) - AT(column_sums, k - 1);
+      uint sad = uint(2 * AT(max_sums, k) - next_sum - block_sum);
       if (sad < best) {
         best = sad;
         bx = k - S;
