@@ -113,23 +113,22 @@ const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of 
 // under the block (one add per column and block row), run along the row once per dy (two
 // operations per candidate), A once per POI. All exact in 32 bits.
 // Only a STRICTLY smaller SAD replaces, so ties keep the first candidate in raster order.
-// prev's block is unpacked once per POI into `pv` (the loop-invariant pixels, which the JIT keeps
-// in registers or reads as memory operands), not once per dy.
-void integer_search(uint blk[16], uint n, out uint best, out int bx, out int by) {
+// prev's block comes unpacked (`pv`, flow_poi): loop-invariant pixels, which the JIT keeps in
+// registers or reads as memory operands.
+void integer_search(int pv[64], uint n, out uint best, out int bx, out int by) {
   best = 0xFFFFFFFFu;
   bx = 0;
   by = 0;
-  int pv[64];  // prev's block, pixel (c, r) at 8 r + c
-  POISON(pv);
   int block_sum = 0;  // A
-  [[unroll]] for (int k = 0; k < 64; ++k) {
-    AT(pv, k) = int((AT(blk, k >> 2) >> (8u * uint(k & 3))) & 0xFFu);
-    block_sum += AT(pv, k);
-  }
+  [[unroll]] for (int k = 0; k < 64; ++k) block_sum += AT(pv, k);
   // (Arrays sized by S stay in this function: passing them to functions breaks SPIR-V validation.)
   uint win[8 * kSegWords];  // window rows t-7 .. t from column x - S, kSegWords packed words each
   POISON(win);
   uint m = uint(int(n) - S * int(pc.width) - S);  // window row t's first pixel
+  // Every loop in the t loop is unrolled: lavapipe ends an invocation after 65,535 loop
+  // iterations in all (docs/vulkan.md, "Waiting on a device"), and at S = 31 the t loop's 70
+  // steps times its inner loops' iterations (the checked build's poison loops included) passed
+  // that and left the records wrong.
   for (int t = 0; t < kSide + 7; ++t) {
     [[unroll]] for (int k = 0; k < 7 * kSegWords; ++k) AT(win, k) = AT(win, k + kSegWords);
     uint q = m >> 2;
@@ -145,10 +144,10 @@ void integer_search(uint blk[16], uint n, out uint best, out int bx, out int by)
     int dy = t - 7 - S;
     int max_sums[kSide];  // M of each candidate dx of this dy
     POISON(max_sums);
-    for (int k = 0; k < kSide; ++k) AT(max_sums, k) = 0;
+    [[unroll]] for (int k = 0; k < kSide; ++k) AT(max_sums, k) = 0;
     int column_sums[kSegWords * 4];  // the 8 window rows under the block, summed per column
     POISON(column_sums);
-    for (int k = 0; k < kSegWords * 4; ++k) AT(column_sums, k) = 0;
+    [[unroll]] for (int k = 0; k < kSegWords * 4; ++k) AT(column_sums, k) = 0;
     [[unroll]] for (int r = 0; r < 8; ++r) {
       int seg[kSegWords * 4];  // window row t - 7 + r, unpacked
       POISON(seg);
@@ -156,14 +155,14 @@ void integer_search(uint blk[16], uint n, out uint best, out int bx, out int by)
         uint w = AT(win, r * kSegWords + k);
         for (int j = 0; j < 4; ++j) AT(seg, 4 * k + j) = int((w >> (8u * uint(j))) & 0xFFu);
       }
-      for (int k = 0; k < kSegWords * 4; ++k) AT(column_sums, k) += AT(seg, k);
+      [[unroll]] for (int k = 0; k < kSegWords * 4; ++k) AT(column_sums, k) += AT(seg, k);
       [[unroll]] for (int dx = 0; dx < kSide; ++dx) {
         for (int c = 0; c < 8; ++c) AT(max_sums, dx) += max(AT(pv, 8 * r + c), AT(seg, dx + c));
       }
     }
     int next_sum = 0;  // N of candidate dx: 8 column sums, running along the row
-    for (int c = 0; c < 8; ++c) next_sum += AT(column_sums, c);
-    for (int k = 0; k < kSide; ++k) {
+    [[unroll]] for (int c = 0; c < 8; ++c) next_sum += AT(column_sums, c);
+    [[unroll]] for (int k = 0; k < kSide; ++k) {
       if (k > 0) next_sum += AT(column_sums, k + 7) - AT(column_sums, k - 1);
       uint sad = uint(2 * AT(max_sums, k) - next_sum - block_sum);
       if (sad < best) {
@@ -205,31 +204,40 @@ void half_rows(uint m, out HalfRow q0, out HalfRow q1) {
   q1 = HalfRow(here1, uhadd8(here1, right1), uhadd8(left1, here1));
 }
 
-// One block row's 4 packed pixels b against the eight direction values built from rows r-1, r,
+// The SAD of 4 unpacked pixels p of prev against 4 packed values v.
+uint sad4(ivec4 p, uint v) {
+  ivec4 d = abs(p - ivec4((uvec4(v) >> uvec4(0u, 8u, 16u, 24u)) & 0xFFu));
+  return uint(d.x + d.y + d.z + d.w);
+}
+
+// One block row's 4 unpacked pixels b against the eight direction values built from rows r-1, r,
 // r+1 of next. The diagonal d(u, v) is the floor average of two floored HORIZONTAL averages.
-void add_half_sads(uint b, HalfRow up, HalfRow mid, HalfRow down, inout uint sub[8]) {
-  sub[0] += usad8(b, mid.h);                    // h(c, r)
-  sub[1] += usad8(b, uhadd8(mid.h, down.h));    // d(c, r)
-  sub[2] += usad8(b, uhadd8(mid.p, down.p));    // g(c, r)
-  sub[3] += usad8(b, uhadd8(mid.hl, down.hl));  // d(c-1, r)
-  sub[4] += usad8(b, mid.hl);                   // h(c-1, r)
-  sub[5] += usad8(b, uhadd8(up.hl, mid.hl));    // d(c-1, r-1)
-  sub[6] += usad8(b, uhadd8(up.p, mid.p));      // g(c, r-1)
-  sub[7] += usad8(b, uhadd8(up.h, mid.h));      // d(c, r-1)
+void add_half_sads(ivec4 b, HalfRow up, HalfRow mid, HalfRow down, inout uint sub[8]) {
+  sub[0] += sad4(b, mid.h);                    // h(c, r)
+  sub[1] += sad4(b, uhadd8(mid.h, down.h));    // d(c, r)
+  sub[2] += sad4(b, uhadd8(mid.p, down.p));    // g(c, r)
+  sub[3] += sad4(b, uhadd8(mid.hl, down.hl));  // d(c-1, r)
+  sub[4] += sad4(b, mid.hl);                   // h(c-1, r)
+  sub[5] += sad4(b, uhadd8(up.hl, mid.hl));    // d(c-1, r-1)
+  sub[6] += sad4(b, uhadd8(up.p, mid.p));      // g(c, r-1)
+  sub[7] += sad4(b, uhadd8(up.h, mid.h));      // d(c, r-1)
 }
 
 // Step 3: the eight half-pixel SADs around the integer match at pixel n of next. Rows -1 .. 8 of
 // next are read once each, rolling down the block (up, mid, down).
-void half_pixel_sads(uint blk[16], uint n, out uint sub[8]) {
+void half_pixel_sads(int pv[64], uint n, out uint sub[8]) {
   POISON(sub);
   for (int k = 0; k < 8; ++k) AT(sub, k) = 0u;
   HalfRow up0, up1, mid0, mid1, down0, down1;
   half_rows(n - pc.width, up0, up1);
   half_rows(n, mid0, mid1);
-  for (int r = 0; r < 8; ++r) {
+  [[unroll]] for (int r = 0; r < 8; ++r) {
     half_rows(n + uint(r + 1) * pc.width, down0, down1);
-    add_half_sads(AT(blk, 2 * r), up0, mid0, down0, sub);
-    add_half_sads(AT(blk, 2 * r + 1), up1, mid1, down1, sub);
+    int c = 8 * r;
+    ivec4 left = ivec4(AT(pv, c), AT(pv, c + 1), AT(pv, c + 2), AT(pv, c + 3));
+    ivec4 right = ivec4(AT(pv, c + 4), AT(pv, c + 5), AT(pv, c + 6), AT(pv, c + 7));
+    add_half_sads(left, up0, mid0, down0, sub);
+    add_half_sads(right, up1, mid1, down1, sub);
     up0 = mid0;
     up1 = mid1;
     mid0 = down0;
@@ -280,6 +288,11 @@ void flow_poi() {
     load8(kPrev, n + uint(r) * pc.width, AT(blk, 2 * r), AT(blk, 2 * r + 1));
 
   uint feature = feature_value(blk);
+  int pv[64];  // the same block unpacked, pixel (c, r) at 8 r + c, for the search and step 3
+  POISON(pv);
+  [[unroll]] for (int k = 0; k < 64; ++k) {
+    AT(pv, k) = int((AT(blk, k >> 2) >> (8u * uint(k & 3))) & 0xFFu);
+  }
   if (feature < pc.feature_threshold) {
     write_record(item, x, y, kStatusDropped, feature, 0, 0, 0u, kDirNone, zero, 0, 0);
     return;
@@ -288,14 +301,14 @@ void flow_poi() {
   uint best;
   int bx;
   int by;
-  integer_search(blk, n, best, bx, by);
+  integer_search(pv, n, best, bx, by);
   if (!(best < pc.sad_threshold)) {
     write_record(item, x, y, kStatusRejected, feature, bx, by, best, kDirNone, zero, 0, 0);
     return;
   }
 
   uint sub[8];
-  half_pixel_sads(blk, uint(int(n) + by * int(pc.width) + bx), sub);
+  half_pixel_sads(pv, uint(int(n) + by * int(pc.width) + bx), sub);
   // The vote starts from the integer match (kDirNone); k = 0..7 replaces only when strictly
   // smaller.
   uint vote = best;
