@@ -114,7 +114,7 @@ const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of 
 // operations per candidate), A once per POI. All exact in 32 bits.
 // Only a STRICTLY smaller SAD replaces, so ties keep the first candidate in raster order.
 // prev's block comes unpacked (`pv`, flow_poi): loop-invariant pixels, which the JIT keeps in
-// registers or reads as memory operands.
+// registers or reloads from the stack.
 void integer_search(int pv[64], uint n, out uint best, out int bx, out int by) {
   best = 0xFFFFFFFFu;
   bx = 0;
