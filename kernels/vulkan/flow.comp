@@ -91,67 +91,80 @@ uint feature_value(uint blk[16]) {
   return sum;
 }
 
-// Step 2, the integer search, dy outer, dx inner (raster order). For one dy and one block row r,
-// the candidates dx = -S..S all read the same 2S+8 pixels of next: they are unpacked once into
-// `seg` and every candidate's row SAD comes from registers. S is a specialization constant, so
-// the loops over dx, c and the segment have constant trip counts, and `seg` and the sums live in
-// registers instead of memory. [[unroll]] makes sure of it for the block-row loop: left as a
-// loop, it indexed prev's block words dynamically and the search was about 20 % slower.
+// Step 2, the integer search, dy outer, dx inner (raster order). The search window (rows y-S ..
+// y+S+7, columns x-S .. x+S+7 of next) is read once per POI, one row per step of the t loop:
+// `win` holds the 8 rows under the block at the current dy as packed words, and each step moves
+// them up by one row and reads the next. Reading rows per (dy, block row) instead cost 8 times the
+// texel fetches (360 against 80 per POI at S = 4), and each fetch is a call to lavapipe's gather
+// helper (docs/vulkan.md, "Benchmark"). For one dy and one block row r, the candidates dx = -S..S
+// all read the same 2S+8 pixels of next: they are unpacked once into `seg` and every candidate's
+// row SAD comes from registers. S is a specialization constant, so the loops over dx, c and the
+// segment have constant trip counts, and `win`, `seg` and the sums are registers instead of
+// memory. [[unroll]] makes sure of it for the block-row loop: left as a loop, it indexed prev's
+// block dynamically and the search was about 20 % slower. The t loop stays a loop (unrolled, it
+// compiled for seconds and gained nothing).
 layout(constant_id = 1) const int S = 4;
 const int kSide = 2 * S + 1;                // candidates per axis
 const int kSegWords = (2 * S + 8 + 3) / 4;  // words holding the 2S+8 pixels of one row
 
 // Why max, not abs: |a - b| = 2 max(a, b) - a - b, so SAD(dx, dy) = 2 M - A - N with M the sum of
 // max(prev, next) over the block, A the block's pixel sum and N the candidate's: one max and one
-// add per pixel instead of a subtract, an abs and an add. N comes from running 8-pixel sums along
-// each row of next (two operations per candidate), A once per POI. All exact in 32 bits.
+// add per pixel instead of a subtract, an abs and an add. N comes from the window's column sums
+// under the block (one add per column and block row), run along the row once per dy (two
+// operations per candidate), A once per POI. All exact in 32 bits.
 // Only a STRICTLY smaller SAD replaces, so ties keep the first candidate in raster order.
-// prev's block comes from blk (held in registers for the whole search), not from memory.
-void integer_search(uint blk[16], uint n, out uint best, out int bx, out int by) {
+// prev's block comes unpacked (`pv`, flow_poi): loop-invariant pixels, which the JIT keeps in
+// registers or reloads from the stack.
+void integer_search(int pv[64], uint n, out uint best, out int bx, out int by) {
   best = 0xFFFFFFFFu;
   bx = 0;
   by = 0;
   int block_sum = 0;  // A
-  [[unroll]] for (int k = 0; k < 16; ++k) {
-    for (int j = 0; j < 4; ++j) block_sum += int((AT(blk, k) >> (8u * uint(j))) & 0xFFu);
-  }
-  for (int dy = -S; dy <= S; ++dy) {
-    int twice_max_minus_next[kSide];  // 2 M - N, summed over the block rows
-    POISON(twice_max_minus_next);
-    for (int k = 0; k < kSide; ++k) AT(twice_max_minus_next, k) = 0;
+  [[unroll]] for (int k = 0; k < 64; ++k) block_sum += AT(pv, k);
+  // (Arrays sized by S stay in this function: passing them to functions breaks SPIR-V validation.)
+  uint win[8 * kSegWords];  // window rows t-7 .. t from column x - S, kSegWords packed words each
+  POISON(win);
+  uint m = uint(int(n) - S * int(pc.width) - S);  // window row t's first pixel
+  // Every loop in the t loop is unrolled: lavapipe ends an invocation after 65,535 loop
+  // iterations in all (docs/vulkan.md, "Waiting on a device"), and at S = 31 the t loop's 70
+  // steps times its inner loops' iterations (the checked build's poison loops included) passed
+  // that and left the records wrong.
+  for (int t = 0; t < kSide + 7; ++t) {
+    [[unroll]] for (int k = 0; k < 7 * kSegWords; ++k) AT(win, k) = AT(win, k + kSegWords);
+    uint q = m >> 2;
+    uint sh = (m & 3u) * 8u;
+    uint lo = FRAME_WORD(kNext, q);
+    [[unroll]] for (int k = 0; k < kSegWords; ++k) {
+      uint hi = FRAME_WORD(kNext, q + uint(k) + 1u);
+      AT(win, 7 * kSegWords + k) = funnel(lo, hi, sh);
+      lo = hi;
+    }
+    m += pc.width;
+    if (t < 7) continue;  // the first 7 rows only fill `win`
+    int dy = t - 7 - S;
+    int max_sums[kSide];  // M of each candidate dx of this dy
+    POISON(max_sums);
+    [[unroll]] for (int k = 0; k < kSide; ++k) AT(max_sums, k) = 0;
+    int column_sums[kSegWords * 4];  // the 8 window rows under the block, summed per column
+    POISON(column_sums);
+    [[unroll]] for (int k = 0; k < kSegWords * 4; ++k) AT(column_sums, k) = 0;
     [[unroll]] for (int r = 0; r < 8; ++r) {
-      uint row = n + uint(r) * pc.width;
-      int pv[8];
-      POISON(pv);
-      for (int c = 0; c < 4; ++c) {
-        AT(pv, c) = int((AT(blk, 2 * r) >> (8u * uint(c))) & 0xFFu);
-        AT(pv, c + 4) = int((AT(blk, 2 * r + 1) >> (8u * uint(c))) & 0xFFu);
-      }
-      // The 4 * kSegWords pixels of next from column x - S of row y + r + dy, unpacked. (Arrays
-      // sized by S stay in this function: passing them to functions breaks SPIR-V validation.)
-      uint m = uint(int(row) + dy * int(pc.width) - S);
-      uint q = m >> 2;
-      uint sh = (m & 3u) * 8u;
-      uint lo = FRAME_WORD(kNext, q);
-      int seg[kSegWords * 4];
+      int seg[kSegWords * 4];  // window row t - 7 + r, unpacked
       POISON(seg);
       [[unroll]] for (int k = 0; k < kSegWords; ++k) {
-        uint hi = FRAME_WORD(kNext, q + uint(k) + 1u);
-        uint w = funnel(lo, hi, sh);
-        lo = hi;
+        uint w = AT(win, r * kSegWords + k);
         for (int j = 0; j < 4; ++j) AT(seg, 4 * k + j) = int((w >> (8u * uint(j))) & 0xFFu);
       }
-      int next_sum = 0;  // the 8 pixels of next under the block row at candidate dx
-      for (int c = 0; c < 8; ++c) next_sum += AT(seg, c);
+      [[unroll]] for (int k = 0; k < kSegWords * 4; ++k) AT(column_sums, k) += AT(seg, k);
       [[unroll]] for (int dx = 0; dx < kSide; ++dx) {
-        if (dx > 0) next_sum += AT(seg, dx + 7) - AT(seg, dx - 1);
-        int max_sum = 0;
-        for (int c = 0; c < 8; ++c) max_sum += max(AT(pv, c), AT(seg, dx + c));
-        AT(twice_max_minus_next, dx) += 2 * max_sum - next_sum;
+        for (int c = 0; c < 8; ++c) AT(max_sums, dx) += max(AT(pv, 8 * r + c), AT(seg, dx + c));
       }
     }
-    for (int k = 0; k < kSide; ++k) {
-      uint sad = uint(AT(twice_max_minus_next, k) - block_sum);
+    int next_sum = 0;  // N of candidate dx: 8 column sums, running along the row
+    [[unroll]] for (int c = 0; c < 8; ++c) next_sum += AT(column_sums, c);
+    [[unroll]] for (int k = 0; k < kSide; ++k) {
+      if (k > 0) next_sum += AT(column_sums, k + 7) - AT(column_sums, k - 1);
+      uint sad = uint(2 * AT(max_sums, k) - next_sum - block_sum);
       if (sad < best) {
         best = sad;
         bx = k - S;
@@ -191,31 +204,40 @@ void half_rows(uint m, out HalfRow q0, out HalfRow q1) {
   q1 = HalfRow(here1, uhadd8(here1, right1), uhadd8(left1, here1));
 }
 
-// One block row's 4 packed pixels b against the eight direction values built from rows r-1, r,
+// The SAD of 4 unpacked pixels p of prev against 4 packed values v.
+uint sad4(ivec4 p, uint v) {
+  ivec4 d = abs(p - ivec4((uvec4(v) >> uvec4(0u, 8u, 16u, 24u)) & 0xFFu));
+  return uint(d.x + d.y + d.z + d.w);
+}
+
+// One block row's 4 unpacked pixels b against the eight direction values built from rows r-1, r,
 // r+1 of next. The diagonal d(u, v) is the floor average of two floored HORIZONTAL averages.
-void add_half_sads(uint b, HalfRow up, HalfRow mid, HalfRow down, inout uint sub[8]) {
-  sub[0] += usad8(b, mid.h);                    // h(c, r)
-  sub[1] += usad8(b, uhadd8(mid.h, down.h));    // d(c, r)
-  sub[2] += usad8(b, uhadd8(mid.p, down.p));    // g(c, r)
-  sub[3] += usad8(b, uhadd8(mid.hl, down.hl));  // d(c-1, r)
-  sub[4] += usad8(b, mid.hl);                   // h(c-1, r)
-  sub[5] += usad8(b, uhadd8(up.hl, mid.hl));    // d(c-1, r-1)
-  sub[6] += usad8(b, uhadd8(up.p, mid.p));      // g(c, r-1)
-  sub[7] += usad8(b, uhadd8(up.h, mid.h));      // d(c, r-1)
+void add_half_sads(ivec4 b, HalfRow up, HalfRow mid, HalfRow down, inout uint sub[8]) {
+  sub[0] += sad4(b, mid.h);                    // h(c, r)
+  sub[1] += sad4(b, uhadd8(mid.h, down.h));    // d(c, r)
+  sub[2] += sad4(b, uhadd8(mid.p, down.p));    // g(c, r)
+  sub[3] += sad4(b, uhadd8(mid.hl, down.hl));  // d(c-1, r)
+  sub[4] += sad4(b, mid.hl);                   // h(c-1, r)
+  sub[5] += sad4(b, uhadd8(up.hl, mid.hl));    // d(c-1, r-1)
+  sub[6] += sad4(b, uhadd8(up.p, mid.p));      // g(c, r-1)
+  sub[7] += sad4(b, uhadd8(up.h, mid.h));      // d(c, r-1)
 }
 
 // Step 3: the eight half-pixel SADs around the integer match at pixel n of next. Rows -1 .. 8 of
 // next are read once each, rolling down the block (up, mid, down).
-void half_pixel_sads(uint blk[16], uint n, out uint sub[8]) {
+void half_pixel_sads(int pv[64], uint n, out uint sub[8]) {
   POISON(sub);
   for (int k = 0; k < 8; ++k) AT(sub, k) = 0u;
   HalfRow up0, up1, mid0, mid1, down0, down1;
   half_rows(n - pc.width, up0, up1);
   half_rows(n, mid0, mid1);
-  for (int r = 0; r < 8; ++r) {
+  [[unroll]] for (int r = 0; r < 8; ++r) {
     half_rows(n + uint(r + 1) * pc.width, down0, down1);
-    add_half_sads(AT(blk, 2 * r), up0, mid0, down0, sub);
-    add_half_sads(AT(blk, 2 * r + 1), up1, mid1, down1, sub);
+    int c = 8 * r;
+    ivec4 left = ivec4(AT(pv, c), AT(pv, c + 1), AT(pv, c + 2), AT(pv, c + 3));
+    ivec4 right = ivec4(AT(pv, c + 4), AT(pv, c + 5), AT(pv, c + 6), AT(pv, c + 7));
+    add_half_sads(left, up0, mid0, down0, sub);
+    add_half_sads(right, up1, mid1, down1, sub);
     up0 = mid0;
     up1 = mid1;
     mid0 = down0;
@@ -266,6 +288,11 @@ void flow_poi() {
     load8(kPrev, n + uint(r) * pc.width, AT(blk, 2 * r), AT(blk, 2 * r + 1));
 
   uint feature = feature_value(blk);
+  int pv[64];  // the same block unpacked, pixel (c, r) at 8 r + c, for the search and step 3
+  POISON(pv);
+  [[unroll]] for (int k = 0; k < 64; ++k) {
+    AT(pv, k) = int((AT(blk, k >> 2) >> (8u * uint(k & 3))) & 0xFFu);
+  }
   if (feature < pc.feature_threshold) {
     write_record(item, x, y, kStatusDropped, feature, 0, 0, 0u, kDirNone, zero, 0, 0);
     return;
@@ -274,14 +301,14 @@ void flow_poi() {
   uint best;
   int bx;
   int by;
-  integer_search(blk, n, best, bx, by);
+  integer_search(pv, n, best, bx, by);
   if (!(best < pc.sad_threshold)) {
     write_record(item, x, y, kStatusRejected, feature, bx, by, best, kDirNone, zero, 0, 0);
     return;
   }
 
   uint sub[8];
-  half_pixel_sads(blk, uint(int(n) + by * int(pc.width) + bx), sub);
+  half_pixel_sads(pv, uint(int(n) + by * int(pc.width) + bx), sub);
   // The vote starts from the integer match (kDirNone); k = 0..7 replaces only when strictly
   // smaller.
   uint vote = best;

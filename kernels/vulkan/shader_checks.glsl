@@ -83,7 +83,7 @@ uint checked_frame_word(uint frame, uint word, int line) {
 const int kPoison = 0x5A5A5A5A;
 
 #define POISON(array) \
-  for (int poison_i = 0; poison_i < array.length(); ++poison_i) array[poison_i] = kPoison
+  [[unroll]] for (int poison_i = 0; poison_i < array.length(); ++poison_i) array[poison_i] = kPoison
 
 void report_shader_faults() {
   if (fault == 0u) return;
