@@ -117,6 +117,8 @@ void refine_poi(const PoiContext& ctx, PoiRecord& rec) {
 // one grid row ahead, a slice per POI, lets the memory system fetch them while the core
 // computes: a call's frames usually come from memory (the caller's other work evicted them),
 // and in turn a window's 2S + 10 lines would each be waited for.
+constexpr std::ptrdiff_t kSmallPairBytes = 24 * 1024;
+
 class RowPrefetch {
  public:
   RowPrefetch(const FramePair& pair, const GridAxis& xs, int S)
@@ -163,7 +165,10 @@ void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, i
   const GridAxis ys = grid_axis_triple(p.height, p);
   const auto per_row = static_cast<std::size_t>(xs.count);
   RowPrefetch ahead(pair, xs, p.search_radius);
-  if (first_row < end_row) {
+  // A pair that fits the L1 cache twice over (64x64: 8 KB a frame) gained nothing from memory
+  // and lost 6-7 % from L2 (pxflow bench, px4flow-64, batch 256): the hints are for large frames.
+  const bool prefetch = 2 * pair.next.stride * p.height > kSmallPairBytes;
+  if (prefetch && first_row < end_row) {
     ahead.plan(ys.first + first_row * ys.step, 0, true);
     ahead.fetch(0, 1);
   }
@@ -173,7 +178,7 @@ void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, i
   for (int row = first_row; row < end_row; ++row) {
     const int y = ys.first + row * ys.step;
     const std::size_t first = static_cast<std::size_t>(row) * per_row;
-    const bool more = row + 1 < end_row;
+    const bool more = prefetch && row + 1 < end_row;
     if (more) ahead.plan(y + ys.step, y, false);
     for (int c = 0; c < xs.count; ++c) {
       if (more) ahead.fetch(c, xs.count);
