@@ -36,8 +36,8 @@ void copy_row(std::uint8_t* dst, const std::uint8_t* src, int n) {
 // A zero-padded copy of the window whose top-left pixel is next(x0, y0), for POIs whose kernel
 // reads would leave the frame on the right; the guard bytes around it are checked after the copy.
 // The buffer is made at a call's first copy: most kernels never need one (avx512bw's masked
-// loads, the 8-byte loads of sse2, swar and neon), and making it cost more than the walk of a
-// small frame.
+// loads, the 8-byte loads of sse2, swar and neon), and making it costs more than the walk of
+// a small frame.
 Window copy_window(const FrameView& next, int x0, int y0, int side, int row_bytes,
                    std::optional<WindowGuard>& guard) {
   if (!guard) guard.emplace(side, row_bytes);
@@ -112,13 +112,11 @@ void refine_poi(const PoiContext& ctx, PoiRecord& rec) {
 }
 
 // The frame rows a grid row reads that the grid row above it did not: of `next`, its windows'
-// rows up to y + S + 9 (from y - S - 1 for the first), of `prev`, its blocks' rows y .. y + 7,
+// rows down to y + S + 8 (from y - S - 1 for the first), of `prev`, its blocks' rows y .. y + 7,
 // each across the grid's columns. Asking for them (a hint: no fault, no effect on any result)
 // one grid row ahead, a slice per POI, lets the memory system fetch them while the core
 // computes: a call's frames usually come from memory (the caller's other work evicted them),
 // and in turn a window's 2S + 10 lines would each be waited for.
-constexpr std::ptrdiff_t kSmallPairBytes = 24 * 1024;
-
 class RowPrefetch {
  public:
   RowPrefetch(const FramePair& pair, const GridAxis& xs, int S)
@@ -151,6 +149,9 @@ class RowPrefetch {
   int next_from_ = 0, next_end_ = 0, prev_from_ = 0, rows_ = 0;
 };
 
+// A pair of at most this many bytes takes no hints (see run_flow_rows).
+constexpr std::ptrdiff_t kSmallPairBytes = 24 * 1024;
+
 }  // namespace
 
 void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, int first_row,
@@ -165,7 +166,7 @@ void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, i
   const GridAxis ys = grid_axis_triple(p.height, p);
   const auto per_row = static_cast<std::size_t>(xs.count);
   RowPrefetch ahead(pair, xs, p.search_radius);
-  // A pair that fits the L1 cache twice over (64x64: 8 KB a frame) gained nothing from memory
+  // A pair that fits in half the L1 cache (64x64: 4 KB a frame) gained nothing from memory
   // and lost 6-7 % from L2 (pxflow bench, px4flow-64, batch 256): the hints are for large frames.
   const bool prefetch = 2 * pair.next.stride * p.height > kSmallPairBytes;
   if (prefetch && first_row < end_row) {
