@@ -27,7 +27,7 @@ class CpuBackend final : public Backend {
   void run(std::span<const FramePair> pairs, const Params& p, std::span<PoiRecord> out,
            OpCounts& counts) override {
     const std::size_t per_pair = poi_count(p);
-    const auto rows = static_cast<int>(grid_axis(p.height, p).size());
+    const int rows = grid_axis_triple(p.height, p).count;
     const int bands = bands_per_pair(pairs.size(), rows);
     // Each item is one band of grid rows of one pair; its records have their own place and its
     // counts are summed in item order, so the bytes do not depend on who ran it.

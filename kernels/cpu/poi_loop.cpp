@@ -1,7 +1,9 @@
 // The portable part of every CPU kernel: the walk over the POI grid, the feature test, the search
 // window (copied only where a kernel's wide loads would leave the frame) and the record.
 
+#include <algorithm>
 #include <cstring>
+#include <optional>
 
 #include "cpu_kernel.hpp"
 #include "grid.hpp"
@@ -33,7 +35,13 @@ void copy_row(std::uint8_t* dst, const std::uint8_t* src, int n) {
 
 // A zero-padded copy of the window whose top-left pixel is next(x0, y0), for POIs whose kernel
 // reads would leave the frame on the right; the guard bytes around it are checked after the copy.
-Window copy_window(const FrameView& next, int x0, int y0, WindowGuard& copy) {
+// The buffer is made at a call's first copy: most kernels never need one (avx512bw's masked
+// loads, the 8-byte loads of sse2, swar and neon), and making it costs more than the walk of
+// a small frame.
+Window copy_window(const FrameView& next, int x0, int y0, int side, int row_bytes,
+                   std::optional<WindowGuard>& guard) {
+  if (!guard) guard.emplace(side, row_bytes);
+  WindowGuard& copy = *guard;
   for (int r = 0; r < copy.side(); ++r) copy_row(copy.row(r), next.row(y0 + r) + x0, copy.side());
   copy.check(y0);
   return {copy.row(0), copy.stride()};
@@ -63,7 +71,7 @@ struct PoiContext {
   const Params& p;
   int row_bytes;
   OpCounts* counts;
-  WindowGuard& copy;
+  std::optional<WindowGuard>& copy;
 };
 
 // Steps 1 and 2 and the record's fields up to `sad`; the half-pixel step is refine_poi's.
@@ -82,7 +90,8 @@ void search_poi(const PoiContext& ctx, int x, int y, PoiRecord& rec) {
   }
   const FrameView& next = ctx.pair.next;
   Window w{next.row(y - S - 1) + (x - S - 1), next.stride};
-  if (x - S - 1 + ctx.row_bytes > next.width) w = copy_window(next, x - S - 1, y - S - 1, ctx.copy);
+  if (x - S - 1 + ctx.row_bytes > next.width)
+    w = copy_window(next, x - S - 1, y - S - 1, 2 * S + 10, ctx.row_bytes, ctx.copy);
   const Block block{ctx.pair.prev.row(y) + x, ctx.pair.prev.stride};
   const BlockMatch m = ctx.kernel.search(block, w, S, ctx.counts);
   rec.dx = static_cast<std::int8_t>(m.dx);
@@ -102,6 +111,47 @@ void refine_poi(const PoiContext& ctx, PoiRecord& rec) {
   ref::select_half_pixel(rec, ref::Match{rec.dx, rec.dy, rec.sad}, sub);
 }
 
+// The frame rows a grid row reads that the grid row above it did not: of `next`, its windows'
+// rows down to y + S + 8 (from y - S - 1 for the first), of `prev`, its blocks' rows y .. y + 7,
+// each across the grid's columns. Asking for them (a hint: no fault, no effect on any result)
+// one grid row ahead, a slice per POI, lets the memory system fetch them while the core
+// computes: a call's frames usually come from memory (the caller's other work evicted them),
+// and in turn a window's 2S + 10 lines would each be waited for.
+class RowPrefetch {
+ public:
+  RowPrefetch(const FramePair& pair, const GridAxis& xs, int S)
+      : pair_(pair), S_(S), x0_(xs.first - S - 1), n_((xs.count - 1) * xs.step + 2 * S + 10) {}
+
+  // Rows of grid row y (y_above: the grid row before it, or none when y is the first).
+  void plan(int y, int y_above, bool first) {
+    next_from_ = first ? y - S_ - 1 : std::max(y_above + S_ + 9, y - S_ - 1);
+    next_end_ = y + S_ + 9;
+    prev_from_ = y;
+    rows_ = (next_end_ - next_from_) + 8;
+  }
+  // Slice `part` of `parts` of the planned rows.
+  [[gnu::always_inline]] void fetch(int part, int parts) const {
+    for (int k = part * rows_ / parts; k < (part + 1) * rows_ / parts; ++k) {
+      const int in_next = next_end_ - next_from_;
+      const std::uint8_t* row = k < in_next
+                                    ? pair_.next.row(next_from_ + k) + x0_
+                                    : pair_.prev.row(prev_from_ + k - in_next) + x0_ + S_ + 1;
+      const int n = k < in_next ? n_ : n_ - 2 * S_ - 2;
+      // A prefetch is a builtin GCC's IPA would let it drop from a helper it deems pure: it is
+      // written here, inlined, where it stays.
+      for (int at = 0; at < n + 63; at += 64) __builtin_prefetch(row + std::min(at, n - 1));
+    }
+  }
+
+ private:
+  const FramePair& pair_;
+  int S_, x0_, n_;
+  int next_from_ = 0, next_end_ = 0, prev_from_ = 0, rows_ = 0;
+};
+
+// A pair of at most this many bytes takes no hints (see run_flow_rows).
+constexpr std::ptrdiff_t kSmallPairBytes = 24 * 1024;
+
 }  // namespace
 
 void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, int first_row,
@@ -109,26 +159,40 @@ void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, i
   OpCounts* charged = k.counts_ops ? &counts : nullptr;
   if (charged) counts.counted = true;
   const int row_bytes = k.row_bytes(p.search_radius);
-  WindowGuard copy(2 * p.search_radius + 10, row_bytes);
+  WindowGuard::require_row_bytes(2 * p.search_radius + 10, row_bytes);
+  std::optional<WindowGuard> copy;
   const PoiContext ctx{k, pair, p, row_bytes, charged, copy};
-  const std::vector<int> xs = grid_axis(p.width, p);
-  const std::vector<int> ys = grid_axis(p.height, p);
+  const GridAxis xs = grid_axis_triple(p.width, p);
+  const GridAxis ys = grid_axis_triple(p.height, p);
+  const auto per_row = static_cast<std::size_t>(xs.count);
+  RowPrefetch ahead(pair, xs, p.search_radius);
+  // A pair that fits in half the L1 cache (64x64: 4 KB a frame) gained nothing from memory
+  // and lost 6-7 % from L2 (pxflow bench, px4flow-64, batch 256): the hints are for large frames.
+  const bool prefetch = 2 * pair.next.stride * p.height > kSmallPairBytes;
+  if (prefetch && first_row < end_row) {
+    ahead.plan(ys.first + first_row * ys.step, 0, true);
+    ahead.fetch(0, 1);
+  }
   // A grid row's searches first, then its half-pixel steps: each step's calls are independent
   // of each other, so the core overlaps one POI's search with the next one's instead of waiting
   // for each match before its refinement can start (a quarter of the time at px4flow-64).
   for (int row = first_row; row < end_row; ++row) {
-    const std::size_t first = static_cast<std::size_t>(row) * xs.size();
-    std::size_t n = first;
-    for (int x : xs) search_poi(ctx, x, ys[static_cast<std::size_t>(row)], out[n++]);
-    for (n = first; n < first + xs.size(); ++n)
+    const int y = ys.first + row * ys.step;
+    const std::size_t first = static_cast<std::size_t>(row) * per_row;
+    const bool more = prefetch && row + 1 < end_row;
+    if (more) ahead.plan(y + ys.step, y, false);
+    for (int c = 0; c < xs.count; ++c) {
+      if (more) ahead.fetch(c, xs.count);
+      search_poi(ctx, xs.first + c * xs.step, y, out[first + static_cast<std::size_t>(c)]);
+    }
+    for (std::size_t n = first; n < first + per_row; ++n)
       if (out[n].status == kAccepted) refine_poi(ctx, out[n]);
   }
 }
 
 void run_flow(const IsaKernel& k, const FramePair& pair, const Params& p, std::span<PoiRecord> out,
               OpCounts& counts) {
-  const auto rows = static_cast<int>(grid_axis(p.height, p).size());
-  run_flow_rows(k, pair, p, 0, rows, out, counts);
+  run_flow_rows(k, pair, p, 0, grid_axis_triple(p.height, p).count, out, counts);
 }
 
 }  // namespace pxflow::cpu

@@ -32,14 +32,18 @@ void poison(std::uint8_t* p, std::size_t n, bool on) {
 
 // Rows start 16-byte aligned in the buffer, with at least 8 guard bytes past row_bytes.
 int stride_for(int side, int row_bytes) {
-  if (row_bytes < side)  // cpu_kernel.hpp: a kernel declares at least the window's 2S+10 bytes
-    throw BackendError("cpu kernel: row_bytes = " + std::to_string(row_bytes) +
-                       " for a window of " + std::to_string(side) +
-                       " columns: it reads the frame past the bytes it declares (internal)");
+  WindowGuard::require_row_bytes(side, row_bytes);
   return (row_bytes + 8 + 15) / 16 * 16;
 }
 
 }  // namespace
+
+void WindowGuard::require_row_bytes(int side, int row_bytes) {
+  if (row_bytes < side)  // cpu_kernel.hpp: a kernel declares at least the window's 2S+10 bytes
+    throw BackendError("cpu kernel: row_bytes = " + std::to_string(row_bytes) +
+                       " for a window of " + std::to_string(side) +
+                       " columns: it reads the frame past the bytes it declares (internal)");
+}
 
 WindowGuard::WindowGuard(int side, int row_bytes)
     : side_(side),

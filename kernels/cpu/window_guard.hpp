@@ -19,6 +19,9 @@ namespace pxflow::cpu {
 class WindowGuard {
  public:
   WindowGuard(int side, int row_bytes);
+  // Throws BackendError unless a kernel's row_bytes covers the window's `side` columns (the
+  // constructor's check, for callers that make the buffer only when they need it).
+  static void require_row_bytes(int side, int row_bytes);
   WindowGuard(const WindowGuard&) = delete;
   WindowGuard& operator=(const WindowGuard&) = delete;
   ~WindowGuard();
