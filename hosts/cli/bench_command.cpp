@@ -313,8 +313,9 @@ Command add_bench_command(CommandSpec& app) {
             "The default sweeps' quick subset: batch <= 256 and the frame sizes, no radius or "
             "thread sweep, --min-time 0.05 unless given (what report --quick runs)");
   sub->flag("--no-bound", a->no_bound,
-            "Do not measure the bound (about half a second per process; no x bound column): "
-            "for gates that compare builds, not kernels with their bound");
+            "Do not measure the host's SAD ceiling (about half a second per process; the rows "
+            "of the host CPU, OpenCL and Vulkan then say no bound): for gates that compare "
+            "builds, not kernels with their bound");
   add_device_option(*sub, a->backend_options.device);
   add_json_option(*sub, a->json_path,
                   "the table then goes to stderr; a bench a signal stops writes the rows it "

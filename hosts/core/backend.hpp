@@ -78,7 +78,32 @@ class Backend {
     std::string driver;          // e.g. "Mesa 22.3.6 (LLVM 15.0.6)", "gap8_model 1a2b3c4d5e6f"
   };
   virtual Description describe() const { return {}; }
+
+  // What kind of device the kernel runs on, as its driver reports it: "cpu" (a driver that runs
+  // it on the host's cores: PoCL's pthread device, lavapipe), "gpu", "other"; "" for code on the
+  // host CPU or a backend that does not say. The bench's bound of a row follows from it
+  // (docs/harness.md, "The bound of every row").
+  virtual std::string device_kind() const { return {}; }
+
+  // A bound of the backend's own clock for one frame of these parameters, which the bench puts
+  // beside the rows of that clock (the GAP8 model's cycles, QEMU's instructions): what it is, its
+  // unit and its figure; nullopt where the bench's own bounds decide (docs/harness.md, "The bound
+  // of every row").
+  struct DeviceBound {
+    std::string what;      // how it is made, for the bench's header and the report
+    std::string unit;      // of `per_frame`: "cycles", "instructions"
+    double per_frame = 0;  // in `unit`
+  };
+  virtual std::optional<DeviceBound> device_bound(const Params&) const { return std::nullopt; }
 };
+
+// SPEC §6's SAD work of one frame that every bound is made of: every POI searched ((2S+1)^2
+// candidates) and refined (8 half steps), 64 bytes each, the feature test left out (364,544
+// bytes for px4flow-64).
+inline double sad_bytes_per_frame(long pois, int search_radius) {
+  const long candidates = (2L * search_radius + 1) * (2L * search_radius + 1);
+  return static_cast<double>(pois) * static_cast<double>(candidates + 8) * 64.0;
+}
 
 // Where a backend runs, as every result says it: its device (OpenCL, Vulkan, a model, a board),
 // or "host" for code on the host CPU. A result whose backend did not run says "".

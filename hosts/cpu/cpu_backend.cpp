@@ -116,7 +116,7 @@ std::optional<BenchBound> psadbw_bound() {
                         cpu::ceiling_instructions() + " here)",
                     "tsc",
                     [fastest](int threads) { return cpu::measure_ceiling(fastest, threads); },
-                    cpu::sad_bytes_per_frame};
+                    sad_bytes_per_frame};
 #else
   return std::nullopt;
 #endif

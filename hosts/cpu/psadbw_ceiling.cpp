@@ -98,9 +98,4 @@ double measure_ceiling(const std::string& instruction, int threads) {
   return 0;
 }
 
-double sad_bytes_per_frame(long pois, int search_radius) {
-  const long candidates = (2L * search_radius + 1) * (2L * search_radius + 1);
-  return static_cast<double>(pois) * static_cast<double>(candidates + 8) * 64.0;
-}
-
 }  // namespace pxflow::cpu

@@ -36,8 +36,4 @@ Ceiling fastest_instruction();
 // runs, since others may share the machine. 0 for an instruction this CPU may not use.
 double measure_ceiling(const std::string& instruction, int threads);
 
-// The bound of SPEC §6's SAD work for one frame: every POI searched and refined, the feature
-// test left out (364,544 bytes for px4flow-64), in bytes.
-double sad_bytes_per_frame(long pois, int search_radius);
-
 }  // namespace pxflow::cpu

@@ -51,6 +51,18 @@ void Gap8Backend::run(std::span<const FramePair> pairs, const Params& p, std::sp
   last_stats_ = std::move(stats);
 }
 
+// RI5CY's Xpulp SIMD instructions take 4 bytes of each operand, one instruction per cycle, and
+// GAP8 has no SAD instruction (a 4-byte SAD is 4 of them, flow_simd.h; 2 in the fast variant's
+// algebra, flow_search_fast.c): no kernel compares more than 4 bytes per cycle per core.
+std::optional<Backend::DeviceBound> Gap8Backend::device_bound(const Params& p) const {
+  const int cores = options_.cores;
+  return DeviceBound{
+      "the SAD work at 4 bytes per cycle on each of " + std::to_string(cores) +
+          " cores (one 4-byte Xpulp SIMD instruction per cycle, no load)",
+      "cycles",
+      sad_bytes_per_frame(static_cast<long>(poi_count(p)), p.search_radius) / (4.0 * cores)};
+}
+
 Backend::Description Gap8Backend::describe() const {
   return {std::string("kernels/gap8 ") + gap8_variant(variant_).name + " on " +
               counted(options_.cores, "core") + ", TCDM contention " +

@@ -23,6 +23,9 @@ class Gap8Backend : public Backend {
   std::optional<DeviceTime> last_device_time() const override { return last_time_; }
   // The variant's kernel, the cluster it runs on and the model's version (git tree ids).
   Description describe() const override;
+  // The SAD work at one 4-byte SIMD instruction per cycle on each of the cluster's cores
+  // (docs/harness.md, "The bound of every row").
+  std::optional<DeviceBound> device_bound(const Params& p) const override;
 
   // The model's statistics of the last run() (per pair and per core).
   const gap8_host::BatchStats& last_stats() const { return last_stats_; }

@@ -2,7 +2,17 @@
 
 #include <cmath>
 
+#include "grid.hpp"
+
 namespace pxflow::m4qemu {
+
+// The Cortex-M4's widest SAD instruction, USADA8, compares 4 bytes: no code does the SAD work in
+// fewer instructions than one per 4 bytes (loads and the search's bookkeeping not counted).
+std::optional<Backend::DeviceBound> M4QemuBackend::device_bound(const Params& p) const {
+  return DeviceBound{"the SAD work at one USADA8 (4 bytes) per instruction, no load",
+                     "instructions",
+                     sad_bytes_per_frame(static_cast<long>(poi_count(p)), p.search_radius) / 4.0};
+}
 
 M4QemuBackend::M4QemuBackend(std::shared_ptr<dut::Device> device)
     : device_(device), inner_(std::move(device)) {}

@@ -25,6 +25,9 @@ class M4QemuBackend : public Backend {
     d.device = "Cortex-M4 on qemu-system-arm -M mps2-an386 (" + d.device + ")";
     return d;
   }
+  // The SAD work at one USADA8 (4 bytes) per instruction, in instructions as the row's clock
+  // counts them (docs/harness.md, "The bound of every row").
+  std::optional<DeviceBound> device_bound(const Params& p) const override;
 
  private:
   std::shared_ptr<dut::Device> device_;

@@ -87,6 +87,11 @@ Backend::Description OpenclBackend::describe() const {
               ", driver " + cl::device_string(d.device, CL_DRIVER_VERSION)};
 }
 
+std::string OpenclBackend::device_kind() const {
+  const cl::DeviceEntry& d = program_->device;
+  return d.cpu ? "cpu" : d.gpu ? "gpu" : "other";
+}
+
 OpenclBackend::~OpenclBackend() {
   // No buffer is released while a command still uses it; an abandoned device's were leaked.
   if (queue_ && abandoned_.empty()) clFinish(queue_.get());

@@ -60,6 +60,7 @@ class OpenclBackend final : public Backend {
   const std::string& device_name() const { return program_->device.name; }
   // The kernel layout, the device and the platform's version string (PoCL's names its release).
   Description describe() const override;
+  std::string device_kind() const override;  // CL_DEVICE_TYPE: "cpu", "gpu", "other"
   std::size_t group_size() const { return group_size_; }
   OpenclLayout layout() const { return tuning_.layout; }  // never kAuto
 

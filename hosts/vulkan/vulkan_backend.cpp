@@ -137,6 +137,19 @@ Backend::Description VulkanBackend::describe() const {
           std::string(driver.driverName) + ", " + driver.driverInfo};
 }
 
+std::string VulkanBackend::device_kind() const {
+  switch (ctx_->properties().deviceType) {
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "cpu";  // lavapipe (llvmpipe)
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "gpu";
+    default:
+      return "other";
+  }
+}
+
 std::vector<std::string> VulkanBackend::validation_messages() const { return ctx_->messages(); }
 
 std::uint64_t VulkanBackend::buffer_limit() const {

@@ -80,6 +80,7 @@ class VulkanBackend final : public Backend {
   std::string device_name() const;
   // The device and its driver (VkPhysicalDeviceDriverProperties, core in Vulkan 1.2).
   Description describe() const override;
+  std::string device_kind() const override;  // VkPhysicalDeviceType: "cpu", "gpu", "other"
   // Validation-layer messages so far (only with config.validation or PXFLOW_VULKAN_VALIDATION).
   std::vector<std::string> validation_messages() const;
 

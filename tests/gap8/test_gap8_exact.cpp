@@ -65,7 +65,56 @@ OwnedPair half_pixel_edge_pair(int w, int h, int bx, std::uint64_t seed) {
   return o;
 }
 
+// Independent noise in prev and next, then each POI's 8x8 block of prev copied into next at
+// (i + dx, j), dx = 1 for the first two thirds of the grid's POIs and 2 for the rest: every POI's
+// integer match is exact (SAD 0) and no half step beats it, so hx is 2 or 4 and HF's mean over
+// the window is non-dyadic (6 x 65 + 3 x 67 over 9 at 9 POIs: flow_x = 4/3).
+OwnedPair non_dyadic_pair(const Params& p, std::uint64_t seed) {
+  const int w = p.width, h = p.height;
+  OwnedPair o{"non-dyadic flow_x", w, h, {}, {}};
+  Rng rng(seed);
+  o.prev.resize(static_cast<std::size_t>(w * h));
+  o.next.resize(o.prev.size());
+  for (auto& v : o.prev) v = static_cast<std::uint8_t>(rng.uniform(0, 255));
+  for (auto& v : o.next) v = static_cast<std::uint8_t>(rng.uniform(0, 255));
+  const std::vector<int> xs = grid_axis(w, p), ys = grid_axis(h, p);
+  const std::size_t pois = xs.size() * ys.size();
+  for (std::size_t n = 0; n < pois; ++n) {
+    const int i = xs[n % xs.size()], j = ys[n / xs.size()], dx = 3 * n < 2 * pois ? 1 : 2;
+    for (int r = 0; r < 8; ++r)
+      for (int c = 0; c < 8; ++c) o.next[(j + r) * w + i + dx + c] = o.prev[(j + r) * w + i + c];
+  }
+  return o;
+}
+
 }  // namespace
+
+// The team's merged histogram has two bins of zeros past its top bin, which the window of a peak
+// there reads at S = 31; the word after them is the previous frame's flow_x bits (bits[0]), so
+// one zero bin short makes a non-dyadic flow_x (low bits set) leak into the next frame of the
+// same cluster run. Kills the mutant fast_serial.c:30:37:const-1 (docs/measurements/
+// mutation-campaigns.md), which the outermost-bins test below, whose frames before a top-bin
+// peak have dyadic flows, let survive.
+TEST_CASE("gap8 fast: a top-bin peak at S = 31 after a non-dyadic flow_x", "[gap8][no-sanitizer]") {
+  const Gap8VariantInfo* fast = nullptr;
+  for (const Gap8VariantInfo& v : gap8_variants())
+    if (std::string(v.name) == "fast") fast = &v;
+  REQUIRE(fast != nullptr);
+  Params p = profile("px4flow-64");  // HF on
+  p.width = p.height = 96;           // grid 32, 41, 50: 9 POIs whose blocks do not overlap
+  p.search_radius = 31;
+  p.blocks = 3;
+  p.min_count = 2;
+  validate(p);
+  REQUIRE(grid_axis(p.width, p).size() == 3);
+  for (int cores : {8, 1}) {
+    Gap8Backend backend(fast->id, gap8_host::RunOptions{cores, true, false});
+    const std::vector<OwnedPair> pairs{non_dyadic_pair(p, 5), half_pixel_edge_pair(96, 96, 31, 6)};
+    require_exact({"gap8-fast on " + std::to_string(cores) + " cores", "non-dyadic then top bin",
+                   "96x96 S=31 B=3"},
+                  pairs, p, batch_run_of(backend));
+  }
+}
 
 // HF's window at the histogram's ends (SPEC §5's clamp): the fast variant's team estimate sums
 // p - 2 .. p + 2 over two bins of zeros on each side, also at S = 31 (the largest histogram).

@@ -73,6 +73,8 @@ MUTATIONS = [
      lambda j: j["provenance"]["bench_files"][1]["machine"].pop("host")),
     ("provenance.bench_files[0].complete a string",
      lambda j: j["provenance"]["bench_files"][0].__setitem__("complete", "yes")),
+    ("bench.rows[0].bound_unit unknown",
+     lambda j: j["bench"]["rows"][0].__setitem__("bound_unit", "furlongs")),
     ("gap8 cycles a fraction",
      lambda j: next(iter(next(iter(j["gap8"]["variants"].values())).values())).__setitem__(
          "cycles", 0.5)),
@@ -95,6 +97,23 @@ def csv_header_failures(schema, report):
         if set(header) != want:
             failures.append("%s: columns %s, the schema's fields %s" % (name, sorted(header),
                                                                         sorted(want)))
+    return failures
+
+
+def bound_failures(results):
+    """Every timed bench row shows its bound and the fraction achieved, or says why it has none
+    (docs/harness.md, "The bound of every row"), and the report has the bound section."""
+    failures = []
+    for row in results["bench"]["rows"]:
+        if not row["samples_ns_per_frame"]:
+            continue
+        bound = row.get("bound", "")
+        if not bound:
+            failures.append("timed bench row of %s without its bound" % row["backend"])
+        elif not bound.startswith("none: ") and not row.get("bound_fraction"):
+            failures.append("bench row of %s: a bound but no fraction" % row["backend"])
+    if not any(s["key"] == "bound" for s in results["sections"]):
+        failures.append("no section 'bound' (every row's fraction of its bound)")
     return failures
 
 
@@ -122,6 +141,7 @@ def main():
     for e in errors:
         failures.append("produced results.json: %s: %s" % (list(e.path), e.message))
     failures += csv_header_failures(schema, r)
+    failures += bound_failures(results)
     # The parts a test of the schema must see: otherwise a null would pass for them.
     for key in ("check", "bench", "comparison", "accuracy", "gap8"):
         if results.get(key) is None:

@@ -13,6 +13,7 @@
 #include <x86intrin.h>
 #endif
 
+#include "bench_bound.hpp"
 #include "bench_stats.hpp"
 #include "counted.hpp"
 #include "errors.hpp"
@@ -46,6 +47,18 @@ constexpr bool kHasTsc =
 #else
     false;
 #endif
+
+// The TSC's rate: its ticks over 50 ms of the steady clock (an invariant TSC ticks at one rate
+// whatever the cores' clocks do), to turn a bound in TSC cycles into time.
+double measure_tsc_hz() {
+  if (!kHasTsc) return 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::uint64_t c0 = tsc_now();
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const std::uint64_t c1 = tsc_now();
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return static_cast<double>(c1 - c0) / s;
+}
 
 // Repeat r times the batch starting at pair r % kDistinctPairs, so that even batch 1 sees a new
 // frame each time (as a camera would): timing one frame over and over lets the branch predictor
@@ -88,9 +101,9 @@ struct Column {
   const char* name;
   int width;
 };
-constexpr Column kColumns[] = {{"clock", 22},    {"ns/frame", 12}, {"95% CI of median", 23},
-                               {"frames/s", 11}, {"ns/POI", 9},    {"cycles/frame", 13},
-                               {"x bound", 8},   {"vs ref", 8}};
+constexpr Column kColumns[] = {{"clock", 22},       {"ns/frame", 12}, {"95% CI of median", 23},
+                               {"frames/s", 11},    {"ns/POI", 9},    {"cycles/frame", 13},
+                               {"bound/frame", 18}, {"of bound", 8},  {"vs ref", 8}};
 
 std::string pad_name(const std::string& name, std::size_t width) {
   return name + std::string(name.size() < width ? width - name.size() : 0, ' ');
@@ -138,6 +151,8 @@ class Bench {
     base.device = described_[row.name];
     if (std::string why = b->unsupported(pt.params); !why.empty())
       return note(base, "n/a: " + why, report);
+    device_bound_ = b->device_bound(pt.params);
+    device_kind_ = b->device_kind();
     const SimulatedBatch sim = simulated_batch(row.name, pt);
     if (!sim.not_run.empty()) return note(base, sim.not_run, report);
     base.batch = sim.batch;
@@ -365,18 +380,32 @@ class Bench {
     report.rows.push_back(r);
   }
 
-  // The ratio to the bound (rows timed by its clock) and the speed-up over ref-original's row of
-  // the same point and clock, which registry order has emitted already.
+  // What set_row_bound needs to know of the row's backend at this point.
+  BoundInputs bound_inputs(const BenchRow& r, BenchReport& report) {
+    BoundInputs in;
+    in.host = bound_ ? &*bound_ : nullptr;
+    in.why_none = o_.measure_bound ? "this host has no SAD ceiling to measure (x86-64 only)"
+                                   : "not measured (bench --no-bound)";
+    in.host_bytes_per_cycle = [this, &report](int t) { return bound_bytes_per_cycle(t, report); };
+    in.tsc_hz = [&report] {
+      if (report.tsc_hz <= 0) report.tsc_hz = measure_tsc_hz();
+      return report.tsc_hz;
+    };
+    in.on_host = on_host_.contains(r.backend);
+    in.device_kind = device_kind_;
+    in.device = device_bound_;
+    return in;
+  }
+
+  // The row's bound and the fraction of it achieved (bench_bound.hpp), and the speed-up over
+  // ref-original's row of the same point and clock, which registry order has emitted already.
   void derive(BenchRow& r, BenchReport& report) {
-    if (bound_ && r.cycles_per_frame > 0 && r.source.find(bound_->clock) != std::string::npos) {
-      const double bpc = bound_bytes_per_cycle(r.threads, report);
-      r.bound_ratio =
-          r.cycles_per_frame / (bound_->bytes_per_frame(r.pois_per_frame, r.search_radius) / bpc);
-      if (r.bound_ratio < 1)  // the bound ran on as many threads: only a measuring error beats it
-        add_note(r,
-                 "beats its bound: a measuring error (was the machine busy while the bound "
-                 "was measured?)");
-    }
+    set_row_bound(r, bound_inputs(r, report));
+    if (r.bound_fraction > 1)  // no code does the SAD work faster than its bound
+      add_note(r,
+               "beats its bound: a measuring error (was the machine busy while the bound was "
+               "measured?) or a wrong bound");
+    if (r.bound.rfind("none: ", 0) == 0) add_note(r, "no bound: " + r.bound.substr(6));
     for (const auto& ref : report.rows)
       if (ref.backend == kReferenceBackend && ref.source == r.source && ref.sweep == r.sweep &&
           ref.setting == r.setting && ref.width == r.width && ref.height == r.height &&
@@ -406,6 +435,9 @@ class Bench {
   std::set<std::string> on_host_;                  // the backends whose code runs on the host CPU
   std::size_t name_width_;
   std::optional<BenchBound> bound_;
+  // The backend being measured: its own bound at the point, and its device's kind.
+  std::optional<Backend::DeviceBound> device_bound_;
+  std::string device_kind_;
 };
 
 // How far each row is from the bound a family offers (the cpu family: the SAD work at the
@@ -452,6 +484,15 @@ std::string bench_header_line(std::size_t name_width) {
   return line + "  note";
 }
 
+// A row's bound per frame with its unit, as the table shows it.
+static std::string bound_cell(const BenchRow& r) {
+  const std::string unit = r.bound_unit == "instructions" ? " instr"
+                           : r.bound_unit == "ns"         ? " ns"
+                           : r.bound_unit == "tsc-cycles" ? " tsc cyc"
+                                                          : " cyc";
+  return formatted(r.bound_per_frame < 100 ? "%.1f" : "%.0f", r.bound_per_frame) + unit;
+}
+
 std::string bench_row_line(const BenchRow& r, std::size_t name_width) {
   if (r.samples_ns_per_frame.empty()) return pad_name(r.backend, name_width) + "  " + r.note;
   // A clock that counts instructions (QEMU's -icount) has no time of its own: its virtual
@@ -466,7 +507,10 @@ std::string bench_row_line(const BenchRow& r, std::size_t name_width) {
       r.cycles_per_frame > 0         ? formatted("%.0f", r.cycles_per_frame)
       : r.instructions_per_frame > 0 ? formatted("%.0f instr", r.instructions_per_frame)
                                      : "-",
-      r.bound_ratio > 0 ? formatted("%.2fx", r.bound_ratio) : "-",
+      r.bound_per_frame > 0 ? bound_cell(r) : "-",
+      r.bound_fraction > 0 ? formatted("%.1f %%", 100 * r.bound_fraction)
+      : r.bound.empty()    ? "-"
+                           : "none",
       r.speedup_vs_reference > 0 ? formatted("%.2fx", r.speedup_vs_reference) : "-"};
   std::string line = pad_name(r.backend, name_width);
   for (std::size_t i = 0; i < std::size(kColumns); ++i) {
@@ -497,8 +541,9 @@ BenchReport run_bench(const BenchOptions& o, std::ostream& out) {
   if (bound)
     out << "bound: " << bound->name << ", " << formatted("%.1f", report.bound_bytes_per_cycle)
         << " bytes per " << bound->clock
-        << " cycle on one thread (measured again on as many threads as a row is given); x bound = "
-           "a row's cycles per frame over the bound's\n";
+        << " cycle on one thread (measured again on as many threads as a row is given); every "
+           "row's bound/frame and the fraction of it achieved: docs/harness.md, \"The bound of "
+           "every row\"\n";
   bench.print_header();
   report.points_total = o.points.size();
   try {

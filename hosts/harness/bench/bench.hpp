@@ -95,8 +95,13 @@ struct BenchRow {
   double frames_per_s = 0, ns_per_poi = 0;
   double cycles_per_frame = 0;        // 0 when the source has no cycle clock
   double instructions_per_frame = 0;  // 0 when the source does not count instructions
-  // cycles per frame / the bound's on as many threads as the row was given (BenchBound,
-  // docs/cpu-simd.md); 0: none
+  // The row's bound (bench_bound.hpp; docs/harness.md, "The bound of every row"): what it is,
+  // or "none: why" for a timed row that has none ("" for a row not timed); its unit
+  // ("tsc-cycles", "cycles", "instructions", "ns") and figure per frame; the fraction of it the
+  // row achieved (the bound's figure over the row's, 1 = at the bound), and its inverse, the
+  // row's figure over the bound's ("x bound"). 0: none.
+  std::string bound, bound_unit;
+  double bound_per_frame = 0, bound_fraction = 0;
   double bound_ratio = 0;
   double speedup_vs_reference = 0;  // vs ref-original, same point and source; 0 when not measured
   bool exact_clock = false;         // timed by a deterministic device clock (DeviceTime::exact)
@@ -108,6 +113,7 @@ struct BenchReport {
   std::string bound_name, bound_clock;
   double bound_bytes_per_cycle = 0;                      // on one thread
   std::vector<std::pair<int, double>> bound_by_threads;  // (threads, bytes per cycle), measured
+  double tsc_hz = 0;  // the TSC's rate, measured when a row timed in ns needs the bound in time
   MachineLoad machine;
   std::vector<BenchRow> rows;        // point by point, backends in registry order
   std::vector<std::string> skipped;  // "backend: reason" lines

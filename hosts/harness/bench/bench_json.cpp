@@ -57,6 +57,10 @@ constexpr std::array kBenchRowFields{
     member_field<&BenchRow::ns_per_poi>("ns_per_poi"),
     positive_field<&BenchRow::cycles_per_frame>("cycles_per_frame"),
     positive_field<&BenchRow::instructions_per_frame>("instructions_per_frame"),
+    newer_field<&BenchRow::bound>("bound"),
+    newer_field<&BenchRow::bound_unit>("bound_unit"),
+    positive_field<&BenchRow::bound_per_frame>("bound_per_frame"),
+    positive_field<&BenchRow::bound_fraction>("bound_fraction"),
     positive_field<&BenchRow::bound_ratio>("bound_ratio"),
     positive_field<&BenchRow::speedup_vs_reference>("speedup_vs_ref_original"),
     member_field<&BenchRow::note>(bench_key::kNote),
@@ -103,6 +107,7 @@ Json bench_json(const BenchReport& r) {
                   {"clock", r.bound_clock},
                   {"bytes_per_cycle", r.bound_bytes_per_cycle},
                   {"by_threads", by_threads}};
+    if (r.tsc_hz > 0) j["bound"]["tsc_hz"] = r.tsc_hz;
   }
   return j;
 }

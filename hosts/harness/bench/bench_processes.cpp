@@ -11,6 +11,7 @@
 #include <map>
 #include <ostream>
 
+#include "bench_bound.hpp"
 #include "bench_stats.hpp"
 #include "guarded_child.hpp"
 #include "interrupt.hpp"
@@ -87,7 +88,14 @@ BenchRow combined_row(const std::vector<const BenchRow*>& rows, std::size_t proc
   c.ns_per_poi = c.median_ns_per_frame / static_cast<double>(std::max(1L, c.pois_per_frame));
   c.cycles_per_frame = median_of_positive(rows, &BenchRow::cycles_per_frame);
   c.instructions_per_frame = median_of_positive(rows, &BenchRow::instructions_per_frame);
-  c.bound_ratio = median_of_positive(rows, &BenchRow::bound_ratio);
+  // Only the first process measures the bound (the others run with --no-bound): the row keeps
+  // the bound a process gave it, held to the combined median.
+  for (const BenchRow* r : rows)
+    if (r->bound_per_frame > 0) {
+      c.bound = r->bound, c.bound_unit = r->bound_unit, c.bound_per_frame = r->bound_per_frame;
+      break;
+    }
+  refresh_bound_fraction(c);
   c.note = without_noisy_note(c.note);
   if (rows.size() < processes)
     c.note += (c.note.empty() ? "" : "; ") + std::string("timed in ") +
@@ -149,6 +157,7 @@ BenchReport bench_report_from_json(const Json& j) {
     const Json& b = j["bound"];
     r.bound_name = b.value("name", ""), r.bound_clock = b.value("clock", "");
     r.bound_bytes_per_cycle = b.value("bytes_per_cycle", 0.0);
+    r.tsc_hz = b.value("tsc_hz", 0.0);
     for (const Json& t : b.value("by_threads", Json::array()))
       r.bound_by_threads.push_back({t.value("threads", 0), t.value("bytes_per_cycle", 0.0)});
   }

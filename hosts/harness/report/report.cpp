@@ -216,6 +216,7 @@ void add_bench_sections(const ReportInputs& in, bool several, std::vector<Sectio
     if (!custom || report::has_sweep(in.bench, sweep))
       secs.push_back(report::scaling(in.bench, sweep, tag));
   for (Section& s : report::custom_points(in.bench, tag)) secs.push_back(std::move(s));
+  secs.push_back(report::bound_section(in.bench, tag));
 }
 
 // The comparison of the bench files (two at least): its sections, and its JSON for results.json.

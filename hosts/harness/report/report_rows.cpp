@@ -31,6 +31,21 @@ bool counts_instructions(const Json& bench, const std::string& backend) {
 std::string instructions_cell(const Json& r) {
   return num(r["instructions_per_frame"].get<double>(), "%.0f") + " instr";
 }
+std::string bound_cell(const Json& r) {
+  if (!r.contains("bound_per_frame")) return "-";
+  const std::string unit = str(r, "bound_unit");
+  const double v = r["bound_per_frame"].get<double>();
+  return num(v, v < 100 ? "%.1f" : "%.0f") + (unit == "instructions" ? " instr"
+                                              : unit == "ns"         ? " ns"
+                                              : unit == "tsc-cycles" ? " tsc cycles"
+                                                                     : " cycles");
+}
+
+std::string fraction_cell(const Json& r) {
+  if (r.contains("bound_fraction")) return num(100 * r["bound_fraction"].get<double>()) + " %";
+  return str(r, "bound").rfind("none: ", 0) == 0 ? "none" : "-";
+}
+
 const char* const kInstructionNote =
     " Rows labelled by an instruction count (QEMU -icount) show instructions per frame, tabled, "
     "not charted: they are no time (QEMU's virtual clock ticks per instruction, a speed no core "

@@ -25,6 +25,11 @@ bool exact_clock(const Json& row);
 bool counts_instructions(const Json& row);
 bool counts_instructions(const Json& bench, const std::string& backend);
 std::string instructions_cell(const Json& row);
+// A row's bound per frame with its unit ("1603 tsc cycles", "91136 instr"), and the fraction of
+// it the row achieved ("11.7 %"; "none" for a timed row without one, whose note says why; "-"
+// for a row of a file written before every row had its bound).
+std::string bound_cell(const Json& row);
+std::string fraction_cell(const Json& row);
 // Said under a table with rows labelled by an instruction count.
 extern const char* const kInstructionNote;
 

@@ -23,10 +23,11 @@ bool same_point(const Json& a, const Json& b) {
 }
 
 std::vector<std::string> bench_cells(const Json& r) {
-  if (!timed(r)) return {str(r, "backend"), "-", "-", "-", "-", "-", "-", "-", "-", str(r, "note")};
+  if (!timed(r))
+    return {str(r, "backend"), "-", "-", "-", "-", "-", "-", "-", "-", "-", str(r, "note")};
   if (counts_instructions(r))
-    return {str(r, "backend"), str(r, "source"), "-", "-", "-", "-", instructions_cell(r), "-", "-",
-            str(r, "note")};
+    return {str(r, "backend"), str(r, "source"), "-", "-",           "-", "-", instructions_cell(r),
+            bound_cell(r),     fraction_cell(r), "-", str(r, "note")};
   return {str(r, "backend"),
           str(r, "source"),
           num(r["median_ns_per_frame"], "%.0f"),
@@ -36,27 +37,37 @@ std::vector<std::string> bench_cells(const Json& r) {
           num(r["frames_per_s"]),
           num(r["ns_per_poi"]),
           r.contains("cycles_per_frame") ? num(r["cycles_per_frame"], "%.0f") : "-",
-          r.contains("bound_ratio") ? num(r["bound_ratio"], "%.2fx") : "-",
+          bound_cell(r),
+          fraction_cell(r),
           r.contains("speedup_vs_ref_original") ? num(r["speedup_vs_ref_original"], "%.2fx") : "-",
           str(r, "note")};
 }
 
-// What "x bound" means, with the bound's measured values (docs/cpu-simd.md, "The bound").
+// What the bound columns mean, with the host bound's measured values (docs/harness.md, "The bound
+// of every row").
 std::string bound_text(const Json& bench) {
-  if (!bench.contains("bound")) return "";
-  const Json& b = bench["bound"];
-  std::string values;
-  for (const auto& t : b.value("by_threads", Json::array()))
-    values += (values.empty() ? "" : ", ") + num(t["bytes_per_cycle"], "%.1f") + " on " +
-              threads_text(t["threads"].get<int>());
-  if (values.empty()) values = num(b["bytes_per_cycle"], "%.1f") + " on one thread";
-  return "\n\nx bound: a row's " + str(b, "clock") +
-         " cycles per frame over the cycles the bound needs for the frame's SAD work (every POI's "
-         "search and half-pixel SADs, 64 bytes per SAD). The bound is " +
-         str(b, "name") +
-         ", measured by this bench run on as many threads as the row was given: " + values +
-         " bytes per cycle. 1.00x would be a kernel doing nothing but that loop; a row below "
-         "1.00x is a measuring error and says so in its note.";
+  std::string host;
+  if (bench.contains("bound")) {
+    const Json& b = bench["bound"];
+    std::string values;
+    for (const auto& t : b.value("by_threads", Json::array()))
+      values += (values.empty() ? "" : ", ") + num(t["bytes_per_cycle"], "%.1f") + " on " +
+                threads_text(t["threads"].get<int>());
+    if (values.empty()) values = num(b["bytes_per_cycle"], "%.1f") + " on one thread";
+    host = " Code on the host CPU: " + str(b, "name") + ", measured by this bench run on as many " +
+           "threads as the row was given (" + values +
+           " bytes per TSC cycle); OpenCL and Vulkan on a CPU device: the same on all cores, in ns "
+           "at the TSC's rate.";
+  }
+  return "\n\nbound/frame: the least the frame's SAD work (every POI's search and half-pixel "
+         "SADs, 64 bytes per SAD) can take on the row's hardware, in the row's own unit; of "
+         "bound: that over the row's figure (100 % would be a kernel doing nothing but that "
+         "work at the hardware's widest SAD rate; above 100 % is a measuring error and says "
+         "so)." +
+         host +
+         " The GAP8 model: 4 bytes per cycle on each core; m4-qemu: one USADA8 (4 bytes) per "
+         "instruction. A row without a bound says why in its note. Every point's fractions are "
+         "charted in \"Achieved fraction of the bound\".";
 }
 
 }  // namespace
@@ -203,7 +214,7 @@ Section throughput(const Json& bench, const std::string& cmd, const MachineTag& 
             "Throughput",
             "",
             {"backend", "clock", "ns/frame (median)", "95% CI of median", "frames/s", "ns/POI",
-             "cycles/frame", "x bound", "vs ref-original", "note"},
+             "cycles/frame", "bound/frame", "of bound", "vs ref-original", "note"},
             {},
             {},
             {}};

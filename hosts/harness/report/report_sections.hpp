@@ -49,6 +49,9 @@ Section scaling(const Json& bench, const std::string& sweep, const MachineTag& t
 // table of every point when several vary; none when the bench measured one point.
 std::vector<Section> custom_points(const Json& bench, const MachineTag& tag);
 bool has_sweep(const Json& bench, const std::string& sweep);
+// Every timed row's bound and the fraction of it achieved: a table, and a chart per point
+// (report_bound.cpp).
+Section bound_section(const Json& bench, const MachineTag& tag);
 Section accuracy(const ReportInputs& in);
 // Several bench files (report_compare.cpp): one chart across them and the files' identities,
 // then a section per file compared with the first.
