@@ -30,7 +30,12 @@ add_library(pxflow_build_flags INTERFACE)
 target_compile_features(pxflow_build_flags INTERFACE cxx_std_20)
 target_compile_options(pxflow_build_flags INTERFACE ${PXFLOW_COMPILE_OPTIONS})
 if(PXFLOW_SANITIZE)
-  target_link_options(pxflow_build_flags INTERFACE -fsanitize=address,undefined)
+  # Executables are not position-independent there: the sanitizer stage starts pxflow thousands
+  # of times, and a PIE's start relocated the instrumented binary's pointers page by page
+  # (copy-on-write faults were a third of `pxflow --version`'s time; 60 -> 41 ms per start,
+  # docs/measurements/sanitizer-time.md).
+  target_link_options(pxflow_build_flags INTERFACE -fsanitize=address,undefined
+                      $<$<STREQUAL:$<TARGET_PROPERTY:TYPE>,EXECUTABLE>:-no-pie>)
 endif()
 
 # pxflow_hot_code(target...): the code most of the sanitizer stage's test time is spent in, compiled
