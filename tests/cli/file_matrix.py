@@ -26,6 +26,7 @@ command's --help. Usage: file_matrix.py PXFLOW [--only NAME-SUBSTRING] [--part o
 declarations] [--list]. One line per case (PASS, FAIL or SKIP with its reason), then a summary.
 """
 import argparse
+import errno
 import hashlib
 import json
 import os
@@ -65,6 +66,20 @@ def png_gray(width, height, pixel):
 def texture(x, y, shift=0):
     x -= shift
     return (x * 37 + y * 101 + (x * y) % 29 * 7 + ((x // 5 + y // 3) % 2) * 90) % 256
+
+
+def release_fifo_reader(fifo, reader):
+    """Ends `reader`, a thread reading the FIFO `fifo` to its end, whether or not pxflow opened the
+    FIFO: a reader still waiting in open() is let go by a writer's open and close. The writer's
+    open never waits (O_NONBLOCK): a blocking one waited forever when the reader had finished
+    between the check and the open (a fresh-clone run hung there, 2026-12-07)."""
+    while reader.is_alive():
+        try:
+            os.close(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK))
+        except OSError as e:
+            if e.errno != errno.ENXIO:  # ENXIO: no reader has it open (it just finished)
+                raise
+        reader.join(0.1)
 
 
 class Fixtures:
@@ -468,10 +483,7 @@ class Matrix:
             reader = threading.Thread(target=lambda: got.append(open(fifo, "rb").read()))
             reader.start()
             r = self.pxflow_run(command, args + [option["name"], fifo])
-            if reader.is_alive():  # pxflow never opened it: let the reader go
-                with open(fifo, "wb"):
-                    pass
-            reader.join()
+            release_fifo_reader(fifo, reader)
             p = self.common_checks(r, d, code)
             if not stat.S_ISFIFO(os.stat(fifo).st_mode):
                 p.append("the FIFO was replaced")
