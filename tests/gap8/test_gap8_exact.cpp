@@ -96,10 +96,6 @@ OwnedPair non_dyadic_pair(const Params& p, std::uint64_t seed) {
 // mutation-campaigns.md), which the outermost-bins test below, whose frames before a top-bin
 // peak have dyadic flows, let survive.
 TEST_CASE("gap8 fast: a top-bin peak at S = 31 after a non-dyadic flow_x", "[gap8][no-sanitizer]") {
-  const Gap8VariantInfo* fast = nullptr;
-  for (const Gap8VariantInfo& v : gap8_variants())
-    if (std::string(v.name) == "fast") fast = &v;
-  REQUIRE(fast != nullptr);
   Params p = profile("px4flow-64");  // HF on
   p.width = p.height = 96;           // grid 32, 41, 50: 9 POIs whose blocks do not overlap
   p.search_radius = 31;
@@ -108,7 +104,7 @@ TEST_CASE("gap8 fast: a top-bin peak at S = 31 after a non-dyadic flow_x", "[gap
   validate(p);
   REQUIRE(grid_axis(p.width, p).size() == 3);
   for (int cores : {8, 1}) {
-    Gap8Backend backend(fast->id, gap8_host::RunOptions{cores, true, false});
+    Gap8Backend backend(Gap8Variant::kFast, gap8_host::RunOptions{cores, true, false});
     const std::vector<OwnedPair> pairs{non_dyadic_pair(p, 5), half_pixel_edge_pair(96, 96, 31, 6)};
     require_exact({"gap8-fast on " + std::to_string(cores) + " cores", "non-dyadic then top bin",
                    "96x96 S=31 B=3"},
@@ -119,11 +115,7 @@ TEST_CASE("gap8 fast: a top-bin peak at S = 31 after a non-dyadic flow_x", "[gap
 // HF's window at the histogram's ends (SPEC §5's clamp): the fast variant's team estimate sums
 // p - 2 .. p + 2 over two bins of zeros on each side, also at S = 31 (the largest histogram).
 TEST_CASE("gap8 fast: flows at the histogram's outermost bins", "[gap8][no-sanitizer]") {
-  const Gap8VariantInfo* fast = nullptr;
-  for (const Gap8VariantInfo& v : gap8_variants())
-    if (std::string(v.name) == "fast") fast = &v;
-  REQUIRE(fast != nullptr);
-  Gap8Backend backend(fast->id, gap8_host::RunOptions{8, true, false});
+  Gap8Backend backend(Gap8Variant::kFast, gap8_host::RunOptions{8, true, false});
   const Params p64 = profile("px4flow-64");
   const std::vector<OwnedPair> low{half_pixel_edge_pair(64, 64, -p64.search_radius - 1, 1),
                                    half_pixel_edge_pair(64, 64, p64.search_radius, 2)};

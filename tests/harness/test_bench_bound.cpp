@@ -176,9 +176,7 @@ TEST_CASE("report: one chart per point of every row's fraction of its bound", "[
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   const json j = json::parse(slurp(dir.path("r/results.json")));
-  const json* bound = nullptr;
-  for (const auto& s : j["sections"])
-    if (s["key"] == "bound") bound = &s;
+  const json* bound = section(j, "bound");
   REQUIRE(bound);
   CHECK((*bound)["header"] ==
         json::array({"point", "backend", "clock", "bound/frame", "of bound", "bound"}));

@@ -57,14 +57,16 @@ RowBound choose(const BenchRow& r, const BoundInputs& in, double bytes) {
               (in.device_kind.empty() ? std::string() : " (device type " + in.device_kind + ")"));
 }
 
-}  // namespace
-
+// The row's figure per frame in the unit of its bound ("cycles", "tsc-cycles", "instructions",
+// "ns"); 0 when the row lacks it.
 double row_figure(const BenchRow& r, const std::string& unit) {
   if (unit == "cycles" || unit == "tsc-cycles") return r.cycles_per_frame;
   if (unit == "instructions") return r.instructions_per_frame;
   if (unit == "ns") return r.median_ns_per_frame;
   return 0;
 }
+
+}  // namespace
 
 void refresh_bound_fraction(BenchRow& r) {
   r.bound_fraction = r.bound_ratio = 0;

@@ -24,17 +24,12 @@ struct BoundInputs {
   bool on_host = false;                        // the backend's code runs on the host CPU
   std::string device_kind;                     // Backend::device_kind()
   std::optional<Backend::DeviceBound> device;  // Backend::device_bound() at the row's point
-  std::string device_clock;  // the source of the backend's own clock rows ("" if none)
 };
 
 // Sets the row's `bound` (what it is, or "none: why"), `bound_unit`, `bound_per_frame`,
 // `bound_fraction` (the bound's figure over the row's, 1 = at the bound) and `bound_ratio` (its
 // inverse, the "x bound" of earlier files). A row that was not timed is left as it is.
 void set_row_bound(BenchRow& r, const BoundInputs& in);
-
-// The row's figure per frame in the unit of its bound ("cycles", "tsc-cycles", "instructions",
-// "ns"); 0 when the row lacks it.
-double row_figure(const BenchRow& r, const std::string& unit);
 
 // Recomputes `bound_fraction` and `bound_ratio` from `bound_per_frame` and the row's own figure
 // (bench --processes: a combined row's median changes, its bound does not).
