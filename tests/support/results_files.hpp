@@ -2,7 +2,14 @@
 // (c.json, b.json in `dir`) of the reference rows, for tests that feed a report without running
 // anything else, and a report's sections read back.
 #pragma once
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -10,13 +17,52 @@
 
 namespace pxflow::test {
 
+namespace detail {
+
+// The pxflow binary's size and modification time: the cache below is that binary's answers.
+inline std::string binary_stamp(const std::string& binary) {
+  struct stat st {};
+  REQUIRE(::stat(binary.c_str(), &st) == 0);
+  return std::to_string(st.st_size) + " " + std::to_string(st.st_mtim.tv_sec) + "." +
+         std::to_string(st.st_mtim.tv_nsec) + "\n";
+}
+
+inline void copy_file(const std::string& from, const std::string& to) {
+  const std::string bytes = slurp(from);
+  REQUIRE(!bytes.empty());
+  std::ofstream(to, std::ios::binary) << bytes;
+}
+
+}  // namespace detail
+
+// c.json and b.json in `dir`. Twenty test cases start from these files, and making them costs
+// a check and a bench of the reference rows (about 5 CPU-s in the sanitizer build), so they are
+// made once per pxflow binary, into test-cache/small-results beside the binary, and copied from
+// there: the same bytes a fresh run would give but for its timings. A lock keeps two tests that
+// start together from making them twice; a rebuilt pxflow (another size or mtime) makes them
+// again.
 inline void make_small_results(const TempDir& dir) {
-  REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only", "--json",
-                      dir.path("c.json")})
-              .exit_code == 0);
-  REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
-                      "--json", dir.path("b.json")})
-              .exit_code == 0);
+  const std::string cache =
+      (std::filesystem::path(build_paths::pxflow).parent_path() / "test-cache/small-results")
+          .string();
+  std::filesystem::create_directories(cache);
+  const int lock = ::open((cache + "/lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+  REQUIRE(lock >= 0);
+  REQUIRE(::flock(lock, LOCK_EX) == 0);
+  const std::string stamp = detail::binary_stamp(build_paths::pxflow);
+  if (slurp(cache + "/stamp") != stamp) {
+    ::unlink((cache + "/stamp").c_str());
+    REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only",
+                        "--json", cache + "/c.json"})
+                .exit_code == 0);
+    REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
+                        "--json", cache + "/b.json"})
+                .exit_code == 0);
+    std::ofstream(cache + "/stamp") << stamp;
+  }
+  detail::copy_file(cache + "/c.json", dir.path("c.json"));
+  detail::copy_file(cache + "/b.json", dir.path("b.json"));
+  ::close(lock);  // and with it the lock
 }
 
 // The section of a report's results.json with this key (nullptr: none).
