@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 
+#include "cpu_kernel.hpp"
 #include "errors.hpp"
 #include "exactness.hpp"
 #include "grid.hpp"
@@ -213,4 +214,19 @@ TEST_CASE("window guard: a byte changed past a row's pixels is reported, a short
   g.row(17)[g.stride()] ^= 1;  // the guard after the last row
   CHECK_THROWS_WITH(g.check(0), Catch::Contains("the guard after the last row"));
 #endif
+}
+
+// poi_loop.cpp's check before the walk: a kernel whose row_bytes is short of the window's 2S+10
+// columns is refused even where no POI needs the guarded copy (whose constructor checks too).
+TEST_CASE("the POI walk refuses a kernel whose row_bytes is short of the window",
+          "[window-guard]") {
+  cpu::IsaKernel short_rows = cpu::swar_kernel();
+  short_rows.row_bytes = [](int radius) { return 2 * radius + 9; };
+  const Params p = profile("px4flow-64");  // S = 4: 17 bytes for a window of 18 columns
+  const OwnedPair op = random_pair(p.width, p.height, p.search_radius, 7);
+  const FramePair pair = op.view();
+  std::vector<PoiRecord> out(poi_count(p));
+  OpCounts counts;
+  CHECK_THROWS_WITH(cpu::run_flow(short_rows, pair, p, out, counts),
+                    Catch::Contains("row_bytes = 17 for a window of 18 columns"));
 }
