@@ -22,11 +22,15 @@ template <bool kTrace>
 void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
   std::array<uint64_t, GAP8_MAX_CORES> t;  // next issue cycle per core, kNever asleep or absent
   t.fill(kNever);
-  for (int i = 0; i < num_cores(); ++i) t[i] = cores_[i].asleep ? kNever : cores_[i].time;
+  CodeSlots slots{};  // per core: its pc's decode-cache slot, kept from one instruction to the next
+  for (int i = 0; i < num_cores(); ++i) {
+    t[i] = cores_[i].asleep ? kNever : cores_[i].time;
+    slots[i] = cores_[i].CodeSlot();
+  }
   const auto issued = [&](const Core& c, int id) { t[id] = c.asleep ? kNever : c.time; };
   schedule_changed_ = false;  // a wake-up or a DMA push sets it
   for (;;) {
-    IssueCycle<kTrace>(ready, cycle, issued);
+    IssueCycle<kTrace>(ready, cycle, slots, issued);
     if (exited_ || schedule_changed_) return;
     uint64_t next = kNever;  // all GAP8_MAX_CORES entries: the compiler unrolls both loops
     for (uint64_t ti : t) next = std::min(next, ti);
@@ -42,34 +46,26 @@ void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
 
 // Always inline: with two instances (kTrace) GCC keeps it out of line, 4 % more host
 // instructions on 8 cores (callgrind, gap8-run --cores 8 --bench bench_parallel.elf: 4,914 M).
+// A core that lost its bank retries the same instruction (its registers cannot change
+// meanwhile): its slot is still its pc's, so the retry needs no fetch.
 template <bool kTrace, typename Issued>
 [[gnu::always_inline]] inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle,
-                                                       const Issued& issued) {
-  std::array<const Decoded*, GAP8_MAX_CORES> insn;  // valid for the cores in `issuing`
-  std::array<uint32_t, GAP8_MAX_CORES> bank_of;     // likewise: the bank bit each asks for
-  BankRequests requests{};                          // per bank: bit per requesting core
+                                                       CodeSlots& slots, const Issued& issued) {
+  BankRequests requests{};  // per bank: bit per requesting core
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
   const bool contention = config_.contention;
-  // Retries kept from a cycle before a code change are void: fetch again.
-  if (memory_.code_epoch() != retry_epoch_) retry_mask_ = 0;
   for (uint32_t m = ready; m != 0; m &= m - 1) {
     const int id = std::countr_zero(m);
     Core& c = *core_ptr_[id];
-    uint32_t bank_bit;
-    if ((retry_mask_ >> id) & 1u) {
-      insn[id] = retry_insn_[id];
-      bank_bit = retry_bank_[id];
-    } else {
-      const Decoded& d = c.Fetch();
-      if (const uint32_t stall = c.TakeHazardStall(d)) {
-        c.time += stall;
-        issued(c, id);
-        continue;
-      }
-      insn[id] = &d;
-      bank_bit = contention ? c.TcdmBankBit(d) : 0u;
+    // Not decoded yet, or its bytes were rewritten since (or pc is outside L1 and L2: throws).
+    if (slots[id]->op == Op::kUndecoded) [[unlikely]]
+      slots[id] = &c.Fetch();
+    if (const uint32_t stall = c.TakeHazardStall(*slots[id])) {
+      c.time += stall;
+      issued(c, id);
+      continue;
     }
-    bank_of[id] = bank_bit;
+    const uint32_t bank_bit = contention ? c.TcdmBankBit(*slots[id]) : 0u;
     issuing |= 1u << id;
     requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
     shared_banks |= banks & bank_bit;
@@ -88,23 +84,20 @@ template <bool kTrace, typename Issued>
     bank_priority_[bank] = NextCore(std::countr_zero(requests[bank]));
   }
   if (shared_banks != 0) losers |= ArbitrateSharedBanks(shared_banks, requests);
-  retry_mask_ = (retry_mask_ & ~ready) | losers;
-  retry_epoch_ = memory_.code_epoch();
   for (uint32_t l = losers; l != 0; l &= l - 1) {
     const int id = std::countr_zero(l);
     LoseBank(*core_ptr_[id]);
-    retry_insn_[id] = insn[id];
-    retry_bank_[id] = bank_of[id];
     issued(*core_ptr_[id], id);
   }
   issuing &= ~losers;
   for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
     const int id = std::countr_zero(m);
     Core& c = *core_ptr_[id];
-    Trace<kTrace>(c, *insn[id]);
+    Trace<kTrace>(c, *slots[id]);
     const uint32_t fetch = FetchStall(c);
-    c.time += c.ExecuteInline(*insn[id]) + fetch;
-    c.event(GAP8_EVT_IMISS) += fetch;
+    c.time += c.ExecuteInline(*slots[id]) + fetch;
+    if (fetch != 0) c.event(GAP8_EVT_IMISS) += fetch;
+    slots[id] = c.CodeSlot();
     issued(c, id);
   }
 }

@@ -45,7 +45,7 @@ class Cluster {
   Memory& memory() { return memory_; }
   const ICache& icache() const { return icache_; }
   Core& core(int i) { return cores_[i]; }
-  int num_cores() const { return static_cast<int>(cores_.size()); }
+  int num_cores() const { return config_.cores; }  // cores_.size(), without a division
 
   // Every core starts at `entry` at cycle 0 (start-up code splits them by core id).
   void Start(uint32_t entry);
@@ -90,8 +90,10 @@ class Cluster {
   void RunShared(uint32_t ready, uint64_t cycle);
   // One shared cycle; issued(core, id) is called for each core of `ready` whose next issue cycle
   // is known (all but those after an exit).
+  // Per core: the decode-cache slot of its pc (Core::CodeSlot).
+  using CodeSlots = std::array<const Decoded*, GAP8_MAX_CORES>;
   template <bool kTrace, typename Issued>
-  void IssueCycle(uint32_t ready, uint64_t cycle, const Issued& issued);
+  void IssueCycle(uint32_t ready, uint64_t cycle, CodeSlots& slots, const Issued& issued);
   template <bool kTrace>
   void Trace(const Core& core, const Decoded& d) const {
     if constexpr (kTrace) config_.trace(core.id(), core.time, core.pc(), d.raw);
@@ -144,14 +146,6 @@ class Cluster {
   uint32_t barrier_arrived_ = 0;
   uint32_t dma_allocated_ = 0;                      // bit per DMA counter
   std::array<int, GAP8_L1_BANKS> bank_priority_{};  // round-robin: core served first next time
-  // A core that lost its bank retries next cycle the same instruction at the same address (its
-  // registers cannot change meanwhile): its Decoded and bank bit are kept here (bit per core in
-  // retry_mask_), valid while the code epoch is retry_epoch_, so the retry needs no fetch, hazard
-  // test or address. A core running alone drops its retry.
-  uint32_t retry_mask_ = 0;
-  uint64_t retry_epoch_ = 0;
-  std::array<const Decoded*, GAP8_MAX_CORES> retry_insn_{};
-  std::array<uint32_t, GAP8_MAX_CORES> retry_bank_{};
   bool schedule_changed_ = false;  // a wake-up or DMA push: RunSolo and RunShared must yield
   bool exited_ = false;
   int exit_code_ = 0;

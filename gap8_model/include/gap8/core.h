@@ -39,6 +39,15 @@ class Core {
     if (slot->op == Op::kUndecoded) *slot = Decode(mem_.FetchBits(pc_));
     return *slot;
   }
+  // The decode-cache slot of the instruction at pc, not decoded (op kUndecoded: call Fetch, which
+  // decodes it or, for a pc outside L1 and L2, throws). A slot stays the one of its pc: a store
+  // over its bytes marks it kUndecoded again. The cluster's issue loops keep it from one
+  // instruction to the next.
+  const Decoded* CodeSlot() const {
+    if (Memory::InL2(pc_)) return mem_.L2CodeSlot(pc_);
+    const Decoded* slot = mem_.CodeSlot(pc_);
+    return slot ? slot : &kNoSlot;
+  }
   // Before issuing d: the cycles d must wait for the previous instruction's result (load-use,
   // mul-use, jump-register; timing.h), 0 when none. A stall consumes the hazard and bumps its
   // counter.
@@ -116,6 +125,8 @@ class Core {
   uint32_t NextSequentialPc(uint32_t next);
   bool AtActiveLoopEnd() const;
   [[noreturn]] void RaiseHwLoop(const char* rule) const;
+
+  static constexpr Decoded kNoSlot{};  // CodeSlot outside L1 and L2: op kUndecoded
 
   int id_;
   Memory& mem_;
