@@ -22,15 +22,16 @@ template <bool kTrace>
 void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
   std::array<uint64_t, GAP8_MAX_CORES> t;  // next issue cycle per core, kNever asleep or absent
   t.fill(kNever);
-  CodeSlots slots{};  // per core: its pc's decode-cache slot, kept from one instruction to the next
+  IssueState state;
   for (int i = 0; i < num_cores(); ++i) {
     t[i] = cores_[i].asleep ? kNever : cores_[i].time;
-    slots[i] = cores_[i].CodeSlot();
+    state.slots[i] = cores_[i].CodeSlot();
+    state.fetch_fault |= Core::IsNoSlot(state.slots[i]);
   }
   const auto issued = [&](const Core& c, int id) { t[id] = c.asleep ? kNever : c.time; };
   schedule_changed_ = false;  // a wake-up or a DMA push sets it
   for (;;) {
-    IssueCycle<kTrace>(ready, cycle, slots, issued);
+    IssueCycle<kTrace>(ready, cycle, state, issued);
     if (exited_ || schedule_changed_) return;
     uint64_t next = kNever;  // all GAP8_MAX_CORES entries: the compiler unrolls both loops
     for (uint64_t ti : t) next = std::min(next, ti);
@@ -48,24 +49,41 @@ void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
 // instructions on 8 cores (callgrind, gap8-run --cores 8 --bench bench_parallel.elf: 4,914 M).
 // A core that lost its bank retries the same instruction (its registers cannot change
 // meanwhile): its slot is still its pc's, so the retry needs no fetch.
+// An instruction that touches only its core's own state (OwnStateOnly) and waits for no fetch
+// executes in the first pass, without the second one: its place in the cycle's order does not
+// matter while no core before it in the order may end the run or rewrite code
+// (CannotStopOrRewrite; such a core executes in the second pass, and every core after it too,
+// as then the order matters) and no core faults on its fetch (the first pass would throw before
+// any execution). Not with a trace, whose lines follow the order.
 template <bool kTrace, typename Issued>
 [[gnu::always_inline]] inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle,
-                                                       CodeSlots& slots, const Issued& issued) {
+                                                       IssueState& state, const Issued& issued) {
+  CodeSlots& slots = state.slots;
   BankRequests requests{};  // per bank: bit per requesting core
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
   const bool contention = config_.contention;
+  bool in_order = kTrace || state.fetch_fault;  // no more executions in the first pass
   for (uint32_t m = ready; m != 0; m &= m - 1) {
     const int id = std::countr_zero(m);
     Core& c = *core_ptr_[id];
     // Not decoded yet, or its bytes were rewritten since (or pc is outside L1 and L2: throws).
     if (slots[id]->op == Op::kUndecoded) [[unlikely]]
       slots[id] = &c.Fetch();
-    if (const uint32_t stall = c.TakeHazardStall(*slots[id])) {
+    const Decoded& d = *slots[id];
+    if (const uint32_t stall = c.TakeHazardStall(d)) {
       c.time += stall;
       issued(c, id);
       continue;
     }
-    const uint32_t bank_bit = contention ? c.TcdmBankBit(*slots[id]) : 0u;
+    if (!in_order && c.OwnStateOnly(d) && InPrefetchBuffer(c)) {
+      c.time += c.ExecuteInline(d);
+      slots[id] = c.CodeSlot();
+      state.fetch_fault |= Core::IsNoSlot(slots[id]);
+      issued(c, id);
+      continue;
+    }
+    in_order = in_order || !c.CannotStopOrRewrite(d);
+    const uint32_t bank_bit = contention ? c.TcdmBankBit(d) : 0u;
     issuing |= 1u << id;
     requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
     shared_banks |= banks & bank_bit;
@@ -98,6 +116,7 @@ template <bool kTrace, typename Issued>
     c.time += c.ExecuteInline(*slots[id]) + fetch;
     if (fetch != 0) c.event(GAP8_EVT_IMISS) += fetch;
     slots[id] = c.CodeSlot();
+    state.fetch_fault |= Core::IsNoSlot(slots[id]);
     issued(c, id);
   }
 }

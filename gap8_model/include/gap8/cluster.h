@@ -90,10 +90,13 @@ class Cluster {
   void RunShared(uint32_t ready, uint64_t cycle);
   // One shared cycle; issued(core, id) is called for each core of `ready` whose next issue cycle
   // is known (all but those after an exit).
-  // Per core: the decode-cache slot of its pc (Core::CodeSlot).
   using CodeSlots = std::array<const Decoded*, GAP8_MAX_CORES>;
+  struct IssueState {
+    CodeSlots slots{};          // per core: the decode-cache slot of its pc (Core::CodeSlot)
+    bool fetch_fault = false;  // a core's pc is outside L1 and L2: its next issue faults
+  };
   template <bool kTrace, typename Issued>
-  void IssueCycle(uint32_t ready, uint64_t cycle, CodeSlots& slots, const Issued& issued);
+  void IssueCycle(uint32_t ready, uint64_t cycle, IssueState& state, const Issued& issued);
   template <bool kTrace>
   void Trace(const Core& core, const Decoded& d) const {
     if constexpr (kTrace) config_.trace(core.id(), core.time, core.pc(), d.raw);
@@ -101,10 +104,9 @@ class Cluster {
   // Cycles the core waits for the instruction at its pc: 0 while the prefetch buffer holds it
   // (the fast path), else the instruction-cache accesses of FetchLines. Counted in IMISS after
   // the instruction executed (it may read the counters itself).
-  uint32_t FetchStall(Core& core) {
-    if (core.pc() - core.prefetch_base <= timing::kPrefetchBytes - timing::kOpcodeMaxBytes)
-      return 0;
-    return FetchLines(core);
+  uint32_t FetchStall(Core& core) { return InPrefetchBuffer(core) ? 0 : FetchLines(core); }
+  static bool InPrefetchBuffer(const Core& core) {
+    return core.pc() - core.prefetch_base <= timing::kPrefetchBytes - timing::kOpcodeMaxBytes;
   }
   uint32_t FetchLines(Core& core);  // below the class: inline, the host's hot path
   uint32_t ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests);

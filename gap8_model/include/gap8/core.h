@@ -48,6 +48,23 @@ class Core {
     const Decoded* slot = mem_.CodeSlot(pc_);
     return slot ? slot : &kNoSlot;
   }
+  // True for the slot CodeSlot gives for a pc outside L1 and L2 (its Fetch throws).
+  static bool IsNoSlot(const Decoded* slot) { return slot == &kNoSlot; }
+  // True when d, issued now, reads and writes only this core's registers, pc and counters and
+  // cannot fault: no memory access, hardware-loop set-up or illegal instruction, and not the last
+  // instruction of an active hardware loop (there a jump, or a one-instruction body, faults).
+  bool OwnStateOnly(const Decoded& d) const {
+    return (d.access & kAccessOwnState) && !(loops_armed_ && AtActiveLoopEnd());
+  }
+  // True when executing d cannot end the run (exit, fault) or rewrite code: OwnStateOnly, or a
+  // TCDM load, or a store when L1 holds no code, wholly inside L1 and not at a loop end.
+  bool CannotStopOrRewrite(const Decoded& d) const {
+    if (d.access & kAccessOwnState) return !(loops_armed_ && AtActiveLoopEnd());
+    const uint32_t off = AccessAddress(d) - GAP8_L1_BASE;
+    const bool store = (d.access & kAccessStore) != 0;
+    return d.tcdm && off <= GAP8_L1_SIZE - 4 && !(store && mem_.l1_has_code()) &&
+           !(loops_armed_ && AtActiveLoopEnd());
+  }
   // Before issuing d: the cycles d must wait for the previous instruction's result (load-use,
   // mul-use, jump-register; timing.h), 0 when none. A stall consumes the hazard and bumps its
   // counter.

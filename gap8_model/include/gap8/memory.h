@@ -50,6 +50,8 @@ class Memory {
   // Changes whenever a decoded instruction may have been forgotten: a Decoded read from the
   // cache is still the one at its pc while the epoch is the same.
   uint64_t code_epoch() const { return code_epoch_; }
+  // False until an instruction in L1 was decoded: stores to L1 cannot rewrite code before.
+  bool l1_has_code() const { return l1_has_code_; }
 
   // Forgets decoded instructions overlapping [addr, addr + size): the bytes were rewritten.
   void InvalidateCode(uint32_t addr, uint32_t size) {
