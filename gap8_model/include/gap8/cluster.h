@@ -92,7 +92,7 @@ class Cluster {
   // is known (all but those after an exit).
   using CodeSlots = std::array<const Decoded*, GAP8_MAX_CORES>;
   struct IssueState {
-    CodeSlots slots{};          // per core: the decode-cache slot of its pc (Core::CodeSlot)
+    CodeSlots slots{};         // per core: the decode-cache slot of its pc (Core::CodeSlot)
     bool fetch_fault = false;  // a core's pc is outside L1 and L2: its next issue faults
   };
   template <bool kTrace, typename Issued>
