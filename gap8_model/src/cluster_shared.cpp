@@ -25,8 +25,7 @@ void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
   IssueState state;
   for (int i = 0; i < num_cores(); ++i) {
     t[i] = cores_[i].asleep ? kNever : cores_[i].time;
-    state.slots[i] = cores_[i].CodeSlot();
-    state.fetch_fault |= Core::IsNoSlot(state.slots[i]);
+    state.NextSlot(cores_[i], i);
   }
   const auto issued = [&](const Core& c, int id) { t[id] = c.asleep ? kNever : c.time; };
   schedule_changed_ = false;  // a wake-up or a DMA push sets it
@@ -77,13 +76,13 @@ template <bool kTrace, typename Issued>
     }
     if (!in_order && c.OwnStateOnly(d) && InPrefetchBuffer(c)) {
       c.time += c.ExecuteInline(d);
-      slots[id] = c.CodeSlot();
-      state.fetch_fault |= Core::IsNoSlot(slots[id]);
+      state.NextSlot(c, id);
       issued(c, id);
       continue;
     }
-    in_order = in_order || !c.CannotStopOrRewrite(d);
-    const uint32_t bank_bit = contention ? c.TcdmBankBit(d) : 0u;
+    const uint32_t addr = c.AccessAddress(d);
+    in_order = in_order || !c.CannotStopOrRewrite(d, addr);
+    const uint32_t bank_bit = contention ? Core::TcdmBankBit(d, addr) : 0u;
     issuing |= 1u << id;
     requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
     shared_banks |= banks & bank_bit;
@@ -115,8 +114,7 @@ template <bool kTrace, typename Issued>
     const uint32_t fetch = FetchStall(c);
     c.time += c.ExecuteInline(*slots[id]) + fetch;
     if (fetch != 0) c.event(GAP8_EVT_IMISS) += fetch;
-    slots[id] = c.CodeSlot();
-    state.fetch_fault |= Core::IsNoSlot(slots[id]);
+    state.NextSlot(c, id);
     issued(c, id);
   }
 }

@@ -94,6 +94,14 @@ class Cluster {
   struct IssueState {
     CodeSlots slots{};         // per core: the decode-cache slot of its pc (Core::CodeSlot)
     bool fetch_fault = false;  // a core's pc is outside L1 and L2: its next issue faults
+    void NextSlot(const Core& c, int id) {
+      if (Memory::InL2(c.pc())) [[likely]] {
+        slots[id] = c.CodeSlot();  // the same test inside: GCC merges them
+        return;
+      }
+      slots[id] = c.CodeSlot();
+      fetch_fault |= Core::IsNoSlot(slots[id]);
+    }
   };
   template <bool kTrace, typename Issued>
   void IssueCycle(uint32_t ready, uint64_t cycle, IssueState& state, const Issued& issued);

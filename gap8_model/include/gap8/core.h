@@ -56,13 +56,13 @@ class Core {
   bool OwnStateOnly(const Decoded& d) const {
     return (d.access & kAccessOwnState) && !(loops_armed_ && AtActiveLoopEnd());
   }
-  // True when executing d cannot end the run (exit, fault) or rewrite code: OwnStateOnly, or a
-  // TCDM load, or a store when L1 holds no code, wholly inside L1 and not at a loop end.
-  bool CannotStopOrRewrite(const Decoded& d) const {
+  // True when executing d, whose access address is addr (AccessAddress), cannot end the run
+  // (exit, fault) or rewrite code: OwnStateOnly, or a TCDM load, or a store when L1 holds no
+  // code, wholly inside L1 and not at a loop end.
+  bool CannotStopOrRewrite(const Decoded& d, uint32_t addr) const {
     if (d.access & kAccessOwnState) return !(loops_armed_ && AtActiveLoopEnd());
-    const uint32_t off = AccessAddress(d) - GAP8_L1_BASE;
     const bool store = (d.access & kAccessStore) != 0;
-    return d.tcdm && off <= GAP8_L1_SIZE - 4 && !(store && mem_.l1_has_code()) &&
+    return d.tcdm && addr - GAP8_L1_BASE <= GAP8_L1_SIZE - 4 && !(store && mem_.l1_has_code()) &&
            !(loops_armed_ && AtActiveLoopEnd());
   }
   // Before issuing d: the cycles d must wait for the previous instruction's result (load-use,
@@ -76,10 +76,15 @@ class Core {
   }
   // Bit b set when d accesses TCDM bank b this cycle; 0 when d makes no TCDM access.
   // Branch-free: the cluster calls it for every core in every shared cycle.
-  uint32_t TcdmBankBit(const Decoded& d) const {
-    const uint32_t addr = AccessAddress(d);
+  uint32_t TcdmBankBit(const Decoded& d) const { return TcdmBankBit(d, AccessAddress(d)); }
+  static uint32_t TcdmBankBit(const Decoded& d, uint32_t addr) {
     const uint32_t in_l1 = addr - GAP8_L1_BASE < GAP8_L1_SIZE;
     return (in_l1 & d.tcdm) << ((addr >> 2) & (GAP8_L1_BANKS - 1));
+  }
+  // Address of a load or store (post-increment forms use rs1 unmodified). x0 reads 0, so an
+  // access without an offset register adds regs_[0]; one without an immediate adds 0.
+  uint32_t AccessAddress(const Decoded& d) const {
+    return regs_[d.rs1] + regs_[d.offset_reg] + static_cast<uint32_t>(d.access_imm);
   }
   // Executes d (the instruction at pc) and returns its cost in cycles. Throws Fault.
   uint32_t Execute(const Decoded& d);
@@ -114,11 +119,6 @@ class Core {
  private:
   enum class Hazard : uint8_t { kNone, kLoad, kMul, kAlu };
 
-  // Address of a load or store (post-increment forms use rs1 unmodified). x0 reads 0, so an
-  // access without an offset register adds regs_[0]; one without an immediate adds 0.
-  uint32_t AccessAddress(const Decoded& d) const {
-    return regs_[d.rs1] + regs_[d.offset_reg] + static_cast<uint32_t>(d.access_imm);
-  }
   // The result of the instruction just executed (register rd) is pending, as `kind`: a load or
   // mul result stalls any reader, an ALU result only a jalr.
   void SetHazardBit(Hazard kind, uint32_t bit) {  // bit: Decoded::rd_bit (x0 never stalls)
