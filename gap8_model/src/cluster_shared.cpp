@@ -11,33 +11,87 @@
 
 namespace gap8 {
 
+namespace {
+
+// The awake cores by their next issue cycle, relative to the current one, in a register: byte k
+// of `near` holds the cores issuing at cycle + 1 + k (k < 8: a bit per core); the cores further
+// ahead are `far`, read from the cores themselves when the earliest of them (far_min) is due.
+// Finding the next cycle and its cores is then a bit scan (the scan of eight 64-bit times it
+// replaces was 7 % of the host instructions on 8 cores).
+class IssueCalendar {
+ public:
+  // Every awake core not in `ready` issues after `cycle`.
+  void Rebuild(const std::vector<Core>& cores, uint32_t ready, uint64_t cycle) {
+    near_ = 0;
+    far_ = 0;
+    far_min_ = ~0ull;
+    for (size_t i = 0; i < cores.size(); ++i) {
+      if (!((ready >> i) & 1u)) Add(cores[i], static_cast<int>(i), cycle);
+    }
+  }
+  // Core id issued at `cycle`; its next issue cycle is its time (none while asleep).
+  void Add(const Core& c, int id, uint64_t cycle) {
+    if (c.asleep) return;
+    const uint64_t ahead = c.time - cycle - 1;  // a core issuing advances at least one cycle
+    if (ahead < 8) [[likely]] {
+      near_ |= uint64_t{1} << (8 * ahead + id);
+    } else {
+      far_ |= 1u << id;
+      far_min_ = std::min(far_min_, c.time);
+    }
+  }
+  // Moves *cycle to the next cycle a core issues at and returns those cores (0: all asleep).
+  uint32_t Next(const std::vector<Core>& cores, uint64_t* cycle) {
+    const int k = std::countr_zero(near_) >> 3;  // 8 when near_ is empty
+    if (far_ != 0 && far_min_ <= *cycle + 1 + k) [[unlikely]]
+      return NextFromCores(cores, cycle);
+    if (near_ == 0) return 0;
+    *cycle += 1 + k;
+    const uint64_t from_k = near_ >> (8 * k);
+    near_ = from_k >> 8;
+    return static_cast<uint32_t>(from_k & 0xFFu);
+  }
+
+ private:
+  uint32_t NextFromCores(const std::vector<Core>& cores, uint64_t* cycle) {
+    uint64_t next = ~0ull;
+    for (const Core& c : cores) next = c.asleep ? next : std::min(next, c.time);
+    uint32_t ready = 0;
+    for (size_t i = 0; i < cores.size(); ++i)
+      ready |= static_cast<uint32_t>(!cores[i].asleep && cores[i].time == next) << i;
+    *cycle = next;
+    Rebuild(cores, ready, next);
+    return ready;
+  }
+
+  uint64_t near_ = 0;
+  uint32_t far_ = 0;
+  uint64_t far_min_ = ~0ull;
+};
+
+}  // namespace
+
 // Shared cycles, one after the other while the earliest cycle has two or more cores: the cores
 // in `ready` (all issuing at `cycle`) issue, in id order: hazards first, then the TCDM bank
 // arbiter, then execution. Within the loop only the issuing cores' next issue cycles change, so
-// the loop keeps every core's in `t` and finds the next cycle there. It stops where Advance must
+// the loop keeps them in a calendar and finds the next cycle there. It stops where Advance must
 // decide: one core alone, a DMA completion, the cycle budget, a wake-up or DMA push, the exit.
 // The bank bookkeeping has few data-dependent branches: with eight cores interleaved the host's
 // branch predictor guesses poorly.
 template <bool kTrace>
 void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
-  std::array<uint64_t, GAP8_MAX_CORES> t;  // next issue cycle per core, kNever asleep or absent
-  t.fill(kNever);
+  IssueCalendar calendar;
+  calendar.Rebuild(cores_, ready, cycle);
   IssueState state;
-  for (int i = 0; i < num_cores(); ++i) {
-    t[i] = cores_[i].asleep ? kNever : cores_[i].time;
-    state.NextSlot(cores_[i], i);
-  }
-  const auto issued = [&](const Core& c, int id) { t[id] = c.asleep ? kNever : c.time; };
+  for (int i = 0; i < num_cores(); ++i) state.NextSlot(cores_[i], i);
+  const auto issued = [&](const Core& c, int id) { calendar.Add(c, id, cycle); };
   schedule_changed_ = false;  // a wake-up or a DMA push sets it
   for (;;) {
     IssueCycle<kTrace>(ready, cycle, state, issued);
     if (exited_ || schedule_changed_) return;
-    uint64_t next = kNever;  // all GAP8_MAX_CORES entries: the compiler unrolls both loops
-    for (uint64_t ti : t) next = std::min(next, ti);
-    uint32_t next_ready = 0;
-    for (uint32_t i = 0; i < GAP8_MAX_CORES; ++i)
-      next_ready |= static_cast<uint32_t>(t[i] == next) << i;
-    if ((next_ready & (next_ready - 1)) == 0 || next == kNever || next > config_.max_cycles) return;
+    uint64_t next = cycle;
+    const uint32_t next_ready = calendar.Next(cores_, &next);
+    if ((next_ready & (next_ready - 1)) == 0 || next > config_.max_cycles) return;
     if (!dma_.Idle() && dma_.NextCompletion() <= next) return;
     cycle = next;
     ready = next_ready;
