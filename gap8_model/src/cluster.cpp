@@ -42,7 +42,6 @@ void Cluster::Start(uint32_t entry) {
   barrier_arrived_ = 0;
   dma_allocated_ = 0;
   exited_ = false;
-  retry_mask_ = 0;
 }
 
 RunResult Cluster::Run() {
@@ -105,7 +104,6 @@ void Cluster::Advance() {
 template <bool kTrace>
 void Cluster::RunSolo(Core& core, uint64_t limit) {
   schedule_changed_ = false;  // a DMA push sets it, so dma_end stays right
-  retry_mask_ &= ~(1u << core.id());
   const uint64_t dma_end = config_.contention ? dma_.BankTrafficEnd() : 0;
   while (core.time < limit && !core.asleep && !exited_ && !schedule_changed_) {
     const Decoded& d = core.Fetch();

@@ -131,8 +131,11 @@ inline uint32_t Core::ExecuteMemory(const Decoded& d) {
 #include "gap8/rv32imc_execute.inc"
     // Xpulp: one generated case per op of gap8_model/isa/xpulp.tbl, by its class and path.
 #include "gap8/xpulp_execute.inc"
-    default:  // kIllegal, kUndecoded
+    case Op::kIllegal:
+    case Op::kUndecoded:
       Raise(FaultKind::kIllegalInstruction, "illegal instruction");
+    default:  // every Op has its case: the jump table needs no range test
+      __builtin_unreachable();
   }
   regs_[d.rd] = result;
   regs_[0] = 0;

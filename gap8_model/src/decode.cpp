@@ -86,6 +86,9 @@ void AddDerivedFacts(Decoded& d) {
   d.access_imm = (d.access & kAccessImmOffset) ? d.imm : 0;
   d.rvc = d.size == 2;
   d.rd_bit = (1u << d.rd) & ~1u;
+  const bool hwloop_setup = d.op == Op::kLpStarti || d.op == Op::kLpEndi || d.op == Op::kLpCount ||
+                            d.op == Op::kLpCounti || d.op == Op::kLpSetup || d.op == Op::kLpSetupi;
+  if (d.access == 0 && d.op != Op::kIllegal && !hwloop_setup) d.access = kAccessOwnState;
 }
 
 }  // namespace

@@ -23,7 +23,6 @@ uint32_t Memory::FetchBits(uint32_t pc) {
 
 void Memory::InvalidateCodeSlow(uint32_t addr, uint32_t size) {
   // A 32-bit instruction starting 2 bytes before addr also overlaps the write.
-  ++code_epoch_;
   const uint32_t first = addr - 2;
   for (uint32_t a = first & ~1u; a - first < size + 2; a += 2) {
     if (Decoded* slot = CodeSlot(a)) slot->op = Op::kUndecoded;
@@ -51,7 +50,6 @@ void Memory::Clear() {
   std::fill(l1_code_.begin(), l1_code_.end(), Decoded{});
   std::fill(l2_code_.begin(), l2_code_.end(), Decoded{});
   l1_has_code_ = false;
-  ++code_epoch_;
 }
 
 }  // namespace gap8

@@ -45,7 +45,7 @@ class Cluster {
   Memory& memory() { return memory_; }
   const ICache& icache() const { return icache_; }
   Core& core(int i) { return cores_[i]; }
-  int num_cores() const { return static_cast<int>(cores_.size()); }
+  int num_cores() const { return config_.cores; }  // cores_.size(), without a division
 
   // Every core starts at `entry` at cycle 0 (start-up code splits them by core id).
   void Start(uint32_t entry);
@@ -90,8 +90,21 @@ class Cluster {
   void RunShared(uint32_t ready, uint64_t cycle);
   // One shared cycle; issued(core, id) is called for each core of `ready` whose next issue cycle
   // is known (all but those after an exit).
+  using CodeSlots = std::array<const Decoded*, GAP8_MAX_CORES>;
+  struct IssueState {
+    CodeSlots slots{};         // per core: the decode-cache slot of its pc (Core::CodeSlot)
+    bool fetch_fault = false;  // a core's pc is outside L1 and L2: its next issue faults
+    void NextSlot(const Core& c, int id) {
+      if (Memory::InL2(c.pc())) [[likely]] {
+        slots[id] = c.CodeSlot();  // the same test inside: GCC merges them
+        return;
+      }
+      slots[id] = c.CodeSlot();
+      fetch_fault |= Core::IsNoSlot(slots[id]);
+    }
+  };
   template <bool kTrace, typename Issued>
-  void IssueCycle(uint32_t ready, uint64_t cycle, const Issued& issued);
+  void IssueCycle(uint32_t ready, uint64_t cycle, IssueState& state, const Issued& issued);
   template <bool kTrace>
   void Trace(const Core& core, const Decoded& d) const {
     if constexpr (kTrace) config_.trace(core.id(), core.time, core.pc(), d.raw);
@@ -99,10 +112,9 @@ class Cluster {
   // Cycles the core waits for the instruction at its pc: 0 while the prefetch buffer holds it
   // (the fast path), else the instruction-cache accesses of FetchLines. Counted in IMISS after
   // the instruction executed (it may read the counters itself).
-  uint32_t FetchStall(Core& core) {
-    if (core.pc() - core.prefetch_base <= timing::kPrefetchBytes - timing::kOpcodeMaxBytes)
-      return 0;
-    return FetchLines(core);
+  uint32_t FetchStall(Core& core) { return InPrefetchBuffer(core) ? 0 : FetchLines(core); }
+  static bool InPrefetchBuffer(const Core& core) {
+    return core.pc() - core.prefetch_base <= timing::kPrefetchBytes - timing::kOpcodeMaxBytes;
   }
   uint32_t FetchLines(Core& core);  // below the class: inline, the host's hot path
   uint32_t ArbitrateSharedBanks(uint32_t shared_banks, const BankRequests& requests);
@@ -144,14 +156,6 @@ class Cluster {
   uint32_t barrier_arrived_ = 0;
   uint32_t dma_allocated_ = 0;                      // bit per DMA counter
   std::array<int, GAP8_L1_BANKS> bank_priority_{};  // round-robin: core served first next time
-  // A core that lost its bank retries next cycle the same instruction at the same address (its
-  // registers cannot change meanwhile): its Decoded and bank bit are kept here (bit per core in
-  // retry_mask_), valid while the code epoch is retry_epoch_, so the retry needs no fetch, hazard
-  // test or address. A core running alone drops its retry.
-  uint32_t retry_mask_ = 0;
-  uint64_t retry_epoch_ = 0;
-  std::array<const Decoded*, GAP8_MAX_CORES> retry_insn_{};
-  std::array<uint32_t, GAP8_MAX_CORES> retry_bank_{};
   bool schedule_changed_ = false;  // a wake-up or DMA push: RunSolo and RunShared must yield
   bool exited_ = false;
   int exit_code_ = 0;

@@ -39,6 +39,32 @@ class Core {
     if (slot->op == Op::kUndecoded) *slot = Decode(mem_.FetchBits(pc_));
     return *slot;
   }
+  // The decode-cache slot of the instruction at pc, not decoded (op kUndecoded: call Fetch, which
+  // decodes it or, for a pc outside L1 and L2, throws). A slot stays the one of its pc: a store
+  // over its bytes marks it kUndecoded again. The cluster's issue loops keep it from one
+  // instruction to the next.
+  const Decoded* CodeSlot() const {
+    if (Memory::InL2(pc_)) return mem_.L2CodeSlot(pc_);
+    const Decoded* slot = mem_.CodeSlot(pc_);
+    return slot ? slot : &kNoSlot;
+  }
+  // True for the slot CodeSlot gives for a pc outside L1 and L2 (its Fetch throws).
+  static bool IsNoSlot(const Decoded* slot) { return slot == &kNoSlot; }
+  // True when d, issued now, reads and writes only this core's registers, pc and counters and
+  // cannot fault: no memory access, hardware-loop set-up or illegal instruction, and not the last
+  // instruction of an active hardware loop (there a jump, or a one-instruction body, faults).
+  bool OwnStateOnly(const Decoded& d) const {
+    return (d.access & kAccessOwnState) && !(loops_armed_ && AtActiveLoopEnd());
+  }
+  // True when executing d, whose access address is addr (AccessAddress), cannot end the run
+  // (exit, fault) or rewrite code: OwnStateOnly, or a TCDM load, or a store when L1 holds no
+  // code, wholly inside L1 and not at a loop end.
+  bool CannotStopOrRewrite(const Decoded& d, uint32_t addr) const {
+    if (d.access & kAccessOwnState) return !(loops_armed_ && AtActiveLoopEnd());
+    const bool store = (d.access & kAccessStore) != 0;
+    return d.tcdm && addr - GAP8_L1_BASE <= GAP8_L1_SIZE - 4 && !(store && mem_.l1_has_code()) &&
+           !(loops_armed_ && AtActiveLoopEnd());
+  }
   // Before issuing d: the cycles d must wait for the previous instruction's result (load-use,
   // mul-use, jump-register; timing.h), 0 when none. A stall consumes the hazard and bumps its
   // counter.
@@ -50,10 +76,15 @@ class Core {
   }
   // Bit b set when d accesses TCDM bank b this cycle; 0 when d makes no TCDM access.
   // Branch-free: the cluster calls it for every core in every shared cycle.
-  uint32_t TcdmBankBit(const Decoded& d) const {
-    const uint32_t addr = AccessAddress(d);
+  uint32_t TcdmBankBit(const Decoded& d) const { return TcdmBankBit(d, AccessAddress(d)); }
+  static uint32_t TcdmBankBit(const Decoded& d, uint32_t addr) {
     const uint32_t in_l1 = addr - GAP8_L1_BASE < GAP8_L1_SIZE;
     return (in_l1 & d.tcdm) << ((addr >> 2) & (GAP8_L1_BANKS - 1));
+  }
+  // Address of a load or store (post-increment forms use rs1 unmodified). x0 reads 0, so an
+  // access without an offset register adds regs_[0]; one without an immediate adds 0.
+  uint32_t AccessAddress(const Decoded& d) const {
+    return regs_[d.rs1] + regs_[d.offset_reg] + static_cast<uint32_t>(d.access_imm);
   }
   // Executes d (the instruction at pc) and returns its cost in cycles. Throws Fault.
   uint32_t Execute(const Decoded& d);
@@ -88,11 +119,6 @@ class Core {
  private:
   enum class Hazard : uint8_t { kNone, kLoad, kMul, kAlu };
 
-  // Address of a load or store (post-increment forms use rs1 unmodified). x0 reads 0, so an
-  // access without an offset register adds regs_[0]; one without an immediate adds 0.
-  uint32_t AccessAddress(const Decoded& d) const {
-    return regs_[d.rs1] + regs_[d.offset_reg] + static_cast<uint32_t>(d.access_imm);
-  }
   // The result of the instruction just executed (register rd) is pending, as `kind`: a load or
   // mul result stalls any reader, an ALU result only a jalr.
   void SetHazardBit(Hazard kind, uint32_t bit) {  // bit: Decoded::rd_bit (x0 never stalls)
@@ -116,6 +142,8 @@ class Core {
   uint32_t NextSequentialPc(uint32_t next);
   bool AtActiveLoopEnd() const;
   [[noreturn]] void RaiseHwLoop(const char* rule) const;
+
+  static constexpr Decoded kNoSlot{};  // CodeSlot outside L1 and L2: op kUndecoded
 
   int id_;
   Memory& mem_;

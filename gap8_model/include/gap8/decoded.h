@@ -52,7 +52,7 @@ struct Decoded {
   uint32_t raw = 0;       // the instruction bits, for fault messages
   // Facts derived from the fields above once, at decode time, so the per-cycle paths (bank
   // arbitration, ExecuteMemory, the issue loops) read them instead of computing them each time.
-  uint8_t access = 0;      // AccessFlags: does it load or store, and how the address is formed
+  uint8_t access = 0;      // AccessFlags: does it load or store, how the address is formed
   uint8_t offset_reg = 0;  // register added to rs1 to form the address (0: none; x0 reads 0)
   uint8_t tcdm = 0;        // 1 for any load or store (it asks for a TCDM bank when in L1)
   uint8_t rvc = 0;         // 1 for a compressed instruction (size 2): counted in RVC
@@ -64,6 +64,9 @@ enum AccessFlags : uint8_t {
   kAccessLoad = 1,       // any load (RV32I or p.l*)
   kAccessStore = 2,      // any store (RV32I or p.s*)
   kAccessImmOffset = 4,  // address = rs1 + imm (RV32I forms); else rs1 + offset_reg
+  // None of the above: neither a memory access nor a hardware-loop set-up nor illegal, so it
+  // reads and writes only its core's registers, pc and counters (Core::OwnStateOnly).
+  kAccessOwnState = 8,
 };
 
 // Decodes one instruction; `bits` holds 32 bits from the pc (the upper half is ignored when the

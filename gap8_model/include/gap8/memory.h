@@ -47,9 +47,8 @@ class Memory {
   // 32 bits from pc (the memories carry 4 bytes of zero padding past their end).
   uint32_t FetchBits(uint32_t pc);
 
-  // Changes whenever a decoded instruction may have been forgotten: a Decoded read from the
-  // cache is still the one at its pc while the epoch is the same.
-  uint64_t code_epoch() const { return code_epoch_; }
+  // False until an instruction in L1 was decoded: stores to L1 cannot rewrite code before.
+  bool l1_has_code() const { return l1_has_code_; }
 
   // Forgets decoded instructions overlapping [addr, addr + size): the bytes were rewritten.
   void InvalidateCode(uint32_t addr, uint32_t size) {
@@ -70,7 +69,6 @@ class Memory {
 
   std::vector<uint8_t> l1_, l2_;
   bool l1_has_code_ = false;
-  uint64_t code_epoch_ = 0;
   std::vector<Decoded> l1_code_, l2_code_;
 };
 
