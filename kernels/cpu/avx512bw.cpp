@@ -435,10 +435,18 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
                 OpCounts*) {
   const __m512i ones = _mm512_set1_epi8(-1);
   __m512i top[3], low[3];  // column s - 1: rows -1..6, and rows 7..8 in qwords 0..1
-  for (int s = 0; s < 3; ++s) {
+  for (int s = 0; s < 3; s += 2) {
     top[s] = _mm512_xor_si512(qword_rows(around + s, stride, 8), ones);
     low[s] = _mm512_xor_si512(qword_rows(around + 8 * stride + s, stride, 2), ones);
   }
+  // Columns 0..7 without loading them: columns -1..6 moved down a byte give 0..6, columns 1..8
+  // moved up a byte give 1..7; the bytes both give are equal, and a shift brings in zeros, so
+  // an OR of the two is columns 0..7 (complemented like the rest).
+  auto middle = [](__m512i left, __m512i right) {
+    return _mm512_or_si512(_mm512_srli_epi64(left, 8), _mm512_slli_epi64(right, 8));
+  };
+  top[1] = middle(top[0], top[2]);
+  low[1] = middle(low[0], low[2]);
   // Rows r + t (r = 0..7) of a plane given as its rows -1..6 and 7..8.
   auto down = [](__m512i lo8, __m512i hi2, int t) {
     return t == 0 ? _mm512_alignr_epi64(hi2, lo8, 1) : _mm512_alignr_epi64(hi2, lo8, 2);
