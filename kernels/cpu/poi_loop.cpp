@@ -75,7 +75,8 @@ struct PoiContext {
 };
 
 // Step 1 and the record's fields up to `feature`; false when the POI is dropped (then complete).
-bool start_poi(const PoiContext& ctx, int x, int y, PoiRecord& rec) {
+// Inlined, like search_started: as calls they made every ISA's walk some 6 % slower (avx2, S = 4).
+[[gnu::always_inline]] inline bool start_poi(const PoiContext& ctx, int x, int y, PoiRecord& rec) {
   rec = PoiRecord{};  // every field a status does not define, and the padding, is 0
   rec.x = static_cast<std::uint16_t>(x);
   rec.y = static_cast<std::uint16_t>(y);
@@ -113,7 +114,7 @@ void finish_search(const PoiContext& ctx, const BlockMatch& m, PoiRecord& rec) {
 }
 
 // Step 2 for a POI that passed step 1.
-void search_started(const PoiContext& ctx, PoiRecord& rec) {
+[[gnu::always_inline]] inline void search_started(const PoiContext& ctx, PoiRecord& rec) {
   const int S = ctx.p.search_radius;
   Window w = frame_window(ctx, rec.x, rec.y);
   if (!window_in_place(ctx, rec.x))
