@@ -44,6 +44,26 @@ struct RowLoader {
   }
 };
 
+// Two POIs of one grid row per vdbpsadbw, for 2S + 1 <= 9: the lanes hold (POI a, columns 0..3),
+// (a, columns 4..7), (b, columns 0..3), (b, columns 4..7), each at dx' 0..7 (a window row's bytes
+// from 0 and from 4), so no lane computes a dx' beyond 2S but the ninth, dx' = 8 at S = 4,
+// which search_last_column adds per POI. A candidate row is one masked load per POI and one
+// vpermt2d for both, where the 16-dx' layout spends a vpermd per POI.
+struct PairLoader {
+  const std::uint8_t* a;  // POI a's window column 1, row 0
+  const std::uint8_t* b;
+  std::ptrdiff_t stride;
+  __mmask64 needed;  // bytes 0 .. last dx' + 7
+
+  __m512i row(int window_row) const {
+    const __m512i spread =
+        _mm512_setr_epi32(0, 1, 2, 3, 1, 2, 3, 4, 16, 17, 18, 19, 17, 18, 19, 20);
+    return _mm512_permutex2var_epi32(_mm512_maskz_loadu_epi8(needed, a + window_row * stride),
+                                     spread,
+                                     _mm512_maskz_loadu_epi8(needed, b + window_row * stride));
+  }
+};
+
 inline __m512i row_sad(const __m512i block[8], const __m512i cand[8]) {
   const __m512i s01 = _mm512_add_epi16(_mm512_dbsad_epu8(block[0], cand[0], kGroupControl),
                                        _mm512_dbsad_epu8(block[1], cand[1], kGroupControl));
@@ -76,29 +96,29 @@ struct Keys {
   __m512i odd = _mm512_set1_epi32(-1);
 };
 
-inline void slide(__m512i cand[8], const RowLoader& loader, int window_row) {
+template <class Loader>
+inline void slide(__m512i cand[8], const Loader& loader, int window_row) {
   for (int r = 0; r < 7; ++r) cand[r] = cand[r + 1];
   cand[7] = loader.row(window_row);
 }
 
-void search_chunk(const __m512i block[8], const RowLoader& loader, int radius, int chunk,
-                  Keys& best) {
-  // Dword i: u16 lanes 2i and 2i + 1 of H, i.e. dx' = 2 (i mod 8) of row dy' + i / 8.
-  const __m512i pairs =
-      _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, kRowPositions + 0, kRowPositions + 2,
-                        kRowPositions + 4, kRowPositions + 6, kRowPositions + 8, kRowPositions + 10,
-                        kRowPositions + 12, kRowPositions + 14);
-  const int valid = 2 * radius + 1 - 16 * chunk;  // dx' of this chunk that exist
-  __mmask16 even_ok = 0, odd_ok = 0;
-  for (int i = 0; i < 8; ++i) {
-    const auto both = static_cast<__mmask16>((1u << i) | (1u << (i + 8)));
-    if (2 * i < valid) even_ok = static_cast<__mmask16>(even_ok | both);
-    if (2 * i + 1 < valid) odd_ok = static_cast<__mmask16>(odd_ok | both);
-  }
+// Keys the rows dy' = 0..2S of `loader`'s candidates into `best`. A row's sums come out of
+// row_sad as four lanes of 8 u16; kLow and kHigh (vshufi64x2 immediates) pick from two rows a and
+// b the lanes that are added, so that H holds 32 u16 sums whose dword i has the raster position
+// `position` (+ 2 * kRowPositions per pair of rows) for its even u16 and that + 1 for its odd one.
+//
+// kRadius > 0 fixes S at compile time: the loop over dy' is then unrolled and the eight candidate
+// rows stay in registers as they slide (with S known only at run time, GCC keeps them on the
+// stack and copies them at every slide).
+template <class Loader, int kLow, int kHigh, int kRadius = 0>
+[[gnu::always_inline]] inline void key_rows(const __m512i block[8], const Loader& loader,
+                                            int runtime_radius, __m512i position, __mmask16 even_ok,
+                                            __mmask16 odd_ok, Keys& best) {
+  const int radius = kRadius > 0 ? kRadius : runtime_radius;
   const __m512i high = _mm512_set1_epi32(static_cast<int>(0xFFFF0000u));
-  __m512i position = _mm512_add_epi32(pairs, _mm512_set1_epi32(16 * chunk));
   __m512i cand[8];
   for (int r = 0; r < 8; ++r) cand[r] = loader.row(r + 1);
+#pragma GCC unroll 16
   for (int dy = 0; dy <= 2 * radius; dy += 2) {
     const __m512i a = row_sad(block, cand);
     __m512i b = a;
@@ -107,10 +127,10 @@ void search_chunk(const __m512i block[8], const RowLoader& loader, int radius, i
       slide(cand, loader, dy + 9);
       b = row_sad(block, cand);
     } else {
-      rows = 0x00FF;  // no row dy' + 1
+      rows = 0x00FF;  // no row dy' + 1 (dwords 8..15 of H belong to it)
     }
-    const __m512i h = _mm512_add_epi16(_mm512_shuffle_i64x2(a, b, 0x44),   // a.lo, b.lo
-                                       _mm512_shuffle_i64x2(a, b, 0xEE));  // a.hi, b.hi
+    const __m512i h =
+        _mm512_add_epi16(_mm512_shuffle_i64x2(a, b, kLow), _mm512_shuffle_i64x2(a, b, kHigh));
     const __m512i even = _mm512_or_si512(_mm512_slli_epi32(h, kPositionBits), position);
     const __m512i odd = _mm512_ternarylogic_epi32(h, high, position, 0xEA);  // (h & high) | pos
     best.even =
@@ -121,6 +141,37 @@ void search_chunk(const __m512i block[8], const RowLoader& loader, int radius, i
     slide(cand, loader, dy + 10);
     position = _mm512_add_epi32(position, _mm512_set1_epi32(2 * kRowPositions));
   }
+}
+
+// Dwords whose even (odd) u16 holds an existing dx': dword i of each 128-bit lane holds
+// dx' = first + 2i and first + 2i + 1 (`lane_step`: how much first grows from lane to lane,
+// `lanes_per_row`: after how many lanes it starts again).
+struct DxMasks {
+  __mmask16 even = 0, odd = 0;
+};
+
+DxMasks dx_masks(int valid, int lane_step, int lanes_per_row) {
+  DxMasks m;
+  for (int d = 0; d < 16; ++d) {
+    const int dx = lane_step * ((d / 4) % lanes_per_row) + 2 * (d % 4);
+    if (dx < valid) m.even = static_cast<__mmask16>(m.even | (1u << d));
+    if (dx + 1 < valid) m.odd = static_cast<__mmask16>(m.odd | (1u << d));
+  }
+  return m;
+}
+
+template <int kRadius>
+[[gnu::always_inline]] inline void search_chunk(const __m512i block[8], const RowLoader& loader,
+                                                int radius, int chunk, Keys& best) {
+  // Dword i: u16 lanes 2i and 2i + 1 of H, i.e. dx' = 2 (i mod 8) of row dy' + i / 8.
+  const __m512i pairs =
+      _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, kRowPositions + 0, kRowPositions + 2,
+                        kRowPositions + 4, kRowPositions + 6, kRowPositions + 8, kRowPositions + 10,
+                        kRowPositions + 12, kRowPositions + 14);
+  const DxMasks ok = dx_masks(2 * radius + 1 - 16 * chunk, 8, 2);  // dx' of this chunk that exist
+  key_rows<RowLoader, 0x44, 0xEE, kRadius>(  // H = [a.lo + a.hi | b.lo + b.hi]
+      block, loader, radius, _mm512_add_epi32(pairs, _mm512_set1_epi32(16 * chunk)), ok.even,
+      ok.odd, best);
 }
 
 // Eight rows of 8 bytes, row r of `p + r * stride` in qword r. Each row is a vpbroadcastq from
@@ -200,8 +251,25 @@ void search_last_column(const __m512i rows, Window next, int radius, Keys& best)
   }
 }
 
-BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
-  const int S = radius;
+// An odd key's position + 1 names its own dx' (see key_rows); the all-ones of lanes never
+// replaced stay as they are.
+inline __m512i merged_keys(const Keys& best) {
+  const __m512i none = _mm512_set1_epi32(-1);
+  const __m512i odd = _mm512_mask_add_epi32(best.odd, _mm512_cmpneq_epu32_mask(best.odd, none),
+                                            best.odd, _mm512_set1_epi32(1));
+  return _mm512_min_epu32(best.even, odd);
+}
+
+inline BlockMatch match_of(std::uint32_t key, int radius) {
+  const std::uint32_t position = key & ((1u << kPositionBits) - 1);
+  return {static_cast<int>(position % kRowPositions) - radius,
+          static_cast<int>(position / kRowPositions) - radius, key >> kPositionBits};
+}
+
+// kRadius: S fixed at compile time (see key_rows), or 0 for any S.
+template <int kRadius>
+BlockMatch search_at(Block prev, Window next, int radius) {
+  const int S = kRadius > 0 ? kRadius : radius;
   const __m512i halves = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
   __m512i block[8];
   for (int r = 0; r < 8; ++r) {
@@ -216,19 +284,144 @@ BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
     const int last_dx = (2 * S - 16 * c < 15) ? 2 * S - 16 * c : 15;
     const RowLoader loader{next.data + 1 + 16 * c, next.stride, (1ull << (last_dx + 8)) - 1,
                            _mm512_setr_epi32(0, 1, 2, 3, 2, 3, 4, 5, 1, 2, 3, 4, 3, 4, 5, 6)};
-    search_chunk(block, loader, S, c, best);
+    search_chunk<kRadius>(block, loader, S, c, best);
   }
   if (column) search_last_column(qword_rows(prev.data, prev.stride, 8), next, S, best);
-  // An odd key's position + 1 names its own dx'; the all-ones of lanes never replaced stay.
-  const __m512i none = _mm512_set1_epi32(-1);
-  const __m512i odd = _mm512_mask_add_epi32(best.odd, _mm512_cmpneq_epu32_mask(best.odd, none),
-                                            best.odd, _mm512_set1_epi32(1));
-  const __m512i keys = _mm512_min_epu32(best.even, odd);
-  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(keys));
-  const std::uint32_t position = key & ((1u << kPositionBits) - 1);
+  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(merged_keys(best)));
   _mm256_zeroupper();
-  return {static_cast<int>(position % kRowPositions) - S,
-          static_cast<int>(position / kRowPositions) - S, key >> kPositionBits};
+  return match_of(key, S);
+}
+
+// The radii of the profiles and of the bench's default sweep get a search compiled for them.
+BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
+  switch (radius) {
+    case 4:
+      return search_at<4>(prev, next, radius);
+    case 7:
+      return search_at<7>(prev, next, radius);
+    case 8:
+      return search_at<8>(prev, next, radius);
+    case 12:
+      return search_at<12>(prev, next, radius);
+    case 16:
+      return search_at<16>(prev, next, radius);
+    default:
+      return search_at<0>(prev, next, radius);
+  }
+}
+
+constexpr int kPairMaxRadius = 4;  // 2S + 1 <= 9: dx' 0..7 in the lanes, dx' = 8 by the column
+
+// dx' = 8 at S = 4 (the column) of one POI, for dy' = 0..7: qword dy' of the result is the
+// candidate's SAD. The column's window rows 1..16 (8 bytes from window column 9) are two
+// vectors of row qwords; rows r + 1 .. r + 8 (valignq by r) against block row r broadcast give
+// block row r's part of all eight candidates at once, so the eight parts add up in place, with
+// no sum across a vector's qwords. `strip` gets rows 9..16, for the last candidate dy' = 8.
+inline __m512i column_sads(Block prev, Window next, __m512i& strip) {
+  const std::uint8_t* column = next.data + 9;
+  const __m512i top = qword_rows(column + next.stride, next.stride, 8);
+  strip = qword_rows(column + 9 * next.stride, next.stride, 8);
+  auto part = [&](int r, __m512i rows) {
+    const __m128i row =
+        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev.data + r * prev.stride));
+    return _mm512_sad_epu8(rows, _mm512_broadcastq_epi64(row));
+  };
+  __m512i sum = part(0, top);
+  [&]<int... R>(std::integer_sequence<int, R...>) {  // valignq's shift is an immediate
+    ((sum = _mm512_add_epi64(sum, part(R + 1, _mm512_alignr_epi64(strip, top, R + 1)))), ...);
+  }
+  (std::make_integer_sequence<int, 7>{});
+  return sum;
+}
+
+// The keys of the column's candidates dy' = 0..7 of a and b in key_rows' pair layout (a in
+// lanes 0 and 2, b in lanes 1 and 3; dy' = i + 4 (lane / 2) in dword i of a lane), and the keys
+// of the last candidates (dx', dy') = (8, 8) of a and b, each one psadbw of its rows 9..16.
+struct PairColumn {
+  __m512i keys;
+  std::uint32_t last_a, last_b;
+};
+
+PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b) {
+  __m512i strip_a, strip_b;
+  const __m512i sads_a = column_sads(prev_a, next_a, strip_a);
+  const __m512i sads_b = column_sads(prev_b, next_b, strip_b);
+  const __m512i pick = _mm512_setr_epi32(0, 2, 4, 6, 16, 18, 20, 22, 8, 10, 12, 14, 24, 26, 28, 30);
+  const __m512i position = _mm512_setr_epi32(8, 72, 136, 200, 8, 72, 136, 200, 264, 328, 392, 456,
+                                             264, 328, 392, 456);  // dy' * 64 + 8
+  PairColumn c;
+  c.keys = _mm512_or_si512(
+      _mm512_slli_epi32(_mm512_permutex2var_epi32(sads_a, pick, sads_b), kPositionBits), position);
+  // a's eight row SADs in the low dwords, b's in the high ones (each <= 2,040: no carry).
+  __m512i last = _mm512_or_si512(
+      _mm512_sad_epu8(strip_a, qword_rows(prev_a.data, prev_a.stride, 8)),
+      _mm512_slli_epi64(_mm512_sad_epu8(strip_b, qword_rows(prev_b.data, prev_b.stride, 8)), 32));
+  last = _mm512_add_epi64(last, _mm512_shuffle_i64x2(last, last, 0x4E));
+  last = _mm512_add_epi64(last, _mm512_shuffle_i64x2(last, last, 0xB1));
+  const __m128i total = _mm512_castsi512_si128(last);
+  const auto both = static_cast<std::uint64_t>(
+      _mm_cvtsi128_si64(_mm_add_epi64(total, _mm_unpackhi_epi64(total, total))));
+  constexpr std::uint32_t kLast = 8 * kRowPositions + 8;
+  c.last_a = static_cast<std::uint32_t>(both & 0xFFFFFFFFu) << kPositionBits | kLast;
+  c.last_b = static_cast<std::uint32_t>(both >> 32) << kPositionBits | kLast;
+  return c;
+}
+
+// The searches of two POIs a and b (one grid row, one frame pair) at once, S <= kPairMaxRadius;
+// `out` gets a's match, then b's, each what search() gives for it alone.
+template <int S>
+void search_pair_at(Block prev_a, Window next_a, Block prev_b, Window next_b, BlockMatch out[2]) {
+  // Block row r as dwords: a's columns 0..3 in lane 0, 4..7 in lane 1, b's in lanes 2 and 3.
+  const __m512i halves = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 16, 16, 16, 16, 17, 17, 17, 17);
+  __m512i block[8];
+  for (int r = 0; r < 8; ++r) {
+    const __m128i ra =
+        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev_a.data + r * prev_a.stride));
+    const __m128i rb =
+        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev_b.data + r * prev_b.stride));
+    block[r] =
+        _mm512_permutex2var_epi32(_mm512_zextsi128_si512(ra), halves, _mm512_zextsi128_si512(rb));
+  }
+  const int last_dx = 2 * S < 7 ? 2 * S : 7;
+  const PairLoader loader{next_a.data + 1, next_b.data + 1, next_a.stride,
+                          (1ull << (last_dx + 8)) - 1};
+  // H = [a of dy' | b of dy' | a of dy' + 1 | b of dy' + 1]: lanes 0 + 1 and 2 + 3 of each row.
+  const __m512i position =
+      _mm512_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6, kRowPositions + 0, kRowPositions + 2,
+                        kRowPositions + 4, kRowPositions + 6, kRowPositions + 0, kRowPositions + 2,
+                        kRowPositions + 4, kRowPositions + 6);
+  const DxMasks ok = dx_masks(2 * S + 1, 0, 1);
+  Keys best;
+  key_rows<PairLoader, 0x88, 0xDD, S>(block, loader, S, position, ok.even, ok.odd, best);
+  __m512i keys = merged_keys(best);
+  std::uint32_t last_a = 0xFFFFFFFFu, last_b = 0xFFFFFFFFu;
+  if (2 * S + 1 > 8) {  // dx' = 8
+    const PairColumn column = pair_column(prev_a, next_a, prev_b, next_b);
+    keys = _mm512_min_epu32(keys, column.keys);
+    last_a = column.last_a;
+    last_b = column.last_b;
+  }
+  auto key_a = static_cast<std::uint32_t>(_mm512_mask_reduce_min_epu32(0x0F0F, keys));
+  auto key_b = static_cast<std::uint32_t>(_mm512_mask_reduce_min_epu32(0xF0F0, keys));
+  key_a = last_a < key_a ? last_a : key_a;
+  key_b = last_b < key_b ? last_b : key_b;
+  _mm256_zeroupper();
+  out[0] = match_of(key_a, S);
+  out[1] = match_of(key_b, S);
+}
+
+void search_pair(Block prev_a, Window next_a, Block prev_b, Window next_b, int radius,
+                 BlockMatch out[2]) {
+  switch (radius) {
+    case 1:
+      return search_pair_at<1>(prev_a, next_a, prev_b, next_b, out);
+    case 2:
+      return search_pair_at<2>(prev_a, next_a, prev_b, next_b, out);
+    case 3:
+      return search_pair_at<3>(prev_a, next_a, prev_b, next_b, out);
+    default:  // kPairMaxRadius
+      return search_pair_at<kPairMaxRadius>(prev_a, next_a, prev_b, next_b, out);
+  }
 }
 
 // SPEC §3 step 3 with the eight block rows as the eight qwords of a zmm: psadbw then gives one
@@ -242,10 +435,18 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
                 OpCounts*) {
   const __m512i ones = _mm512_set1_epi8(-1);
   __m512i top[3], low[3];  // column s - 1: rows -1..6, and rows 7..8 in qwords 0..1
-  for (int s = 0; s < 3; ++s) {
+  for (int s = 0; s < 3; s += 2) {
     top[s] = _mm512_xor_si512(qword_rows(around + s, stride, 8), ones);
     low[s] = _mm512_xor_si512(qword_rows(around + 8 * stride + s, stride, 2), ones);
   }
+  // Columns 0..7 without loading them: columns -1..6 moved down a byte give 0..6, columns 1..8
+  // moved up a byte give 1..7; the bytes both give are equal, and a shift brings in zeros, so
+  // an OR of the two is columns 0..7 (complemented like the rest).
+  auto middle = [](__m512i left, __m512i right) {
+    return _mm512_or_si512(_mm512_srli_epi64(left, 8), _mm512_slli_epi64(right, 8));
+  };
+  top[1] = middle(top[0], top[2]);
+  low[1] = middle(low[0], low[2]);
   // Rows r + t (r = 0..7) of a plane given as its rows -1..6 and 7..8.
   auto down = [](__m512i lo8, __m512i hi2, int t) {
     return t == 0 ? _mm512_alignr_epi64(hi2, lo8, 1) : _mm512_alignr_epi64(hi2, lo8, 2);
@@ -272,7 +473,8 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
 }  // namespace
 
 const IsaKernel& avx512bw_kernel() {
-  static const IsaKernel k{"avx512bw", row_bytes, feature_sse2, search, half_pixel, false};
+  static const IsaKernel k{"avx512bw", row_bytes, feature_sse2, search,
+                           half_pixel, false,     search_pair,  kPairMaxRadius};
   return k;
 }
 

@@ -59,6 +59,12 @@ struct IsaKernel {
   void (*half_pixel)(Block prev, const std::uint8_t* around, std::ptrdiff_t stride,
                      std::uint32_t sub[8], OpCounts* counts);
   bool counts_ops;  // true: the kernel charges its USAD8/USADA8/UHADD8 work (the SWAR model)
+  // Optional: step 2 for two POIs of one grid row at once (out[0] for a, out[1] for b, each
+  // what `search` gives), for radius <= pair_max_radius and windows read in place; null where
+  // an ISA has none.
+  void (*search_pair)(Block prev_a, Window next_a, Block prev_b, Window next_b, int radius,
+                      BlockMatch out[2]) = nullptr;
+  int pair_max_radius = 0;
 };
 
 // The accessor of every row of isas.def compiled for this architecture, cpu::<name>_kernel(),
