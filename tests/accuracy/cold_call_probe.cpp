@@ -7,6 +7,8 @@
 //   as accuracy    none: the pair and everything else as LK and DIS of the previous pair left them
 //   pages touched  one byte of every 4 KB page of the pair read (its page walks done)
 //   pair read      every 64-byte line of the pair read (the pair in L2, its pages walked)
+//   LK first       LK on this pair (the accuracy's order reversed: the preparation's median is
+//                  LK's time on the cold pair, against the LK column's, LK after pxflow)
 //   other pair     pxflow on the next pair (code, branch history, vector units warm; this pair
 //   cold) same pair      pxflow on this pair (everything warm) same, idle     pxflow on this pair,
 //   then 1 ms of scalar work (a spin on the clock) idle, wide     the same, then 20 us of 512-bit
@@ -51,11 +53,20 @@ struct PairSet {
   std::vector<std::pair<Frame, Frame>> pairs;
 };
 
-enum class Prep { kNone, kPagesTouched, kPairRead, kOtherPair, kSamePair, kIdle, kIdleWide };
-constexpr Prep kPreps[] = {Prep::kNone,     Prep::kPagesTouched, Prep::kPairRead, Prep::kOtherPair,
-                           Prep::kSamePair, Prep::kIdle,         Prep::kIdleWide};
-constexpr const char* kPrepNames[] = {"as accuracy", "pages touched", "pair read", "other pair",
-                                      "same pair",   "same, idle",    "idle, wide"};
+enum class Prep {
+  kNone,
+  kPagesTouched,
+  kPairRead,
+  kLkFirst,
+  kOtherPair,
+  kSamePair,
+  kIdle,
+  kIdleWide
+};
+constexpr Prep kPreps[] = {Prep::kNone,      Prep::kPagesTouched, Prep::kPairRead, Prep::kLkFirst,
+                           Prep::kOtherPair, Prep::kSamePair,     Prep::kIdle,     Prep::kIdleWide};
+constexpr const char* kPrepNames[] = {"as accuracy", "pages touched", "pair read",  "LK first",
+                                      "other pair",  "same pair",     "same, idle", "idle, wide"};
 constexpr std::size_t kPrepCount = std::size(kPreps);
 
 double median(std::vector<double> v) {
@@ -128,11 +139,12 @@ void spin_wide(std::chrono::microseconds d) {
 }
 
 void prepare(Prep prep, const std::pair<Frame, Frame>& pair, const std::pair<Frame, Frame>& other,
-             PxflowEstimator& px) {
+             PxflowEstimator& px, LucasKanadeEstimator& lk) {
   const auto& [a, b] = pair;
   volatile unsigned keep = 0;
   if (prep == Prep::kPagesTouched) keep = read_frames(a, b, 4096);
   if (prep == Prep::kPairRead) keep = read_frames(a, b, 64);
+  if (prep == Prep::kLkFirst) lk.estimate(a, b);
   if (prep == Prep::kOtherPair) px.estimate(other.first, other.second);
   if (prep == Prep::kSamePair || prep == Prep::kIdle || prep == Prep::kIdleWide) px.estimate(a, b);
   if (prep == Prep::kIdle || prep == Prep::kIdleWide) spin_scalar(std::chrono::milliseconds(1));
@@ -146,7 +158,7 @@ void one_pass(PairSet& s, Prep prep, PxflowEstimator& px, LucasKanadeEstimator& 
   for (std::size_t i = 0; i < s.pairs.size(); ++i) {
     const auto& [a, b] = s.pairs[i];
     const auto t0 = Clock::now();
-    prepare(prep, s.pairs[i], s.pairs[(i + 1) % s.pairs.size()], px);
+    prepare(prep, s.pairs[i], s.pairs[(i + 1) % s.pairs.size()], px, lk);
     const auto t1 = Clock::now();
     px.estimate(a, b);
     const auto t2 = Clock::now();
