@@ -161,25 +161,25 @@ constexpr std::ptrdiff_t kSmallPairBytes = 24 * 1024;
 constexpr std::uintptr_t kPage = 4096;
 constexpr std::uintptr_t kTouchAbovePages = 96;
 
-// How many 4 KB pages rows y0..y1 of f span, gaps between rows included (clamped to the frame).
+// How many 4 KB pages rows y0..y1 of f span, the gaps between rows included. The rows lie in
+// the frame: the grid keeps every window inside it (SPEC §2).
 std::uintptr_t pages_spanned(const FrameView& f, int y0, int y1) {
-  const auto from = reinterpret_cast<std::uintptr_t>(f.row(std::max(y0, 0)));
-  const auto end = reinterpret_cast<std::uintptr_t>(f.row(std::min(y1, f.height - 1)) + f.width);
+  const auto from = reinterpret_cast<std::uintptr_t>(f.row(y0));
+  const auto end = reinterpret_cast<std::uintptr_t>(f.row(y1) + f.width);
   return (end - 1) / kPage - from / kPage + 1;
 }
 
 // One load of the first pixel of each page that rows y0..y1 of f reach, in address order: a page
 // that starts between two rows gives the next row's first pixel (those bytes may belong to
-// someone else). Touching the rows' own first and last pixels instead, row by row, gained nothing.
+// someone else; a gap lies before a row of the span, so that pixel is in it). Touching the rows'
+// own first and last pixels instead, row by row, gained nothing.
 void touch_pages(const FrameView& f, int y0, int y1) {
-  y0 = std::max(y0, 0), y1 = std::min(y1, f.height - 1);
-  if (y0 > y1) return;
   const auto base = reinterpret_cast<std::uintptr_t>(f.row(y0));
   const auto end = reinterpret_cast<std::uintptr_t>(f.row(y1) + f.width);
   for (std::uintptr_t at = base; at < end; at = (at | (kPage - 1)) + 1) {
     const auto x = static_cast<std::ptrdiff_t>(at - base) % f.stride;
     const std::uintptr_t pixel = x < f.width ? at : at + static_cast<std::uintptr_t>(f.stride - x);
-    if (pixel < end) (void)*reinterpret_cast<const volatile std::uint8_t*>(pixel);
+    (void)*reinterpret_cast<const volatile std::uint8_t*>(pixel);
   }
 }
 
