@@ -169,17 +169,17 @@ std::uintptr_t pages_spanned(const FrameView& f, int y0, int y1) {
   return (end - 1) / kPage - from / kPage + 1;
 }
 
-// One load of the first pixel of each page that rows y0..y1 of f reach, in address order: a page
-// that starts between two rows gives the next row's first pixel (those bytes may belong to
-// someone else; a gap lies before a row of the span, so that pixel is in it). Touching the rows'
-// own first and last pixels instead, row by row, gained nothing.
+// One load of the first byte of each page that rows y0..y1 of f reach, in address order, where
+// that byte is a pixel: a page that starts between two rows (those bytes may belong to someone
+// else) is left to the searches. Every load lies in [base, end). Touching the rows' own first and
+// last pixels instead, row by row, gained nothing.
 void touch_pages(const FrameView& f, int y0, int y1) {
   const auto base = reinterpret_cast<std::uintptr_t>(f.row(y0));
   const auto end = reinterpret_cast<std::uintptr_t>(f.row(y1) + f.width);
   for (std::uintptr_t at = base; at < end; at = (at | (kPage - 1)) + 1) {
+    // x: at's column in its row; the bytes between two rows are columns W .. stride - 1.
     const auto x = static_cast<std::ptrdiff_t>(at - base) % f.stride;
-    const std::uintptr_t pixel = x < f.width ? at : at + static_cast<std::uintptr_t>(f.stride - x);
-    (void)*reinterpret_cast<const volatile std::uint8_t*>(pixel);
+    if (x < f.width) (void)*reinterpret_cast<const volatile std::uint8_t*>(at);
   }
 }
 
