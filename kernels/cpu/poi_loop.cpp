@@ -221,6 +221,46 @@ class RowPrefetch {
 // A pair of at most this many bytes takes no hints (see run_flow_rows).
 constexpr std::ptrdiff_t kSmallPairBytes = 24 * 1024;
 
+// The pages of a large pair are looked up once, at the start of a call, each by a load of one
+// byte (touch_pages): a call's pair usually comes after other work (LK and DIS in pxflow
+// accuracy), its translations gone, and the searches would otherwise meet the page walks one at a
+// time. pxflow_accuracy_probe (docs/accuracy.md), 768x576 S=7 B=32, 216 pages: 147 -> 135 us a
+// frame; 320x240 (38 pages): no change, and 3 % slower for tree.avi. Hence only pairs whose rows
+// span more pages than the first-level data TLB has 4 KB entries (96 on Golden Cove).
+constexpr std::uintptr_t kPage = 4096;
+constexpr std::uintptr_t kTouchAbovePages = 96;
+
+// How many 4 KB pages rows y0..y1 of f span, the gaps between rows included. The rows lie in
+// the frame: the grid keeps every window inside it (SPEC §2).
+std::uintptr_t pages_spanned(const FrameView& f, int y0, int y1) {
+  const auto from = reinterpret_cast<std::uintptr_t>(f.row(y0));
+  const auto end = reinterpret_cast<std::uintptr_t>(f.row(y1) + f.width);
+  return (end - 1) / kPage - from / kPage + 1;
+}
+
+// One load of the first byte of each page that rows y0..y1 of f reach, in address order, where
+// that byte is a pixel: a page that starts between two rows (those bytes may belong to someone
+// else) is left to the searches. Every load lies in [base, end). Touching the rows' own first and
+// last pixels instead, row by row, gained nothing.
+void touch_pages(const FrameView& f, int y0, int y1) {
+  const auto base = reinterpret_cast<std::uintptr_t>(f.row(y0));
+  const auto end = reinterpret_cast<std::uintptr_t>(f.row(y1) + f.width);
+  for (std::uintptr_t at = base; at < end; at = (at | (kPage - 1)) + 1) {
+    // x: at's column in its row; the bytes between two rows are columns W .. stride - 1.
+    const auto x = static_cast<std::ptrdiff_t>(at - base) % f.stride;
+    if (x < f.width) (void)*reinterpret_cast<const volatile std::uint8_t*>(at);
+  }
+}
+
+// The rows grid rows y0..y1 read: of next, their windows'; of prev, their blocks'.
+void touch_pages_if_many(const FramePair& pair, int S, int y0, int y1) {
+  const std::uintptr_t pages =
+      pages_spanned(pair.next, y0 - S - 1, y1 + S + 8) + pages_spanned(pair.prev, y0, y1 + 7);
+  if (pages <= kTouchAbovePages) return;
+  touch_pages(pair.next, y0 - S - 1, y1 + S + 8);
+  touch_pages(pair.prev, y0, y1 + 7);
+}
+
 }  // namespace
 
 void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, int first_row,
@@ -242,6 +282,8 @@ void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, i
   if (prefetch && first_row < end_row) {
     ahead.plan(ys.first + first_row * ys.step, 0, true);
     ahead.fetch(0, 1);
+    touch_pages_if_many(pair, p.search_radius, ys.first + first_row * ys.step,
+                        ys.first + (end_row - 1) * ys.step);
   }
   // A grid row's searches first, then its half-pixel steps: each step's calls are independent
   // of each other, so the core overlaps one POI's search with the next one's instead of waiting
