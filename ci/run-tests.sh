@@ -6,11 +6,7 @@
 # time) and exits non-zero when anything failed.
 set -uo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-# One test more than the cores: many tests wait on a device, a child or a signal (QEMU, a DUT's
-# keepalives, a hang's allowance) while their core idles: at -j2 on 2 cores the test stages used
-# about 91 % of the CPU time they had (docs/test-suite.md). The suite holds at twice the cores
-# under a CPU hog (ci/stress-tests.sh), so one more is safe.
-jobs=$(($(nproc) + 1))
+jobs=$(nproc)
 summary=()
 status=0
 
