@@ -43,8 +43,9 @@ endif()
 # rest is at -O1 (ci/run-tests.sh: -O1 compiles in half the time of -O2). The instrumentation is
 # the same at every level (a vectorised load is checked as one access; GCC checks the first and
 # the last byte of an access that may be unaligned). -O3 took an ASan check of the reference rows
-# from 3.4 to 2.75 CPU-s against -O2 (2026-12-07, docs/measurements/sanitizer-time.md). The reference answers every `pxflow check` and ref::integer_search took 56 % of the
-# samples of the six slowest ASan tests (docs/measurements/sanitizer-time.md, 2026-12-03); the CPU
+# from 3.4 to 2.75 CPU-s against -O2 (2026-12-07, docs/measurements/sanitizer-time.md). The
+# reference answers every `pxflow check` and ref::integer_search took 56 % of the samples of the
+# six slowest ASan tests (docs/measurements/sanitizer-time.md, 2026-12-03); the CPU
 # kernels and the SAD ceilings run in every check and bench, and the corpus makes every check's
 # frames (its box blur was 17 % of an ASan fuzz check). Other builds are left as they are.
 function(pxflow_hot_code)

@@ -40,15 +40,11 @@ std::uint32_t row_sad(std::uint64_t a, std::uint64_t b) {
 }  // namespace
 
 Match integer_search(const FramePair& f, int i, int j, int S, OpCounts& cnt) {
-  // block_sad's sum, pixel by pixel, with prev's block read once and the candidate's rows as
-  // words: the search is most of the time of every check (and of the test suite, ASan's above
-  // all), and block_sad's value callable hides the rows from the compiler.
+  // block_sad's sum, pixel by pixel, with prev's block read once and every row (prev's and the
+  // candidate's) as a word: the search is most of the time of every check (and of the test suite,
+  // ASan's above all), and block_sad's value callable hides the rows from the compiler.
   std::uint64_t block[8];
-  for (int r = 0; r < 8; ++r) {
-    std::uint8_t px[8];
-    for (int c = 0; c < 8; ++c) px[c] = f.prev.at(i + c, j + r);
-    std::memcpy(&block[r], px, sizeof px);
-  }
+  for (int r = 0; r < 8; ++r) block[r] = row_word(f.prev.row(j + r) + i);
   Match best{0, 0, 0xFFFFFFFFu};  // the sentinel: any real SAD replaces it
   for (int dy = -S; dy <= S; ++dy) {
     for (int dx = -S; dx <= S; ++dx) {

@@ -27,11 +27,24 @@ inline std::string binary_stamp(const std::string& binary) {
          std::to_string(st.st_mtim.tv_nsec) + "\n";
 }
 
-inline void copy_file(const std::string& from, const std::string& to) {
-  const std::string bytes = slurp(from);
-  REQUIRE(!bytes.empty());
-  std::ofstream(to, std::ios::binary) << bytes;
-}
+// An exclusive flock on `path`, released when it goes out of scope (also when a REQUIRE throws:
+// a lock left held would make the next case of the same process wait for ever).
+class FileLock {
+ public:
+  explicit FileLock(const std::string& path)
+      : fd_(::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644)) {
+    REQUIRE(fd_ >= 0);
+    REQUIRE(::flock(fd_, LOCK_EX) == 0);
+  }
+  ~FileLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_;
+};
 
 }  // namespace detail
 
@@ -42,27 +55,23 @@ inline void copy_file(const std::string& from, const std::string& to) {
 // start together from making them twice; a rebuilt pxflow (another size or mtime) makes them
 // again.
 inline void make_small_results(const TempDir& dir) {
-  const std::string cache =
-      (std::filesystem::path(build_paths::pxflow).parent_path() / "test-cache/small-results")
-          .string();
-  std::filesystem::create_directories(cache);
-  const int lock = ::open((cache + "/lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-  REQUIRE(lock >= 0);
-  REQUIRE(::flock(lock, LOCK_EX) == 0);
+  namespace fs = std::filesystem;
+  const fs::path cache = fs::path(build_paths::pxflow).parent_path() / "test-cache/small-results";
+  fs::create_directories(cache);
+  const detail::FileLock lock((cache / "lock").string());
   const std::string stamp = detail::binary_stamp(build_paths::pxflow);
-  if (slurp(cache + "/stamp") != stamp) {
-    ::unlink((cache + "/stamp").c_str());
+  if (slurp((cache / "stamp").string()) != stamp) {
+    fs::remove(cache / "stamp");
     REQUIRE(run_pxflow({"check", "--backends", "ref-original,ref-local", "--generated-only",
-                        "--json", cache + "/c.json"})
+                        "--json", (cache / "c.json").string()})
                 .exit_code == 0);
     REQUIRE(run_pxflow({"bench", "--backends", "ref-original", "--batch", "1", "--min-time", "0",
-                        "--json", cache + "/b.json"})
+                        "--json", (cache / "b.json").string()})
                 .exit_code == 0);
-    std::ofstream(cache + "/stamp") << stamp;
+    std::ofstream(cache / "stamp") << stamp;
   }
-  detail::copy_file(cache + "/c.json", dir.path("c.json"));
-  detail::copy_file(cache + "/b.json", dir.path("b.json"));
-  ::close(lock);  // and with it the lock
+  for (const char* name : {"c.json", "b.json"})
+    fs::copy_file(cache / name, dir.path(name), fs::copy_options::overwrite_existing);
 }
 
 // The section of a report's results.json with this key (nullptr: none).
