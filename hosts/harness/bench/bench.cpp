@@ -484,15 +484,6 @@ std::string bench_header_line(std::size_t name_width) {
   return line + "  note";
 }
 
-// A row's bound per frame with its unit, as the table shows it.
-static std::string bound_cell(const BenchRow& r) {
-  const std::string unit = r.bound_unit == "instructions" ? " instr"
-                           : r.bound_unit == "ns"         ? " ns"
-                           : r.bound_unit == "tsc-cycles" ? " tsc cyc"
-                                                          : " cyc";
-  return formatted(r.bound_per_frame < 100 ? "%.1f" : "%.0f", r.bound_per_frame) + unit;
-}
-
 std::string bench_row_line(const BenchRow& r, std::size_t name_width) {
   if (r.samples_ns_per_frame.empty()) return pad_name(r.backend, name_width) + "  " + r.note;
   // A clock that counts instructions (QEMU's -icount) has no time of its own: its virtual
@@ -507,7 +498,7 @@ std::string bench_row_line(const BenchRow& r, std::size_t name_width) {
       r.cycles_per_frame > 0         ? formatted("%.0f", r.cycles_per_frame)
       : r.instructions_per_frame > 0 ? formatted("%.0f instr", r.instructions_per_frame)
                                      : "-",
-      r.bound_per_frame > 0 ? bound_cell(r) : "-",
+      r.bound_per_frame > 0 ? bound_text(r.bound_per_frame, r.bound_unit) : "-",
       r.bound_fraction > 0 ? formatted("%.1f %%", 100 * r.bound_fraction)
       : r.bound.empty()    ? "-"
                            : "none",

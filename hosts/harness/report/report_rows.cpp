@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "counted.hpp"
+#include "number_text.hpp"
 #include "report.hpp"
 
 namespace pxflow::report {
@@ -33,12 +34,7 @@ std::string instructions_cell(const Json& r) {
 }
 std::string bound_cell(const Json& r) {
   if (!r.contains("bound_per_frame")) return "-";
-  const std::string unit = str(r, "bound_unit");
-  const double v = r["bound_per_frame"].get<double>();
-  return num(v, v < 100 ? "%.1f" : "%.0f") + (unit == "instructions" ? " instr"
-                                              : unit == "ns"         ? " ns"
-                                              : unit == "tsc-cycles" ? " tsc cycles"
-                                                                     : " cycles");
+  return bound_text(r["bound_per_frame"].get<double>(), str(r, "bound_unit"));
 }
 
 std::string fraction_cell(const Json& r) {
