@@ -31,7 +31,10 @@ class IssueCalendar {
   }
   // Core id issued at `cycle`; its next issue cycle is its time (none while asleep).
   void Add(const Core& c, int id, uint64_t cycle) {
-    if (c.asleep) return;
+    if (!c.asleep) AddAwake(c, id, cycle);
+  }
+  // The same for a core that cannot be asleep (its issue was no peripheral access).
+  void AddAwake(const Core& c, int id, uint64_t cycle) {
     const uint64_t ahead = c.time - cycle - 1;  // a core issuing advances at least one cycle
     if (ahead < 8) [[likely]] {
       near_ |= uint64_t{1} << (8 * ahead + id);
@@ -39,6 +42,11 @@ class IssueCalendar {
       far_ |= 1u << id;
       far_min_ = std::min(far_min_, c.time);
     }
+  }
+  // The cores of `losers` lost their bank at `cycle`: they retry kTcdmRetry cycles later.
+  void AddRetries(uint32_t losers) {
+    static_assert(timing::kTcdmRetry >= 1 && timing::kTcdmRetry <= 8);
+    near_ |= uint64_t{losers} << (8 * (timing::kTcdmRetry - 1));
   }
   // Moves *cycle to the next cycle a core issues at and returns those cores (0: all asleep).
   uint32_t Next(const std::vector<Core>& cores, uint64_t* cycle) {
@@ -84,10 +92,9 @@ void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
   calendar.Rebuild(cores_, ready, cycle);
   IssueState state;
   for (int i = 0; i < num_cores(); ++i) state.NextSlot(cores_[i], i);
-  const auto issued = [&](const Core& c, int id) { calendar.Add(c, id, cycle); };
   schedule_changed_ = false;  // a wake-up or a DMA push sets it
   for (;;) {
-    IssueCycle<kTrace>(ready, cycle, state, issued);
+    IssueCycle<kTrace>(ready, cycle, state, calendar);
     if (exited_ || schedule_changed_) return;
     uint64_t next = cycle;
     const uint32_t next_ready = calendar.Next(cores_, &next);
@@ -108,9 +115,9 @@ void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
 // (CannotStopOrRewrite; such a core executes in the second pass, and every core after it too,
 // as then the order matters) and no core faults on its fetch (the first pass would throw before
 // any execution). Not with a trace, whose lines follow the order.
-template <bool kTrace, typename Issued>
+template <bool kTrace, typename Calendar>
 [[gnu::always_inline]] inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle,
-                                                       IssueState& state, const Issued& issued) {
+                                                       IssueState& state, Calendar& calendar) {
   CodeSlots& slots = state.slots;
   BankRequests requests{};  // per bank: bit per requesting core
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
@@ -125,13 +132,13 @@ template <bool kTrace, typename Issued>
     const Decoded& d = *slots[id];
     if (const uint32_t stall = c.TakeHazardStall(d)) {
       c.time += stall;
-      issued(c, id);
+      calendar.AddAwake(c, id, cycle);
       continue;
     }
     if (!in_order && c.OwnStateOnly(d) && InPrefetchBuffer(c)) {
       c.time += c.ExecuteInline(d);
       state.NextSlot(c, id);
-      issued(c, id);
+      calendar.AddAwake(c, id, cycle);
       continue;
     }
     const uint32_t addr = c.AccessAddress(d);
@@ -155,11 +162,8 @@ template <bool kTrace, typename Issued>
     bank_priority_[bank] = NextCore(std::countr_zero(requests[bank]));
   }
   if (shared_banks != 0) losers |= ArbitrateSharedBanks(shared_banks, requests);
-  for (uint32_t l = losers; l != 0; l &= l - 1) {
-    const int id = std::countr_zero(l);
-    LoseBank(*core_ptr_[id]);
-    issued(*core_ptr_[id], id);
-  }
+  for (uint32_t l = losers; l != 0; l &= l - 1) LoseBank(*core_ptr_[std::countr_zero(l)]);
+  calendar.AddRetries(losers);
   issuing &= ~losers;
   for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
     const int id = std::countr_zero(m);
@@ -169,7 +173,7 @@ template <bool kTrace, typename Issued>
     c.time += c.ExecuteInline(*slots[id]) + fetch;
     if (fetch != 0) c.event(GAP8_EVT_IMISS) += fetch;
     state.NextSlot(c, id);
-    issued(c, id);
+    calendar.Add(c, id, cycle);  // a peripheral read may have put it to sleep
   }
 }
 
