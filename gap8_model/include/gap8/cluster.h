@@ -94,6 +94,8 @@ class Cluster {
   struct IssueState {
     CodeSlots slots{};         // per core: the decode-cache slot of its pc (Core::CodeSlot)
     bool fetch_fault = false;  // a core's pc is outside L1 and L2: its next issue faults
+    uint32_t retry = 0;        // cores retrying a TCDM load next cycle with the bank bit below
+    std::array<uint32_t, GAP8_MAX_CORES> bank_bit{};  // per core: its last request's bank bit
     void NextSlot(const Core& c, int id) {
       if (Memory::InL2(c.pc())) [[likely]] {
         slots[id] = c.CodeSlot();  // the same test inside: GCC merges them
