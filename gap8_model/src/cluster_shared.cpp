@@ -31,7 +31,10 @@ class IssueCalendar {
   }
   // Core id issued at `cycle`; its next issue cycle is its time (none while asleep).
   void Add(const Core& c, int id, uint64_t cycle) {
-    if (c.asleep) return;
+    if (!c.asleep) AddAwake(c, id, cycle);
+  }
+  // The same for a core that cannot be asleep (its issue was no peripheral access).
+  void AddAwake(const Core& c, int id, uint64_t cycle) {
     const uint64_t ahead = c.time - cycle - 1;  // a core issuing advances at least one cycle
     if (ahead < 8) [[likely]] {
       near_ |= uint64_t{1} << (8 * ahead + id);
@@ -39,6 +42,11 @@ class IssueCalendar {
       far_ |= 1u << id;
       far_min_ = std::min(far_min_, c.time);
     }
+  }
+  // The cores of `losers` lost their bank at `cycle`: they retry kTcdmRetry cycles later.
+  void AddRetries(uint32_t losers) {
+    static_assert(timing::kTcdmRetry >= 1 && timing::kTcdmRetry <= 8);
+    near_ |= uint64_t{losers} << (8 * (timing::kTcdmRetry - 1));
   }
   // Moves *cycle to the next cycle a core issues at and returns those cores (0: all asleep).
   uint32_t Next(const std::vector<Core>& cores, uint64_t* cycle) {
@@ -84,10 +92,9 @@ void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
   calendar.Rebuild(cores_, ready, cycle);
   IssueState state;
   for (int i = 0; i < num_cores(); ++i) state.NextSlot(cores_[i], i);
-  const auto issued = [&](const Core& c, int id) { calendar.Add(c, id, cycle); };
   schedule_changed_ = false;  // a wake-up or a DMA push sets it
   for (;;) {
-    IssueCycle<kTrace>(ready, cycle, state, issued);
+    IssueCycle<kTrace>(ready, cycle, state, calendar);
     if (exited_ || schedule_changed_) return;
     uint64_t next = cycle;
     const uint32_t next_ready = calendar.Next(cores_, &next);
@@ -101,22 +108,44 @@ void Cluster::RunShared(uint32_t ready, uint64_t cycle) {
 // Always inline: with two instances (kTrace) GCC keeps it out of line, 4 % more host
 // instructions on 8 cores (callgrind, gap8-run --cores 8 --bench bench_parallel.elf: 4,914 M).
 // A core that lost its bank retries the same instruction (its registers cannot change
-// meanwhile): its slot is still its pc's, so the retry needs no fetch.
+// meanwhile): its slot is still its pc's, so the retry needs no fetch; a retried TCDM load that
+// cannot stop the run needs only its request (below: 6 % fewer host instructions, 8 % less time
+// on 8 cores, docs/measurements/gap8-model-host-speed.md).
 // An instruction that touches only its core's own state (OwnStateOnly) and waits for no fetch
 // executes in the first pass, without the second one: its place in the cycle's order does not
 // matter while no core before it in the order may end the run or rewrite code
 // (CannotStopOrRewrite; such a core executes in the second pass, and every core after it too,
 // as then the order matters) and no core faults on its fetch (the first pass would throw before
 // any execution). Not with a trace, whose lines follow the order.
-template <bool kTrace, typename Issued>
+template <bool kTrace, typename Calendar>
 [[gnu::always_inline]] inline void Cluster::IssueCycle(uint32_t ready, uint64_t cycle,
-                                                       IssueState& state, const Issued& issued) {
+                                                       IssueState& state, Calendar& calendar) {
   CodeSlots& slots = state.slots;
   BankRequests requests{};  // per bank: bit per requesting core
   uint32_t issuing = 0, banks = 0, shared_banks = 0;
   const bool contention = config_.contention;
   bool in_order = kTrace || state.fetch_fault;  // no more executions in the first pass
-  for (uint32_t m = ready; m != 0; m &= m - 1) {
+  uint32_t quick_retry = 0;  // requesting cores whose retry, if they lose, needs only the request
+  const auto request = [&](int id, uint32_t bank_bit) {
+    issuing |= 1u << id;
+    requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
+    shared_banks |= banks & bank_bit;
+    banks |= bank_bit;
+  };
+  // The losers of the cycle before that retry a TCDM load that cannot stop the run: the same
+  // instruction (unless a store rewrote it), address and bank (their registers did not change),
+  // no hazard (none stalled them then), nothing for in_order. Only the request is recorded
+  // again; its place before the other cores does not matter (requests are a set).
+  uint32_t full = ready;
+  for (uint32_t r = ready & state.retry; r != 0; r &= r - 1) {
+    const int id = std::countr_zero(r);
+    if (slots[id]->op == Op::kUndecoded) [[unlikely]]
+      continue;
+    full &= ~(1u << id);
+    quick_retry |= 1u << id;
+    request(id, state.bank_bit[id]);
+  }
+  for (uint32_t m = full; m != 0; m &= m - 1) {
     const int id = std::countr_zero(m);
     Core& c = *core_ptr_[id];
     // Not decoded yet, or its bytes were rewritten since (or pc is outside L1 and L2: throws).
@@ -125,22 +154,22 @@ template <bool kTrace, typename Issued>
     const Decoded& d = *slots[id];
     if (const uint32_t stall = c.TakeHazardStall(d)) {
       c.time += stall;
-      issued(c, id);
+      calendar.AddAwake(c, id, cycle);
       continue;
     }
     if (!in_order && c.OwnStateOnly(d) && InPrefetchBuffer(c)) {
       c.time += c.ExecuteInline(d);
       state.NextSlot(c, id);
-      issued(c, id);
+      calendar.AddAwake(c, id, cycle);
       continue;
     }
     const uint32_t addr = c.AccessAddress(d);
-    in_order = in_order || !c.CannotStopOrRewrite(d, addr);
+    const bool cannot_stop = c.CannotStopOrRewrite(d, addr);
+    in_order = in_order || !cannot_stop;
     const uint32_t bank_bit = contention ? Core::TcdmBankBit(d, addr) : 0u;
-    issuing |= 1u << id;
-    requests[std::countr_zero(bank_bit | (1u << kNoBank))] |= 1u << id;
-    shared_banks |= banks & bank_bit;
-    banks |= bank_bit;
+    state.bank_bit[id] = bank_bit;
+    quick_retry |= static_cast<uint32_t>(cannot_stop && (d.access & kAccessLoad)) << id;
+    request(id, bank_bit);
   }
   uint32_t losers = 0;  // each retries next cycle
   // Banks the DMA takes this cycle: every core requesting one retries (the DMA always wins).
@@ -155,11 +184,9 @@ template <bool kTrace, typename Issued>
     bank_priority_[bank] = NextCore(std::countr_zero(requests[bank]));
   }
   if (shared_banks != 0) losers |= ArbitrateSharedBanks(shared_banks, requests);
-  for (uint32_t l = losers; l != 0; l &= l - 1) {
-    const int id = std::countr_zero(l);
-    LoseBank(*core_ptr_[id]);
-    issued(*core_ptr_[id], id);
-  }
+  for (uint32_t l = losers; l != 0; l &= l - 1) LoseBank(*core_ptr_[std::countr_zero(l)]);
+  calendar.AddRetries(losers);
+  state.retry = losers & quick_retry;
   issuing &= ~losers;
   for (uint32_t m = issuing; m != 0 && !exited_; m &= m - 1) {
     const int id = std::countr_zero(m);
@@ -169,7 +196,7 @@ template <bool kTrace, typename Issued>
     c.time += c.ExecuteInline(*slots[id]) + fetch;
     if (fetch != 0) c.event(GAP8_EVT_IMISS) += fetch;
     state.NextSlot(c, id);
-    issued(c, id);
+    calendar.Add(c, id, cycle);  // a peripheral read may have put it to sleep
   }
 }
 

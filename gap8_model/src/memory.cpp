@@ -1,6 +1,8 @@
 #include "gap8/memory.h"
 
 #include <algorithm>
+#include <new>
+#include <type_traits>
 
 namespace gap8 {
 
@@ -11,8 +13,15 @@ constexpr uint32_t kPad = 4;  // lets a fetch at the last half-word read 32 bits
 Memory::Memory()
     : l1_(GAP8_L1_SIZE + kPad),
       l2_(GAP8_L2_SIZE + kPad),
-      l1_code_(GAP8_L1_SIZE / 2),
-      l2_code_(GAP8_L2_SIZE / 2) {}
+      l1_code_(ZeroedSlots(GAP8_L1_SIZE / 2)),
+      l2_code_(ZeroedSlots(GAP8_L2_SIZE / 2)) {}
+
+Memory::CodeSlots Memory::ZeroedSlots(size_t count) {
+  static_assert(std::is_trivially_copyable_v<Decoded> && Op::kUndecoded == Op{});
+  auto* slots = static_cast<Decoded*>(std::calloc(count, sizeof(Decoded)));
+  if (slots == nullptr) throw std::bad_alloc();
+  return CodeSlots(slots);
+}
 
 uint32_t Memory::FetchBits(uint32_t pc) {
   uint8_t* p = Span(pc, 2);
@@ -47,8 +56,8 @@ bool Memory::Read(uint32_t addr, void* dst, uint32_t size) {
 void Memory::Clear() {
   std::fill(l1_.begin(), l1_.end(), 0);
   std::fill(l2_.begin(), l2_.end(), 0);
-  std::fill(l1_code_.begin(), l1_code_.end(), Decoded{});
-  std::fill(l2_code_.begin(), l2_code_.end(), Decoded{});
+  std::memset(static_cast<void*>(l1_code_.get()), 0, GAP8_L1_SIZE / 2 * sizeof(Decoded));
+  std::memset(static_cast<void*>(l2_code_.get()), 0, GAP8_L2_SIZE / 2 * sizeof(Decoded));
   l1_has_code_ = false;
 }
 

@@ -88,12 +88,14 @@ class Cluster {
 
   template <bool kTrace>
   void RunShared(uint32_t ready, uint64_t cycle);
-  // One shared cycle; issued(core, id) is called for each core of `ready` whose next issue cycle
-  // is known (all but those after an exit).
+  // One shared cycle; the calendar gets the next issue cycle of each core of `ready` whose next
+  // issue cycle is known (all but those after an exit).
   using CodeSlots = std::array<const Decoded*, GAP8_MAX_CORES>;
   struct IssueState {
     CodeSlots slots{};         // per core: the decode-cache slot of its pc (Core::CodeSlot)
     bool fetch_fault = false;  // a core's pc is outside L1 and L2: its next issue faults
+    uint32_t retry = 0;        // cores retrying a TCDM load next cycle with the bank bit below
+    std::array<uint32_t, GAP8_MAX_CORES> bank_bit{};  // per core: its last request's bank bit
     void NextSlot(const Core& c, int id) {
       if (Memory::InL2(c.pc())) [[likely]] {
         slots[id] = c.CodeSlot();  // the same test inside: GCC merges them
@@ -103,8 +105,8 @@ class Cluster {
       fetch_fault |= Core::IsNoSlot(slots[id]);
     }
   };
-  template <bool kTrace, typename Issued>
-  void IssueCycle(uint32_t ready, uint64_t cycle, IssueState& state, const Issued& issued);
+  template <bool kTrace, typename Calendar>
+  void IssueCycle(uint32_t ready, uint64_t cycle, IssueState& state, Calendar& calendar);
   template <bool kTrace>
   void Trace(const Core& core, const Decoded& d) const {
     if constexpr (kTrace) config_.trace(core.id(), core.time, core.pc(), d.raw);

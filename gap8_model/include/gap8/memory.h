@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "../../runtime/gap8_regs.h"
@@ -67,9 +69,20 @@ class Memory {
  private:
   void InvalidateCodeSlow(uint32_t addr, uint32_t size);
 
+  // The decode caches, a slot per half-word: 9 MB, of which a program touches a few pages.
+  // calloc'd, so the host maps zero pages only where a slot is read or written (a vector of
+  // Decoded{} writes them all: 2,300 more page faults, 5 ms of host time per run on the Zen 4
+  // VM of docs/measurements/gap8-model-host-speed.md). An all-zero slot is undecoded
+  // (Op::kUndecoded is 0; its other fields are never read).
+  struct FreeDeleter {
+    void operator()(Decoded* p) const { std::free(p); }
+  };
+  using CodeSlots = std::unique_ptr<Decoded[], FreeDeleter>;
+  static CodeSlots ZeroedSlots(size_t count);
+
   std::vector<uint8_t> l1_, l2_;
   bool l1_has_code_ = false;
-  std::vector<Decoded> l1_code_, l2_code_;
+  CodeSlots l1_code_, l2_code_;
 };
 
 }  // namespace gap8
