@@ -431,8 +431,7 @@ void search_pair(Block prev_a, Window next_a, Block prev_b, Window next_b, int r
 // the horizontal averages. The eight direction sums are reduced together: four u16 fields per
 // qword (a field's sum is at most 16,320: no carry), two vectors folded into one, the eight sums
 // then sit as u16 in one xmm.
-void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, std::uint32_t sub[8],
-                OpCounts*) {
+inline __m128i half_pixel_sums(Block prev, const std::uint8_t* around, std::ptrdiff_t stride) {
   const __m512i ones = _mm512_set1_epi8(-1);
   __m512i top[3], low[3];  // column s - 1: rows -1..6, and rows 7..8 in qwords 0..1
   for (int s = 0; s < 3; s += 2) {
@@ -465,16 +464,27 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
                         _mm512_sad_epu8(_mm512_avg_epu8(hl_up, hl), q),      // k5 d(c-1, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(p_up, p_mid), q),    // k6 g(c, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(hr_up, hr), q)};     // k7 d(c, r-1)
-  const __m128i sums = sums_of_eight(s);
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(sub), _mm256_cvtepu16_epi32(sums));
+  return sums_of_eight(s);
+}
+
+// Step 3 and its vote without a branch on the SADs: phminposuw gives the smallest of the eight
+// u16 sums and the lowest k that holds it, i.e. the first minimum over k = 0..7, which wins
+// only when strictly below the integer match's SAD (ties keep the match or the lower k, as in
+// ref::select_half_pixel).
+int half_pixel_vote(Block prev, const std::uint8_t* around, std::ptrdiff_t stride,
+                    std::uint32_t sad, std::uint16_t sub[8]) {
+  const __m128i sums = half_pixel_sums(prev, around, stride);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(sub), sums);
+  const auto least = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_minpos_epu16(sums)));
   _mm256_zeroupper();
+  return (least & 0xFFFFu) < sad ? static_cast<int>(least >> 16) : kDirNone;
 }
 
 }  // namespace
 
 const IsaKernel& avx512bw_kernel() {
-  static const IsaKernel k{"avx512bw", row_bytes, feature_sse2, search,
-                           half_pixel, false,     search_pair,  kPairMaxRadius};
+  static const IsaKernel k{"avx512bw", row_bytes,   feature_sse2,   search,         nullptr,
+                           false,      search_pair, kPairMaxRadius, half_pixel_vote};
   return k;
 }
 
