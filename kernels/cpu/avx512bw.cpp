@@ -47,7 +47,7 @@ struct RowLoader {
 // Two POIs of one grid row per vdbpsadbw, for 2S + 1 <= 9: the lanes hold (POI a, columns 0..3),
 // (a, columns 4..7), (b, columns 0..3), (b, columns 4..7), each at dx' 0..7 (a window row's bytes
 // from 0 and from 4), so no lane computes a dx' beyond 2S but the ninth, dx' = 8 at S = 4,
-// which search_last_column adds per POI. A candidate row is one masked load per POI and one
+// which pair_column adds per POI. A candidate row is one masked load per POI and one
 // vpermt2d for both, where the 16-dx' layout spends a vpermd per POI.
 struct PairLoader {
   const std::uint8_t* a;  // POI a's window column 1, row 0
@@ -205,50 +205,64 @@ inline __m128i sums_of_eight(const __m512i d[8]) {
   return _mm_unpacklo_epi64(_mm512_castsi512_si128(h), _mm512_extracti32x4_epi32(h, 2));
 }
 
+// One column of one POI's window (8 bytes per row) against the block, for eight candidates
+// dy' = 0..7: qword dy' of the result is the candidate's SAD. The column's window rows 1..8 are
+// `top`, rows 9..16 `below` (row qwords, qword_rows); rows r + 1 .. r + 8 (valignq by r) against
+// block row r broadcast give block row r's part of all eight candidates at once, so the eight
+// parts add up in place, with no sum across a vector's qwords.
+inline __m512i column_sads(Block prev, __m512i top, __m512i below) {
+  auto part = [&](int r, __m512i rows) {
+    const __m128i row =
+        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev.data + r * prev.stride));
+    return _mm512_sad_epu8(rows, _mm512_broadcastq_epi64(row));
+  };
+  __m512i sum = part(0, top);
+  [&]<int... R>(std::integer_sequence<int, R...>) {  // valignq's shift is an immediate
+    ((sum = _mm512_add_epi64(sum, part(R + 1, _mm512_alignr_epi64(below, top, R + 1)))), ...);
+  }
+  (std::make_integer_sequence<int, 7>{});
+  return sum;
+}
+
+// The sum of the eight qwords of v (each at most 2,040: the total fits a dword).
+inline std::uint32_t qword_total(__m512i v) {
+  const __m256i h = _mm256_add_epi64(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
+  const __m128i q = _mm_add_epi64(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1));
+  return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_add_epi64(q, _mm_unpackhi_epi64(q, q))));
+}
+
 // The last column alone, for 2S + 1 = 16k + 1 (S = 8, 16, 24): a 16-dx' chunk for one dx' would
-// spend as many vdbpsadbw as a full one. Instead each candidate (dx' = 2S, dy') is one psadbw of
-// the block's eight rows (qwords) against the window's column strip, rows dy'+1 .. dy'+8 taken
-// from the strip by valignq; eight candidates' row SADs are summed together (sums_of_eight).
-void search_last_column(const __m512i rows, Window next, int radius, Keys& best) {
+// spend as many vdbpsadbw as a full one. Instead the column (dx' = 2S) is column_sads per eight
+// candidates, dy' = 8m .. 8m + 7 from the strip's parts m and m + 1 (window rows 1 + 8m ..
+// 16 + 8m, window column 2S + 1), two such vectors keyed at once; the last candidate, dy' = 16k,
+// is one psadbw of its eight rows (part 2k) against the block's rows, summed across the vector.
+void search_last_column(Block prev, Window next, int radius, Keys& best) {
   const int side = 2 * radius + 1;
-  const std::uint8_t* strip = next.data + 1 + 2 * radius;  // window column 2S + 1
-  // Window rows 1 + 8m .. 8 + 8m (2S + 8 <= 70 rows: at most 9 parts), then a zero part: the
-  // last part's candidate dy' = 8m is its qwords 0..7 alone, the later ones are never keyed.
-  __m512i part[10];
-  const int parts = (side + 7 + 7) / 8;
-  for (int m = 0; m < parts; ++m) {
-    const int n = side + 7 - 8 * m;  // rows of the strip left from 1 + 8m
-    part[m] = qword_rows(strip + (1 + 8 * m) * next.stride, next.stride, n < 8 ? n : 8);
+  const int halves = side / 8;  // 2k vectors of eight candidates, then dy' = 16k
+  const std::uint8_t* strip = next.data + 1 + 2 * radius;
+  auto strip_part = [&](int m) {  // window rows 1 + 8m .. 8 + 8m (2S + 8 rows in all)
+    return qword_rows(strip + (1 + 8 * m) * next.stride, next.stride, 8);
+  };
+  // Dword i of a key vector: qword i of the first eight candidates, then of the next eight.
+  const __m512i pick = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+  const __m512i rows = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  __m512i part = strip_part(0);
+  for (int m = 0; m < halves; m += 2) {
+    const __m512i mid = strip_part(m + 1), next_part = strip_part(m + 2);
+    const __m512i sads = _mm512_permutex2var_epi32(column_sads(prev, part, mid), pick,
+                                                   column_sads(prev, mid, next_part));
+    const __m512i dy = _mm512_add_epi32(rows, _mm512_set1_epi32(8 * m));
+    const __m512i position =
+        _mm512_add_epi32(_mm512_slli_epi32(dy, 6), _mm512_set1_epi32(2 * radius));
+    best.even = _mm512_min_epu32(best.even,
+                                 _mm512_or_si512(_mm512_slli_epi32(sads, kPositionBits), position));
+    part = next_part;
   }
-  part[parts] = _mm512_setzero_si512();
-  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-  for (int g = 0; 16 * g < side; ++g) {  // dy' = 16g .. 16g + 15
-    __m128i half[2];
-    for (int h = 0; h < 2; ++h) {
-      const int m = 2 * g + h;  // dy' = 8m + j: window rows 8m + j + 1 .., qword j of part m on
-      half[h] = _mm_setzero_si128();
-      if (8 * m >= side) continue;
-      __m512i sads[8];
-      // valignq takes its shift as an immediate: the eight shifts are spelled out at compile
-      // time (a loop counter is one only where the optimiser unrolls the loop, not at -O0/-O1).
-      [&]<int... J>(std::integer_sequence<int, J...>) {
-        ((sads[J] = 8 * m + J < side
-                        ? _mm512_sad_epu8(rows, _mm512_alignr_epi64(part[m + 1], part[m], J))
-                        : _mm512_setzero_si512()),
-         ...);
-      }
-      (std::make_integer_sequence<int, 8>{});
-      half[h] = sums_of_eight(sads);
-    }
-    const __m512i sad =
-        _mm512_cvtepu16_epi32(_mm256_inserti128_si256(_mm256_castsi128_si256(half[0]), half[1], 1));
-    const __m512i dy = _mm512_add_epi32(lanes, _mm512_set1_epi32(16 * g));
-    const __m512i key =
-        _mm512_or_si512(_mm512_slli_epi32(sad, kPositionBits),
-                        _mm512_add_epi32(_mm512_slli_epi32(dy, 6), _mm512_set1_epi32(2 * radius)));
-    const __mmask16 valid = _mm512_cmplt_epi32_mask(dy, _mm512_set1_epi32(side));
-    best.even = _mm512_mask_min_epu32(best.even, valid, best.even, key);
-  }
+  const std::uint32_t last =
+      qword_total(_mm512_sad_epu8(part, qword_rows(prev.data, prev.stride, 8)));
+  const auto key =
+      static_cast<int>(last << kPositionBits | ((side - 1) * kRowPositions + 2 * radius));
+  best.even = _mm512_mask_min_epu32(best.even, 1, best.even, _mm512_set1_epi32(key));
 }
 
 // An odd key's position + 1 names its own dx' (see key_rows); the all-ones of lanes never
@@ -286,7 +300,7 @@ BlockMatch search_at(Block prev, Window next, int radius) {
                            _mm512_setr_epi32(0, 1, 2, 3, 2, 3, 4, 5, 1, 2, 3, 4, 3, 4, 5, 6)};
     search_chunk<kRadius>(block, loader, S, c, best);
   }
-  if (column) search_last_column(qword_rows(prev.data, prev.stride, 8), next, S, best);
+  if (column) search_last_column(prev, next, S, best);
   const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(merged_keys(best)));
   _mm256_zeroupper();
   return match_of(key, S);
@@ -312,28 +326,6 @@ BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
 
 constexpr int kPairMaxRadius = 4;  // 2S + 1 <= 9: dx' 0..7 in the lanes, dx' = 8 by the column
 
-// dx' = 8 at S = 4 (the column) of one POI, for dy' = 0..7: qword dy' of the result is the
-// candidate's SAD. The column's window rows 1..16 (8 bytes from window column 9) are two
-// vectors of row qwords; rows r + 1 .. r + 8 (valignq by r) against block row r broadcast give
-// block row r's part of all eight candidates at once, so the eight parts add up in place, with
-// no sum across a vector's qwords. `strip` gets rows 9..16, for the last candidate dy' = 8.
-inline __m512i column_sads(Block prev, Window next, __m512i& strip) {
-  const std::uint8_t* column = next.data + 9;
-  const __m512i top = qword_rows(column + next.stride, next.stride, 8);
-  strip = qword_rows(column + 9 * next.stride, next.stride, 8);
-  auto part = [&](int r, __m512i rows) {
-    const __m128i row =
-        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev.data + r * prev.stride));
-    return _mm512_sad_epu8(rows, _mm512_broadcastq_epi64(row));
-  };
-  __m512i sum = part(0, top);
-  [&]<int... R>(std::integer_sequence<int, R...>) {  // valignq's shift is an immediate
-    ((sum = _mm512_add_epi64(sum, part(R + 1, _mm512_alignr_epi64(strip, top, R + 1)))), ...);
-  }
-  (std::make_integer_sequence<int, 7>{});
-  return sum;
-}
-
 // The keys of the column's candidates dy' = 0..7 of a and b in key_rows' pair layout (a in
 // lanes 0 and 2, b in lanes 1 and 3; dy' = i + 4 (lane / 2) in dword i of a lane), and the keys
 // of the last candidates (dx', dy') = (8, 8) of a and b, each one psadbw of its rows 9..16.
@@ -343,9 +335,13 @@ struct PairColumn {
 };
 
 PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b) {
-  __m512i strip_a, strip_b;
-  const __m512i sads_a = column_sads(prev_a, next_a, strip_a);
-  const __m512i sads_b = column_sads(prev_b, next_b, strip_b);
+  // Window column 9, rows 1..8 and 9..16 (the latter also the last candidates' rows).
+  auto column = [](Window w, int row) {
+    return qword_rows(w.data + 9 + row * w.stride, w.stride, 8);
+  };
+  const __m512i strip_a = column(next_a, 9), strip_b = column(next_b, 9);
+  const __m512i sads_a = column_sads(prev_a, column(next_a, 1), strip_a);
+  const __m512i sads_b = column_sads(prev_b, column(next_b, 1), strip_b);
   const __m512i pick = _mm512_setr_epi32(0, 2, 4, 6, 16, 18, 20, 22, 8, 10, 12, 14, 24, 26, 28, 30);
   const __m512i position = _mm512_setr_epi32(8, 72, 136, 200, 8, 72, 136, 200, 264, 328, 392, 456,
                                              264, 328, 392, 456);  // dy' * 64 + 8
