@@ -181,16 +181,24 @@ template <int kRadius>
       ok.odd, best);
 }
 
-// Eight rows of 8 bytes, row r of `p + r * stride` in qword r. Each row is a vpbroadcastq from
-// memory (a load) merged under a one-qword mask: no store to a stack buffer that a 64-byte load
-// would then have to wait for (a failed store forward per plane cost more than the SADs).
-inline __m512i qword_rows(const std::uint8_t* p, std::ptrdiff_t stride, int n) {
-  __m512i z = _mm512_setzero_si512();
-  for (int r = 0; r < n; ++r)
-    z = _mm512_mask_broadcastq_epi64(
-        z, static_cast<__mmask8>(1u << r),
-        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p + r * stride)));
-  return z;
+// Two rows of 8 bytes, row r of `p + r * stride` in qword r of an xmm.
+inline __m128i two_rows(const std::uint8_t* p, std::ptrdiff_t stride) {
+  return _mm_unpacklo_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)),
+                            _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p + stride)));
+}
+
+// Eight rows of 8 bytes, row r of `p + r * stride` in qword r: pairs of rows put together by
+// vinserti128 and vinserti64x4, no store to a stack buffer that a 64-byte load would then have
+// to wait for (a failed store forward per plane cost more than the SADs). Each row merged by a
+// masked vpbroadcastq was 5-7 % slower on Zen 4 (S = 4 and 8), where a merge costs as much as a
+// 512-bit shuffle.
+inline __m512i qword_rows(const std::uint8_t* p, std::ptrdiff_t stride) {
+  const __m256i lo = _mm256_inserti128_si256(_mm256_castsi128_si256(two_rows(p, stride)),
+                                             two_rows(p + 2 * stride, stride), 1);
+  const __m256i hi =
+      _mm256_inserti128_si256(_mm256_castsi128_si256(two_rows(p + 4 * stride, stride)),
+                              two_rows(p + 6 * stride, stride), 1);
+  return _mm512_inserti64x4(_mm512_castsi256_si512(lo), hi, 1);
 }
 
 // The eight totals of eight vectors of eight qword SADs (psadbw results, each total <= 16,320),
@@ -248,7 +256,7 @@ void search_last_column(Block prev, Window next, int radius, Keys& best) {
   const int halves = side / 8;  // 2k vectors of eight candidates, then dy' = 16k
   const std::uint8_t* strip = next.data + 1 + 2 * radius;
   auto strip_part = [&](int m) {  // window rows 1 + 8m .. 8 + 8m (2S + 8 rows in all)
-    return qword_rows(strip + (1 + 8 * m) * next.stride, next.stride, 8);
+    return qword_rows(strip + (1 + 8 * m) * next.stride, next.stride);
   };
   // Dword i of a key vector: qword i of the first eight candidates, then of the next eight.
   const __m512i pick = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
@@ -265,8 +273,7 @@ void search_last_column(Block prev, Window next, int radius, Keys& best) {
                                  _mm512_or_si512(_mm512_slli_epi32(sads, kPositionBits), position));
     part = next_part;
   }
-  const std::uint32_t last =
-      qword_total(_mm512_sad_epu8(part, qword_rows(prev.data, prev.stride, 8)));
+  const std::uint32_t last = qword_total(_mm512_sad_epu8(part, qword_rows(prev.data, prev.stride)));
   const auto key =
       static_cast<int>(last << kPositionBits | ((side - 1) * kRowPositions + 2 * radius));
   best.even = _mm512_mask_min_epu32(best.even, 1, best.even, _mm512_set1_epi32(key));
@@ -343,9 +350,7 @@ struct PairColumn {
 
 PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b) {
   // Window column 9, rows 1..8 and 9..16 (the latter also the last candidates' rows).
-  auto column = [](Window w, int row) {
-    return qword_rows(w.data + 9 + row * w.stride, w.stride, 8);
-  };
+  auto column = [](Window w, int row) { return qword_rows(w.data + 9 + row * w.stride, w.stride); };
   const __m512i strip_a = column(next_a, 9), strip_b = column(next_b, 9);
   const __m512i sads_a = column_sads(prev_a, column(next_a, 1), strip_a);
   const __m512i sads_b = column_sads(prev_b, column(next_b, 1), strip_b);
@@ -357,8 +362,8 @@ PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b)
       _mm512_slli_epi32(_mm512_permutex2var_epi32(sads_a, pick, sads_b), kPositionBits), position);
   // a's eight row SADs in the low dwords, b's in the high ones (each <= 2,040: no carry).
   __m512i last = _mm512_or_si512(
-      _mm512_sad_epu8(strip_a, qword_rows(prev_a.data, prev_a.stride, 8)),
-      _mm512_slli_epi64(_mm512_sad_epu8(strip_b, qword_rows(prev_b.data, prev_b.stride, 8)), 32));
+      _mm512_sad_epu8(strip_a, qword_rows(prev_a.data, prev_a.stride)),
+      _mm512_slli_epi64(_mm512_sad_epu8(strip_b, qword_rows(prev_b.data, prev_b.stride)), 32));
   last = _mm512_add_epi64(last, _mm512_shuffle_i64x2(last, last, 0x4E));
   last = _mm512_add_epi64(last, _mm512_shuffle_i64x2(last, last, 0xB1));
   const __m128i total = _mm512_castsi512_si128(last);
@@ -438,8 +443,9 @@ inline __m128i half_pixel_sums(Block prev, const std::uint8_t* around, std::ptrd
   const __m512i ones = _mm512_set1_epi8(-1);
   __m512i top[3], low[3];  // column s - 1: rows -1..6, and rows 7..8 in qwords 0..1
   for (int s = 0; s < 3; s += 2) {
-    top[s] = _mm512_xor_si512(qword_rows(around + s, stride, 8), ones);
-    low[s] = _mm512_xor_si512(qword_rows(around + 8 * stride + s, stride, 2), ones);
+    top[s] = _mm512_xor_si512(qword_rows(around + s, stride), ones);
+    low[s] =
+        _mm512_xor_si512(_mm512_zextsi128_si512(two_rows(around + 8 * stride + s, stride)), ones);
   }
   // Columns 0..7 without loading them: columns -1..6 moved down a byte give 0..6, columns 1..8
   // moved up a byte give 1..7; the bytes both give are equal, and a shift brings in zeros, so
@@ -458,7 +464,7 @@ inline __m128i half_pixel_sums(Block prev, const std::uint8_t* around, std::ptrd
   const __m512i p_up = top[1], p_mid = down(top[1], low[1], 0), p_down = down(top[1], low[1], 1);
   const __m512i hl_up = hl_top, hl = down(hl_top, hl_low, 0), hl_down = down(hl_top, hl_low, 1);
   const __m512i hr_up = hr_top, hr = down(hr_top, hr_low, 0), hr_down = down(hr_top, hr_low, 1);
-  const __m512i q = _mm512_xor_si512(qword_rows(prev.data, prev.stride, 8), ones);
+  const __m512i q = _mm512_xor_si512(qword_rows(prev.data, prev.stride), ones);
   const __m512i s[8] = {_mm512_sad_epu8(hr, q),                              // k0 h(c, r)
                         _mm512_sad_epu8(_mm512_avg_epu8(hr, hr_down), q),    // k1 d(c, r)
                         _mm512_sad_epu8(_mm512_avg_epu8(p_mid, p_down), q),  // k2 g(c, r)
