@@ -211,13 +211,16 @@ inline __m128i sums_of_eight(const __m512i d[8]) {
         _mm512_or_si512(_mm512_slli_epi64(q[2], 32), _mm512_slli_epi64(q[3], 48)));
   };
   const __m512i p0 = pack(d), p1 = pack(d + 4);
-  // Lanes 0..1: p0's four 128-bit lanes folded to two; lanes 2..3: p1's.
-  const __m512i f = _mm512_add_epi64(_mm512_shuffle_i64x2(p0, p1, 0x44),    // p0 lanes 0,1, p1 0,1
-                                     _mm512_shuffle_i64x2(p0, p1, 0xEE));   // p0 lanes 2,3, p1 2,3
-  const __m512i g = _mm512_add_epi64(f, _mm512_shuffle_i64x2(f, f, 0xB1));  // lane pairs summed
-  // Lane 0 holds p0's two qword halves, lane 2 p1's; one more add within each lane.
-  const __m512i h = _mm512_add_epi64(g, _mm512_shuffle_epi32(g, _MM_PERM_BADC));
-  return _mm_unpacklo_epi64(_mm512_castsi512_si128(h), _mm512_extracti32x4_epi32(h, 2));
+  // Each folded to 256 bits, then to one lane each (p0's in lane 0, p1's in lane 1), then the
+  // two qwords of each lane added: 256-bit steps, which Zen 4 does in one pass.
+  auto half = [](__m512i v) {
+    return _mm256_add_epi64(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
+  };
+  const __m256i a0 = half(p0), a1 = half(p1);
+  const __m256i f = _mm256_add_epi64(_mm256_permute2x128_si256(a0, a1, 0x20),
+                                     _mm256_permute2x128_si256(a0, a1, 0x31));
+  const __m256i g = _mm256_add_epi64(f, _mm256_shuffle_epi32(f, _MM_PERM_BADC));
+  return _mm_unpacklo_epi64(_mm256_castsi256_si128(g), _mm256_extracti128_si256(g, 1));
 }
 
 // One column of one POI's window (8 bytes per row) against the block, for eight candidates
