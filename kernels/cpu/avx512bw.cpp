@@ -242,11 +242,12 @@ inline __m512i column_sads(Block prev, __m512i top, __m512i below) {
   return sum;
 }
 
-// The sum of the eight qwords of v (each at most 2,040: the total fits a dword).
-inline std::uint32_t qword_total(__m512i v) {
+// The sum of the eight qwords of v (each at most 2,040: the total fits a dword), in dword 0,
+// left in a vector register: a trip through a general register costs the key's latency.
+inline __m128i qword_total(__m512i v) {
   const __m256i h = _mm256_add_epi64(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
   const __m128i q = _mm_add_epi64(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1));
-  return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_add_epi64(q, _mm_unpackhi_epi64(q, q))));
+  return _mm_add_epi64(q, _mm_unpackhi_epi64(q, q));
 }
 
 // The last column alone, for 2S + 1 = 16k + 1 (S = 8, 16, 24): a 16-dx' chunk for one dx' would
@@ -276,10 +277,10 @@ void search_last_column(Block prev, Window next, int radius, Keys& best) {
                                  _mm512_or_si512(_mm512_slli_epi32(sads, kPositionBits), position));
     part = next_part;
   }
-  const std::uint32_t last = qword_total(_mm512_sad_epu8(part, qword_rows(prev.data, prev.stride)));
-  const auto key =
-      static_cast<int>(last << kPositionBits | ((side - 1) * kRowPositions + 2 * radius));
-  best.even = _mm512_mask_min_epu32(best.even, 1, best.even, _mm512_set1_epi32(key));
+  const __m128i last = qword_total(_mm512_sad_epu8(part, qword_rows(prev.data, prev.stride)));
+  const __m128i key = _mm_or_si128(_mm_slli_epi32(last, kPositionBits),
+                                   _mm_cvtsi32_si128((side - 1) * kRowPositions + 2 * radius));
+  best.even = _mm512_mask_min_epu32(best.even, 1, best.even, _mm512_castsi128_si512(key));
 }
 
 // An odd key's position + 1 names its own dx' (see key_rows); the all-ones of lanes never
