@@ -47,20 +47,27 @@ struct RowLoader {
 // Two POIs of one grid row per vdbpsadbw, for 2S + 1 <= 9: the lanes hold (POI a, columns 0..3),
 // (a, columns 4..7), (b, columns 0..3), (b, columns 4..7), each at dx' 0..7 (a window row's bytes
 // from 0 and from 4), so no lane computes a dx' beyond 2S but the ninth, dx' = 8 at S = 4,
-// which search_last_column adds per POI. A candidate row is one masked load per POI and one
+// which pair_column adds per POI. A candidate row is one masked load per POI and one
 // vpermt2d for both, where the 16-dx' layout spends a vpermd per POI.
 struct PairLoader {
   const std::uint8_t* a;  // POI a's window column 1, row 0
   const std::uint8_t* b;
   std::ptrdiff_t stride;
   __mmask64 needed;  // bytes 0 .. last dx' + 7
+  // Plain 16-byte loads instead of masked ones: for S >= 4, where the 16 bytes stay within the
+  // kernel's row_bytes (a masked byte load cost Zen 4 about a cycle of a vector pipe). The byte
+  // after the last dx' + 7 is never compared (see the lanes above).
+  bool whole;
 
+  __m512i load(const std::uint8_t* p) const {
+    return whole ? _mm512_zextsi128_si512(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)))
+                 : _mm512_maskz_loadu_epi8(needed, p);
+  }
   __m512i row(int window_row) const {
     const __m512i spread =
         _mm512_setr_epi32(0, 1, 2, 3, 1, 2, 3, 4, 16, 17, 18, 19, 17, 18, 19, 20);
-    return _mm512_permutex2var_epi32(_mm512_maskz_loadu_epi8(needed, a + window_row * stride),
-                                     spread,
-                                     _mm512_maskz_loadu_epi8(needed, b + window_row * stride));
+    return _mm512_permutex2var_epi32(load(a + window_row * stride), spread,
+                                     load(b + window_row * stride));
   }
 };
 
@@ -174,16 +181,24 @@ template <int kRadius>
       ok.odd, best);
 }
 
-// Eight rows of 8 bytes, row r of `p + r * stride` in qword r. Each row is a vpbroadcastq from
-// memory (a load) merged under a one-qword mask: no store to a stack buffer that a 64-byte load
-// would then have to wait for (a failed store forward per plane cost more than the SADs).
-inline __m512i qword_rows(const std::uint8_t* p, std::ptrdiff_t stride, int n) {
-  __m512i z = _mm512_setzero_si512();
-  for (int r = 0; r < n; ++r)
-    z = _mm512_mask_broadcastq_epi64(
-        z, static_cast<__mmask8>(1u << r),
-        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p + r * stride)));
-  return z;
+// Two rows of 8 bytes, row r of `p + r * stride` in qword r of an xmm.
+inline __m128i two_rows(const std::uint8_t* p, std::ptrdiff_t stride) {
+  return _mm_unpacklo_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)),
+                            _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p + stride)));
+}
+
+// Eight rows of 8 bytes, row r of `p + r * stride` in qword r: pairs of rows put together by
+// vinserti128 and vinserti64x4, no store to a stack buffer that a 64-byte load would then have
+// to wait for (a failed store forward per plane cost more than the SADs). Each row merged by a
+// masked vpbroadcastq was 5-7 % slower on Zen 4 (S = 4 and 8), where a merge costs as much as a
+// 512-bit shuffle.
+inline __m512i qword_rows(const std::uint8_t* p, std::ptrdiff_t stride) {
+  const __m256i lo = _mm256_inserti128_si256(_mm256_castsi128_si256(two_rows(p, stride)),
+                                             two_rows(p + 2 * stride, stride), 1);
+  const __m256i hi =
+      _mm256_inserti128_si256(_mm256_castsi128_si256(two_rows(p + 4 * stride, stride)),
+                              two_rows(p + 6 * stride, stride), 1);
+  return _mm512_inserti64x4(_mm512_castsi256_si512(lo), hi, 1);
 }
 
 // The eight totals of eight vectors of eight qword SADs (psadbw results, each total <= 16,320),
@@ -196,59 +211,76 @@ inline __m128i sums_of_eight(const __m512i d[8]) {
         _mm512_or_si512(_mm512_slli_epi64(q[2], 32), _mm512_slli_epi64(q[3], 48)));
   };
   const __m512i p0 = pack(d), p1 = pack(d + 4);
-  // Lanes 0..1: p0's four 128-bit lanes folded to two; lanes 2..3: p1's.
-  const __m512i f = _mm512_add_epi64(_mm512_shuffle_i64x2(p0, p1, 0x44),    // p0 lanes 0,1, p1 0,1
-                                     _mm512_shuffle_i64x2(p0, p1, 0xEE));   // p0 lanes 2,3, p1 2,3
-  const __m512i g = _mm512_add_epi64(f, _mm512_shuffle_i64x2(f, f, 0xB1));  // lane pairs summed
-  // Lane 0 holds p0's two qword halves, lane 2 p1's; one more add within each lane.
-  const __m512i h = _mm512_add_epi64(g, _mm512_shuffle_epi32(g, _MM_PERM_BADC));
-  return _mm_unpacklo_epi64(_mm512_castsi512_si128(h), _mm512_extracti32x4_epi32(h, 2));
+  // Each folded to 256 bits, then to one lane each (p0's in lane 0, p1's in lane 1), then the
+  // two qwords of each lane added: 256-bit steps, which Zen 4 does in one pass.
+  auto half = [](__m512i v) {
+    return _mm256_add_epi64(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
+  };
+  const __m256i a0 = half(p0), a1 = half(p1);
+  const __m256i f = _mm256_add_epi64(_mm256_permute2x128_si256(a0, a1, 0x20),
+                                     _mm256_permute2x128_si256(a0, a1, 0x31));
+  const __m256i g = _mm256_add_epi64(f, _mm256_shuffle_epi32(f, _MM_PERM_BADC));
+  return _mm_unpacklo_epi64(_mm256_castsi256_si128(g), _mm256_extracti128_si256(g, 1));
+}
+
+// One column of one POI's window (8 bytes per row) against the block, for eight candidates
+// dy' = 0..7: qword dy' of the result is the candidate's SAD. The column's window rows 1..8 are
+// `top`, rows 9..16 `below` (row qwords, qword_rows); rows r + 1 .. r + 8 (valignq by r) against
+// block row r broadcast give block row r's part of all eight candidates at once, so the eight
+// parts add up in place, with no sum across a vector's qwords.
+inline __m512i column_sads(Block prev, __m512i top, __m512i below) {
+  auto part = [&](int r, __m512i rows) {
+    const __m128i row =
+        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev.data + r * prev.stride));
+    return _mm512_sad_epu8(rows, _mm512_broadcastq_epi64(row));
+  };
+  __m512i sum = part(0, top);
+  [&]<int... R>(std::integer_sequence<int, R...>) {  // valignq's shift is an immediate
+    ((sum = _mm512_add_epi64(sum, part(R + 1, _mm512_alignr_epi64(below, top, R + 1)))), ...);
+  }
+  (std::make_integer_sequence<int, 7>{});
+  return sum;
+}
+
+// The sum of the eight qwords of v (each at most 2,040: the total fits a dword), in dword 0,
+// left in a vector register: a trip through a general register costs the key's latency.
+inline __m128i qword_total(__m512i v) {
+  const __m256i h = _mm256_add_epi64(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
+  const __m128i q = _mm_add_epi64(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1));
+  return _mm_add_epi64(q, _mm_unpackhi_epi64(q, q));
 }
 
 // The last column alone, for 2S + 1 = 16k + 1 (S = 8, 16, 24): a 16-dx' chunk for one dx' would
-// spend as many vdbpsadbw as a full one. Instead each candidate (dx' = 2S, dy') is one psadbw of
-// the block's eight rows (qwords) against the window's column strip, rows dy'+1 .. dy'+8 taken
-// from the strip by valignq; eight candidates' row SADs are summed together (sums_of_eight).
-void search_last_column(const __m512i rows, Window next, int radius, Keys& best) {
+// spend as many vdbpsadbw as a full one. Instead the column (dx' = 2S) is column_sads per eight
+// candidates, dy' = 8m .. 8m + 7 from the strip's parts m and m + 1 (window rows 1 + 8m ..
+// 16 + 8m, window column 2S + 1), two such vectors keyed at once; the last candidate, dy' = 16k,
+// is one psadbw of its eight rows (part 2k) against the block's rows, summed across the vector.
+void search_last_column(Block prev, Window next, int radius, Keys& best) {
   const int side = 2 * radius + 1;
-  const std::uint8_t* strip = next.data + 1 + 2 * radius;  // window column 2S + 1
-  // Window rows 1 + 8m .. 8 + 8m (2S + 8 <= 70 rows: at most 9 parts), then a zero part: the
-  // last part's candidate dy' = 8m is its qwords 0..7 alone, the later ones are never keyed.
-  __m512i part[10];
-  const int parts = (side + 7 + 7) / 8;
-  for (int m = 0; m < parts; ++m) {
-    const int n = side + 7 - 8 * m;  // rows of the strip left from 1 + 8m
-    part[m] = qword_rows(strip + (1 + 8 * m) * next.stride, next.stride, n < 8 ? n : 8);
+  const int halves = side / 8;  // 2k vectors of eight candidates, then dy' = 16k
+  const std::uint8_t* strip = next.data + 1 + 2 * radius;
+  auto strip_part = [&](int m) {  // window rows 1 + 8m .. 8 + 8m (2S + 8 rows in all)
+    return qword_rows(strip + (1 + 8 * m) * next.stride, next.stride);
+  };
+  // Dword i of a key vector: qword i of the first eight candidates, then of the next eight.
+  const __m512i pick = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+  const __m512i rows = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  __m512i part = strip_part(0);
+  for (int m = 0; m < halves; m += 2) {
+    const __m512i mid = strip_part(m + 1), next_part = strip_part(m + 2);
+    const __m512i sads = _mm512_permutex2var_epi32(column_sads(prev, part, mid), pick,
+                                                   column_sads(prev, mid, next_part));
+    const __m512i dy = _mm512_add_epi32(rows, _mm512_set1_epi32(8 * m));
+    const __m512i position =
+        _mm512_add_epi32(_mm512_slli_epi32(dy, 6), _mm512_set1_epi32(2 * radius));
+    best.even = _mm512_min_epu32(best.even,
+                                 _mm512_or_si512(_mm512_slli_epi32(sads, kPositionBits), position));
+    part = next_part;
   }
-  part[parts] = _mm512_setzero_si512();
-  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-  for (int g = 0; 16 * g < side; ++g) {  // dy' = 16g .. 16g + 15
-    __m128i half[2];
-    for (int h = 0; h < 2; ++h) {
-      const int m = 2 * g + h;  // dy' = 8m + j: window rows 8m + j + 1 .., qword j of part m on
-      half[h] = _mm_setzero_si128();
-      if (8 * m >= side) continue;
-      __m512i sads[8];
-      // valignq takes its shift as an immediate: the eight shifts are spelled out at compile
-      // time (a loop counter is one only where the optimiser unrolls the loop, not at -O0/-O1).
-      [&]<int... J>(std::integer_sequence<int, J...>) {
-        ((sads[J] = 8 * m + J < side
-                        ? _mm512_sad_epu8(rows, _mm512_alignr_epi64(part[m + 1], part[m], J))
-                        : _mm512_setzero_si512()),
-         ...);
-      }
-      (std::make_integer_sequence<int, 8>{});
-      half[h] = sums_of_eight(sads);
-    }
-    const __m512i sad =
-        _mm512_cvtepu16_epi32(_mm256_inserti128_si256(_mm256_castsi128_si256(half[0]), half[1], 1));
-    const __m512i dy = _mm512_add_epi32(lanes, _mm512_set1_epi32(16 * g));
-    const __m512i key =
-        _mm512_or_si512(_mm512_slli_epi32(sad, kPositionBits),
-                        _mm512_add_epi32(_mm512_slli_epi32(dy, 6), _mm512_set1_epi32(2 * radius)));
-    const __mmask16 valid = _mm512_cmplt_epi32_mask(dy, _mm512_set1_epi32(side));
-    best.even = _mm512_mask_min_epu32(best.even, valid, best.even, key);
-  }
+  const __m128i last = qword_total(_mm512_sad_epu8(part, qword_rows(prev.data, prev.stride)));
+  const __m128i key = _mm_or_si128(_mm_slli_epi32(last, kPositionBits),
+                                   _mm_cvtsi32_si128((side - 1) * kRowPositions + 2 * radius));
+  best.even = _mm512_mask_min_epu32(best.even, 1, best.even, _mm512_castsi128_si512(key));
 }
 
 // An odd key's position + 1 names its own dx' (see key_rows); the all-ones of lanes never
@@ -286,7 +318,7 @@ BlockMatch search_at(Block prev, Window next, int radius) {
                            _mm512_setr_epi32(0, 1, 2, 3, 2, 3, 4, 5, 1, 2, 3, 4, 3, 4, 5, 6)};
     search_chunk<kRadius>(block, loader, S, c, best);
   }
-  if (column) search_last_column(qword_rows(prev.data, prev.stride, 8), next, S, best);
+  if (column) search_last_column(prev, next, S, best);
   const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(merged_keys(best)));
   _mm256_zeroupper();
   return match_of(key, S);
@@ -312,28 +344,6 @@ BlockMatch search(Block prev, Window next, int radius, OpCounts*) {
 
 constexpr int kPairMaxRadius = 4;  // 2S + 1 <= 9: dx' 0..7 in the lanes, dx' = 8 by the column
 
-// dx' = 8 at S = 4 (the column) of one POI, for dy' = 0..7: qword dy' of the result is the
-// candidate's SAD. The column's window rows 1..16 (8 bytes from window column 9) are two
-// vectors of row qwords; rows r + 1 .. r + 8 (valignq by r) against block row r broadcast give
-// block row r's part of all eight candidates at once, so the eight parts add up in place, with
-// no sum across a vector's qwords. `strip` gets rows 9..16, for the last candidate dy' = 8.
-inline __m512i column_sads(Block prev, Window next, __m512i& strip) {
-  const std::uint8_t* column = next.data + 9;
-  const __m512i top = qword_rows(column + next.stride, next.stride, 8);
-  strip = qword_rows(column + 9 * next.stride, next.stride, 8);
-  auto part = [&](int r, __m512i rows) {
-    const __m128i row =
-        _mm_loadl_epi64(reinterpret_cast<const __m128i*>(prev.data + r * prev.stride));
-    return _mm512_sad_epu8(rows, _mm512_broadcastq_epi64(row));
-  };
-  __m512i sum = part(0, top);
-  [&]<int... R>(std::integer_sequence<int, R...>) {  // valignq's shift is an immediate
-    ((sum = _mm512_add_epi64(sum, part(R + 1, _mm512_alignr_epi64(strip, top, R + 1)))), ...);
-  }
-  (std::make_integer_sequence<int, 7>{});
-  return sum;
-}
-
 // The keys of the column's candidates dy' = 0..7 of a and b in key_rows' pair layout (a in
 // lanes 0 and 2, b in lanes 1 and 3; dy' = i + 4 (lane / 2) in dword i of a lane), and the keys
 // of the last candidates (dx', dy') = (8, 8) of a and b, each one psadbw of its rows 9..16.
@@ -343,9 +353,11 @@ struct PairColumn {
 };
 
 PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b) {
-  __m512i strip_a, strip_b;
-  const __m512i sads_a = column_sads(prev_a, next_a, strip_a);
-  const __m512i sads_b = column_sads(prev_b, next_b, strip_b);
+  // Window column 9, rows 1..8 and 9..16 (the latter also the last candidates' rows).
+  auto column = [](Window w, int row) { return qword_rows(w.data + 9 + row * w.stride, w.stride); };
+  const __m512i strip_a = column(next_a, 9), strip_b = column(next_b, 9);
+  const __m512i sads_a = column_sads(prev_a, column(next_a, 1), strip_a);
+  const __m512i sads_b = column_sads(prev_b, column(next_b, 1), strip_b);
   const __m512i pick = _mm512_setr_epi32(0, 2, 4, 6, 16, 18, 20, 22, 8, 10, 12, 14, 24, 26, 28, 30);
   const __m512i position = _mm512_setr_epi32(8, 72, 136, 200, 8, 72, 136, 200, 264, 328, 392, 456,
                                              264, 328, 392, 456);  // dy' * 64 + 8
@@ -354,8 +366,8 @@ PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b)
       _mm512_slli_epi32(_mm512_permutex2var_epi32(sads_a, pick, sads_b), kPositionBits), position);
   // a's eight row SADs in the low dwords, b's in the high ones (each <= 2,040: no carry).
   __m512i last = _mm512_or_si512(
-      _mm512_sad_epu8(strip_a, qword_rows(prev_a.data, prev_a.stride, 8)),
-      _mm512_slli_epi64(_mm512_sad_epu8(strip_b, qword_rows(prev_b.data, prev_b.stride, 8)), 32));
+      _mm512_sad_epu8(strip_a, qword_rows(prev_a.data, prev_a.stride)),
+      _mm512_slli_epi64(_mm512_sad_epu8(strip_b, qword_rows(prev_b.data, prev_b.stride)), 32));
   last = _mm512_add_epi64(last, _mm512_shuffle_i64x2(last, last, 0x4E));
   last = _mm512_add_epi64(last, _mm512_shuffle_i64x2(last, last, 0xB1));
   const __m128i total = _mm512_castsi512_si128(last);
@@ -384,7 +396,7 @@ void search_pair_at(Block prev_a, Window next_a, Block prev_b, Window next_b, Bl
   }
   const int last_dx = 2 * S < 7 ? 2 * S : 7;
   const PairLoader loader{next_a.data + 1, next_b.data + 1, next_a.stride,
-                          (1ull << (last_dx + 8)) - 1};
+                          (1ull << (last_dx + 8)) - 1, 1 + 16 <= row_bytes(S)};
   // H = [a of dy' | b of dy' | a of dy' + 1 | b of dy' + 1]: lanes 0 + 1 and 2 + 3 of each row.
   const __m512i position =
       _mm512_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6, kRowPositions + 0, kRowPositions + 2,
@@ -431,13 +443,13 @@ void search_pair(Block prev_a, Window next_a, Block prev_b, Window next_b, int r
 // the horizontal averages. The eight direction sums are reduced together: four u16 fields per
 // qword (a field's sum is at most 16,320: no carry), two vectors folded into one, the eight sums
 // then sit as u16 in one xmm.
-void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, std::uint32_t sub[8],
-                OpCounts*) {
+inline __m128i half_pixel_sums(Block prev, const std::uint8_t* around, std::ptrdiff_t stride) {
   const __m512i ones = _mm512_set1_epi8(-1);
   __m512i top[3], low[3];  // column s - 1: rows -1..6, and rows 7..8 in qwords 0..1
   for (int s = 0; s < 3; s += 2) {
-    top[s] = _mm512_xor_si512(qword_rows(around + s, stride, 8), ones);
-    low[s] = _mm512_xor_si512(qword_rows(around + 8 * stride + s, stride, 2), ones);
+    top[s] = _mm512_xor_si512(qword_rows(around + s, stride), ones);
+    low[s] =
+        _mm512_xor_si512(_mm512_zextsi128_si512(two_rows(around + 8 * stride + s, stride)), ones);
   }
   // Columns 0..7 without loading them: columns -1..6 moved down a byte give 0..6, columns 1..8
   // moved up a byte give 1..7; the bytes both give are equal, and a shift brings in zeros, so
@@ -456,7 +468,7 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
   const __m512i p_up = top[1], p_mid = down(top[1], low[1], 0), p_down = down(top[1], low[1], 1);
   const __m512i hl_up = hl_top, hl = down(hl_top, hl_low, 0), hl_down = down(hl_top, hl_low, 1);
   const __m512i hr_up = hr_top, hr = down(hr_top, hr_low, 0), hr_down = down(hr_top, hr_low, 1);
-  const __m512i q = _mm512_xor_si512(qword_rows(prev.data, prev.stride, 8), ones);
+  const __m512i q = _mm512_xor_si512(qword_rows(prev.data, prev.stride), ones);
   const __m512i s[8] = {_mm512_sad_epu8(hr, q),                              // k0 h(c, r)
                         _mm512_sad_epu8(_mm512_avg_epu8(hr, hr_down), q),    // k1 d(c, r)
                         _mm512_sad_epu8(_mm512_avg_epu8(p_mid, p_down), q),  // k2 g(c, r)
@@ -465,16 +477,27 @@ void half_pixel(Block prev, const std::uint8_t* around, std::ptrdiff_t stride, s
                         _mm512_sad_epu8(_mm512_avg_epu8(hl_up, hl), q),      // k5 d(c-1, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(p_up, p_mid), q),    // k6 g(c, r-1)
                         _mm512_sad_epu8(_mm512_avg_epu8(hr_up, hr), q)};     // k7 d(c, r-1)
-  const __m128i sums = sums_of_eight(s);
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(sub), _mm256_cvtepu16_epi32(sums));
+  return sums_of_eight(s);
+}
+
+// Step 3 and its vote without a branch on the SADs: phminposuw gives the smallest of the eight
+// u16 sums and the lowest k that holds it, i.e. the first minimum over k = 0..7, which wins
+// only when strictly below the integer match's SAD (ties keep the match or the lower k, as in
+// ref::select_half_pixel).
+int half_pixel_vote(Block prev, const std::uint8_t* around, std::ptrdiff_t stride,
+                    std::uint32_t sad, std::uint16_t sub[8]) {
+  const __m128i sums = half_pixel_sums(prev, around, stride);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(sub), sums);
+  const auto least = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_minpos_epu16(sums)));
   _mm256_zeroupper();
+  return (least & 0xFFFFu) < sad ? static_cast<int>(least >> 16) : kDirNone;
 }
 
 }  // namespace
 
 const IsaKernel& avx512bw_kernel() {
-  static const IsaKernel k{"avx512bw", row_bytes, feature_sse2, search,
-                           half_pixel, false,     search_pair,  kPairMaxRadius};
+  static const IsaKernel k{"avx512bw", row_bytes,   feature_sse2,   search,         nullptr,
+                           false,      search_pair, kPairMaxRadius, half_pixel_vote};
   return k;
 }
 

@@ -55,7 +55,8 @@ struct IsaKernel {
   // SAD. `counts` is non-null only for kernels that count their 4-byte operations.
   BlockMatch (*search)(Block prev, Window next, int radius, OpCounts* counts);
   // SPEC §3 step 3: sub[k] for k = 0..7. `around` points at P(-1, -1) of the matched block
-  // (window row dy+S, column dx+S); reads stay within P(-1..8, -1..8).
+  // (window row dy+S, column dx+S); reads stay within P(-1..8, -1..8). Null where the ISA has
+  // half_pixel_vote instead.
   void (*half_pixel)(Block prev, const std::uint8_t* around, std::ptrdiff_t stride,
                      std::uint32_t sub[8], OpCounts* counts);
   bool counts_ops;  // true: the kernel charges its USAD8/USADA8/UHADD8 work (the SWAR model)
@@ -65,6 +66,12 @@ struct IsaKernel {
   void (*search_pair)(Block prev_a, Window next_a, Block prev_b, Window next_b, int radius,
                       BlockMatch out[2]) = nullptr;
   int pair_max_radius = 0;
+  // Optional: step 3 with its vote, used instead of half_pixel where given: writes sub[0..7]
+  // (the record's field) and returns the direction 0..8 that ref::select_half_pixel would choose
+  // against the integer match's `sad` (the first k = 0..7 with the smallest sub[k], where that
+  // is strictly below `sad`, else 8), so the driver needs no branch on the SADs.
+  int (*half_pixel_vote)(Block prev, const std::uint8_t* around, std::ptrdiff_t stride,
+                         std::uint32_t sad, std::uint16_t sub[8]) = nullptr;
 };
 
 // The accessor of every row of isas.def compiled for this architecture, cpu::<name>_kernel(),

@@ -175,6 +175,13 @@ void refine_poi(const PoiContext& ctx, PoiRecord& rec) {
   const FrameView& next = ctx.pair.next;
   const Block block{ctx.pair.prev.row(rec.y) + rec.x, ctx.pair.prev.stride};
   const std::uint8_t* around = next.row(rec.y + rec.dy - 1) + (rec.x + rec.dx - 1);
+  if (ctx.kernel.half_pixel_vote) {
+    const int dir = ctx.kernel.half_pixel_vote(block, around, next.stride, rec.sad, rec.sub);
+    rec.dir = static_cast<std::uint8_t>(dir);
+    rec.hx = static_cast<std::int8_t>(2 * rec.dx + ref::kStepX[dir]);
+    rec.hy = static_cast<std::int8_t>(2 * rec.dy + ref::kStepY[dir]);
+    return;
+  }
   std::uint32_t sub[8];
   ctx.kernel.half_pixel(block, around, next.stride, sub, ctx.counts);
   ref::select_half_pixel(rec, ref::Match{rec.dx, rec.dy, rec.sad}, sub);

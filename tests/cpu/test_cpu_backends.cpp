@@ -1,8 +1,12 @@
 // The CPU backends beyond the corpus (which cpu_path_check covers per ISA): the SWAR op counts,
 // thread-count invariance of a batch, the ISA mask and table, and the registry rows. Every
 // comparison with ref-original goes through the harness's exactness checker.
+#include <sys/mman.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cstring>
 
 #include "cpu_kernel.hpp"
 #include "errors.hpp"
@@ -57,7 +61,68 @@ OpCounts reference_counts(std::span<const FramePair> pairs, const Params& p) {
   return counts;
 }
 
+// One pair through every ISA row that can run here, one thread each, against ref-original.
+void check_every_available_isa(const FramePair& pair, const Params& p) {
+  for (const std::string& isa : cpu::compiled_isas()) {
+    if (!cpu::isa_unavailable(isa).empty()) continue;
+    OpCounts c;
+    const Comparison cmp = exact(isa, 1, {&pair, 1}, p, c);
+    INFO(cmp.text());
+    CHECK(cmp.ok());
+  }
+}
+
+// A frame whose every row is followed by a page no one may read: row r's pixels end where page
+// 2r + 1 of its mapping starts, and that page is PROT_NONE (stride two pages). A kernel load that
+// reaches one byte past a row's pixels faults, masked lanes excepted.
+class GuardedFrame {
+ public:
+  GuardedFrame(const std::vector<std::uint8_t>& pixels, int width, int height)
+      : width_(width), height_(height), page_(sysconf(_SC_PAGESIZE)) {
+    REQUIRE(width <= page_);
+    bytes_ = static_cast<std::size_t>(2 * page_) * static_cast<std::size_t>(height);
+    base_ = static_cast<std::uint8_t*>(
+        mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
+    REQUIRE(base_ != MAP_FAILED);
+    for (int r = 0; r < height; ++r) {
+      std::memcpy(row(r), pixels.data() + static_cast<std::ptrdiff_t>(r) * width, width);
+      REQUIRE(mprotect(row(r) + width, page_, PROT_NONE) == 0);
+    }
+  }
+  GuardedFrame(const GuardedFrame&) = delete;
+  GuardedFrame& operator=(const GuardedFrame&) = delete;
+  ~GuardedFrame() { munmap(base_, bytes_); }
+  FrameView view() { return {width_, height_, 2 * page_, row(0)}; }
+
+ private:
+  std::uint8_t* row(int r) { return base_ + (2 * r + 1) * page_ - width_; }
+  int width_, height_;
+  std::ptrdiff_t page_;
+  std::size_t bytes_ = 0;
+  std::uint8_t* base_ = nullptr;
+};
+
 }  // namespace
+
+// Kernels read a window in place wherever their row_bytes(S) stay inside the frame (avx512bw
+// everywhere, with masked or plain 16-byte loads): with a fault after every row, a load past a
+// row's pixels is a crash, not a silent read of the next row (which no record would show).
+TEST_CASE("in-place windows read nothing past a frame row's pixels", "[cpu][window]") {
+  for (int S = 1; S <= 8; ++S) {
+    for (int width = 20 + 2 * S; width < 40 + 2 * S; ++width) {
+      Params p = profile("px4flow-64");
+      p.search_radius = S;
+      p.width = width;
+      p.height = 2 * S + 20;
+      p.blocks = 3;
+      validate(p);
+      const OwnedPair op = random_pair(p.width, p.height, S, static_cast<std::uint64_t>(width));
+      GuardedFrame prev(op.prev, p.width, p.height), next(op.next, p.width, p.height);
+      const FramePair pair{prev.view(), next.view()};
+      check_every_available_isa(pair, p);
+    }
+  }
+}
 
 TEST_CASE("swar counts 91,520 SAD ops per px4flow-64 frame where all 64 POIs pass", "[cpu][swar]") {
   const OwnedPair op = all_pass_pair();
@@ -185,13 +250,7 @@ TEST_CASE("the widest search radius runs on every available ISA", "[cpu][radius]
   validate(p);
   const OwnedPair op = random_pair(80, 80, 31, 5);
   const FramePair pair = op.view();
-  for (const std::string& isa : cpu::compiled_isas()) {
-    if (!cpu::isa_unavailable(isa).empty()) continue;
-    OpCounts c;
-    const Comparison cmp = exact(isa, 1, {&pair, 1}, p, c);
-    INFO(cmp.text());
-    CHECK(cmp.ok());
-  }
+  check_every_available_isa(pair, p);
 }
 
 // kernels/cpu/window_guard.hpp: what the guard around the right-edge window copy reports.
