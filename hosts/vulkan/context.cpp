@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "device_wait.hpp"
+#include "driver_pin.hpp"
 #include "vk_error.hpp"
 
 namespace pxflow::vk {
@@ -136,7 +137,9 @@ void Context::create_instance(bool validation) {
     info.ppEnabledExtensionNames = &extension;
     info.pNext = &messenger;  // also catches messages from vkCreateInstance itself
   }
+  const std::set<std::string> mapped = loaded_objects();
   const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
+  pin_objects_loaded_since(mapped);
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
     fail("no Vulkan driver found (install mesa-vulkan-drivers for lavapipe)");
   check(r, "vkCreateInstance");
