@@ -68,9 +68,7 @@ void select_half_pixel(PoiRecord& rec, const Match& m, const std::uint32_t sub[8
       dir = k;
     }
   }
-  rec.dir = static_cast<std::uint8_t>(dir);
-  rec.hx = static_cast<std::int8_t>(2 * m.bx + kStepX[dir]);
-  rec.hy = static_cast<std::int8_t>(2 * m.by + kStepY[dir]);
+  record_direction(rec, m, dir);
 }
 
 }  // namespace pxflow::ref

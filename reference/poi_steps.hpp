@@ -74,6 +74,13 @@ std::uint8_t direction_value(int k, int c, int r, H&& h, G&& g, D&& d) {
 // strictly smaller, so ties keep the integer match or the lower k. Writes dir, sub, hx, hy.
 void select_half_pixel(PoiRecord& rec, const Match& m, const std::uint32_t sub[8]);
 
+// Step 4 for the vote's direction `dir` (0..7, or kDirNone for the integer match m): dir, hx, hy.
+inline void record_direction(PoiRecord& rec, const Match& m, int dir) {
+  rec.dir = static_cast<std::uint8_t>(dir);
+  rec.hx = static_cast<std::int8_t>(2 * m.bx + kStepX[dir]);
+  rec.hy = static_cast<std::int8_t>(2 * m.by + kStepY[dir]);
+}
+
 // Runs steps 1-4 for every POI of the grid. `half_sads(poi, match, sub)` fills the eight
 // half-pixel SADs of an accepted POI: the only part in which the variants differ.
 template <class HalfSads>

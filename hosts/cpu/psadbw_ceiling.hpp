@@ -11,7 +11,10 @@ namespace pxflow::cpu {
 
 // Runs `rounds` x 12 independent instructions of the given kind and width, each on 64 L1-resident
 // bytes (a 768-byte buffer); returns a value that depends on every result so none is optimised
-// away.
+// away. The rows are reloaded every round (an empty asm makes the pointer opaque), and only they:
+// the twelve chains stay in registers. A "memory" clobber per chain kept them on the stack, a
+// store and a reload per instruction, which measured the store path (2.4x below vdbpsadbw on
+// Zen 4; docs/measurements/bench.md, 2026-12-08).
 std::uint64_t psadbw_xmm(const std::uint8_t* data, std::int64_t rounds);
 std::uint64_t psadbw_ymm(const std::uint8_t* data, std::int64_t rounds);
 std::uint64_t vmpsadbw_ymm(const std::uint8_t* data, std::int64_t rounds);

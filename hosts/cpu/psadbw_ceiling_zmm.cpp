@@ -15,10 +15,7 @@ std::uint64_t chains(const std::uint8_t* data, std::int64_t rounds, Op op) {
   for (int i = 0; i < 12; ++i)
     x[i] = _mm512_loadu_si512(reinterpret_cast<const __m512i*>(data + 64 * i));
   for (std::int64_t n = 0; n < rounds; ++n) {
-    // The rows are reloaded every round (the pointer is opaque to the compiler), and only
-    // they: a "memory" clobber here kept x[] on the stack, a store and a reload per
-    // instruction, and measured the store path instead (2.4x below vdbpsadbw on Zen 4).
-    asm volatile("" : "+r"(data));
+    asm volatile("" : "+r"(data));  // reload the rows, only they (psadbw_ceiling.hpp)
     for (int i = 0; i < 12; ++i) {
       const __m512i row = _mm512_loadu_si512(reinterpret_cast<const __m512i*>(data + 64 * i));
       x[i] = op(x[i], row);

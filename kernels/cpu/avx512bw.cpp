@@ -242,8 +242,9 @@ inline __m512i column_sads(Block prev, __m512i top, __m512i below) {
   return sum;
 }
 
-// The sum of the eight qwords of v (each at most 2,040: the total fits a dword), in dword 0,
-// left in a vector register: a trip through a general register costs the key's latency.
+// The sum of the eight qwords of v in qword 0 (each a psadbw's, <= 2,040: the total fits dword
+// 0; pair_column's hold two such in their dwords, whose totals the 64-bit adds keep apart), left
+// in a vector register: a trip through a general register costs the key's latency.
 inline __m128i qword_total(__m512i v) {
   const __m256i h = _mm256_add_epi64(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
   const __m128i q = _mm_add_epi64(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1));
@@ -365,14 +366,10 @@ PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b)
   c.keys = _mm512_or_si512(
       _mm512_slli_epi32(_mm512_permutex2var_epi32(sads_a, pick, sads_b), kPositionBits), position);
   // a's eight row SADs in the low dwords, b's in the high ones (each <= 2,040: no carry).
-  __m512i last = _mm512_or_si512(
+  const __m512i last = _mm512_or_si512(
       _mm512_sad_epu8(strip_a, qword_rows(prev_a.data, prev_a.stride)),
       _mm512_slli_epi64(_mm512_sad_epu8(strip_b, qword_rows(prev_b.data, prev_b.stride)), 32));
-  last = _mm512_add_epi64(last, _mm512_shuffle_i64x2(last, last, 0x4E));
-  last = _mm512_add_epi64(last, _mm512_shuffle_i64x2(last, last, 0xB1));
-  const __m128i total = _mm512_castsi512_si128(last);
-  const auto both = static_cast<std::uint64_t>(
-      _mm_cvtsi128_si64(_mm_add_epi64(total, _mm_unpackhi_epi64(total, total))));
+  const auto both = static_cast<std::uint64_t>(_mm_cvtsi128_si64(qword_total(last)));
   constexpr std::uint32_t kLast = 8 * kRowPositions + 8;
   c.last_a = static_cast<std::uint32_t>(both & 0xFFFFFFFFu) << kPositionBits | kLast;
   c.last_b = static_cast<std::uint32_t>(both >> 32) << kPositionBits | kLast;

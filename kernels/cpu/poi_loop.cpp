@@ -177,9 +177,7 @@ void refine_poi(const PoiContext& ctx, PoiRecord& rec) {
   const std::uint8_t* around = next.row(rec.y + rec.dy - 1) + (rec.x + rec.dx - 1);
   if (ctx.kernel.half_pixel_vote) {
     const int dir = ctx.kernel.half_pixel_vote(block, around, next.stride, rec.sad, rec.sub);
-    rec.dir = static_cast<std::uint8_t>(dir);
-    rec.hx = static_cast<std::int8_t>(2 * rec.dx + ref::kStepX[dir]);
-    rec.hy = static_cast<std::int8_t>(2 * rec.dy + ref::kStepY[dir]);
+    ref::record_direction(rec, ref::Match{rec.dx, rec.dy, rec.sad}, dir);
     return;
   }
   std::uint32_t sub[8];
