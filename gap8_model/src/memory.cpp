@@ -1,6 +1,5 @@
 #include "gap8/memory.h"
 
-#include <algorithm>
 #include <new>
 #include <type_traits>
 
@@ -51,14 +50,6 @@ bool Memory::Read(uint32_t addr, void* dst, uint32_t size) {
   if (!p) return false;
   std::memcpy(dst, p, size);
   return true;
-}
-
-void Memory::Clear() {
-  std::fill(l1_.begin(), l1_.end(), 0);
-  std::fill(l2_.begin(), l2_.end(), 0);
-  std::memset(static_cast<void*>(l1_code_.get()), 0, GAP8_L1_SIZE / 2 * sizeof(Decoded));
-  std::memset(static_cast<void*>(l2_code_.get()), 0, GAP8_L2_SIZE / 2 * sizeof(Decoded));
-  l1_has_code_ = false;
 }
 
 }  // namespace gap8

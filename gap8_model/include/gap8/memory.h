@@ -63,9 +63,6 @@ class Memory {
   bool Write(uint32_t addr, const void* src, uint32_t size);
   bool Read(uint32_t addr, void* dst, uint32_t size);
 
-  // Back to all-zero memory and an empty decode cache.
-  void Clear();
-
  private:
   void InvalidateCodeSlow(uint32_t addr, uint32_t size);
 
