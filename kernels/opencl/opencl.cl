@@ -10,7 +10,8 @@
 //   flow_group_per_poi (row opencl-group): one work-group per POI; the 8x8 prev block and the
 //                       search window of next are staged in local memory, work-items split
 //                       the candidates.
-//   flow_item_per_poi (row opencl-item): one work-item per POI, everything from global memory.
+//   flow_item_per_poi (row opencl-item): one work-item per POI, everything from global memory
+//                       (from S = 8 on, the window copied into private memory: best_key_lanes).
 //
 // Floor averaging everywhere: hadd(), never rhadd() (rhadd rounds up, SPEC sec. 7).
 
@@ -275,8 +276,82 @@ inline uint best_key_global(const uchar8 block[8], __global const uchar* origin,
   return best;
 }
 
-// One work-item per POI, global memory only. Launched with at least pairs * POIs-per-pair
-// work-items; `total` is that exact count.
+// The search from S = LANES_MIN_RADIUS on: candidates are the lanes of a plain scalar loop, which
+// LLVM's loop vectorizer (PoCL's compiler) runs LANES at a time; PoCL vectorizes no loop of the
+// quad search above (docs/opencl.md, "Why OpenCL on PoCL is a fraction of native"). The window
+// (2S+8)^2 of `next` is copied into private memory with row stride side = 2S+8, so candidate
+// (dx, dy) is lane k = dy * side + dx and reads pixel (c, r) at win[k + r * side + c]: for every
+// pixel the lanes are consecutive bytes, one vector load. Lanes with dx >= 2S+1 are no candidates
+// (7 of every side lanes), so the share of useful lanes grows with S: 81 of 160 at S = 4, 289 of
+// 416 at S = 8, 3969 of 4416 at S = 31; below S = 8 the quad search is as fast or faster
+// (docs/measurements/opencl-kernel.md, 2026-12-08). Those lanes get SAD 0xFFFF, which no 8x8 SAD
+// reaches. SAD = 2 sum(max(p, q)) - sum(p) - sum(q), exact as |p - q| = 2 max(p, q) - p - q, in
+// ushort arithmetic (2 * 64 * 255 < 2^16); sum(p) is the block's, sum(q) the window's 8x8 box sum
+// per lane (column sums, then eight of them). The minimum of (SAD << 13) | k is the lowest SAD,
+// then the first candidate in raster order, since k grows with dy, then dx.
+#define LANES_MIN_RADIUS 8
+#define LANES 32
+#define LANES_MAX_SIDE 70 /* 2 * 31 + 8 */
+#define LANES_MAX 4416    /* lanes at S = 31: 62 * 70 + 63 = 4403, rounded up to LANES */
+#define LANE_BITS 13      /* k < 62 * 70 + 63 < 2^13 */
+// Left to itself LLVM chose 16 lanes, and the kernel took 1.16-1.36x as long (measured). Only
+// for Clang: another compiler may warn about an unknown pragma, and the build test uses -Werror.
+#ifdef __clang__
+#define LANES_VECTORIZE _Pragma("clang loop vectorize_width(32) interleave_count(1)")
+#else
+#define LANES_VECTORIZE
+#endif
+
+__attribute__((always_inline)) inline uint best_key_lanes(const uchar8 block[8],
+                                                          __global const uchar* origin, int width,
+                                                          int radius) {
+  const size_t span = 2 * radius + 1, side = span + 7;
+  const size_t n = (span - 1) * side + span, lanes = (n + LANES - 1) / LANES * LANES;
+  uchar blk[64];
+  ushort block_sum = 0;
+  for (int r = 0; r < 8; ++r) {
+    vstore8(block[r], r, blk);
+    block_sum += (ushort)lane_sum(convert_ushort8(block[r]));
+  }
+  // Lane k reads win[k + 7 * side + 7] at most (its SAD and its column sums): side * side - 1 for
+  // the last candidate, k = n - 1, and below side * side + LANES for every k < lanes. The LANES
+  // bytes after the window are zeros; the lanes that read them are no candidates.
+  uchar win[LANES_MAX_SIDE * LANES_MAX_SIDE + LANES];
+  ushort colsum[LANES_MAX + 7], sad[LANES_MAX];
+  for (size_t r = 0; r < side; ++r)
+    for (size_t c = 0; c < side; ++c) win[r * side + c] = origin[r * width + c];
+  for (size_t c = 0; c < LANES; ++c) win[side * side + c] = 0;
+  for (size_t j = 0; j < lanes + 7; ++j) {
+    ushort s = 0;
+    _Pragma("unroll") for (size_t r = 0; r < 8; ++r) s += win[j + r * side];
+    colsum[j] = s;
+  }
+  for (size_t k0 = 0; k0 < lanes; k0 += LANES) {
+    LANES_VECTORIZE for (size_t l = 0; l < LANES; ++l) {
+      const size_t k = k0 + l;
+      ushort max_sum = 0, box = 0;
+      _Pragma("unroll") for (size_t r = 0; r < 8; ++r) {
+        _Pragma("unroll") for (size_t c = 0; c < 8; ++c) {
+          const uchar p = blk[r * 8 + c], q = win[k + r * side + c];
+          max_sum += (ushort)(p > q ? p : q);
+        }
+      }
+      _Pragma("unroll") for (size_t c = 0; c < 8; ++c) box += colsum[k + c];
+      sad[k] = (ushort)((ushort)(max_sum + max_sum) - (ushort)(box + block_sum));
+    }
+  }
+  for (size_t dy = 0; dy + 1 < span; ++dy)
+    for (size_t dx = span; dx < side; ++dx) sad[dy * side + dx] = 0xFFFF;
+  for (size_t k = n; k < lanes; ++k) sad[k] = 0xFFFF;
+  uint best = 0xFFFFFFFFu;
+  for (size_t k = 0; k < lanes; ++k) best = min(best, ((uint)sad[k] << LANE_BITS) | (uint)k);
+  const uint k = best & ((1u << LANE_BITS) - 1u), dy = k / (uint)side, dx = k % (uint)side;
+  return ((best >> LANE_BITS) << KEY_INDEX_BITS) | (dy * (uint)span + dx);
+}
+
+// One work-item per POI: global memory, and from S = 8 on a private copy of the window
+// (best_key_lanes). Launched with at least pairs * POIs-per-pair work-items; `total` is that exact
+// count.
 __kernel void flow_item_per_poi(__global const uchar* frames, __global uint* records, int width,
                                 int height, int radius, uint feature_threshold, uint sad_threshold,
                                 int4 grid_x, int4 grid_y, uint total) {
@@ -297,8 +372,9 @@ __kernel void flow_item_per_poi(__global const uchar* frames, __global uint* rec
     return;
   }
   const int span = 2 * radius + 1;
-  const uint key =
-      best_key_global(block, next + (poi.y - radius) * width + poi.x - radius, width, radius);
+  __global const uchar* origin = next + (poi.y - radius) * width + poi.x - radius;
+  const uint key = radius >= LANES_MIN_RADIUS ? best_key_lanes(block, origin, width, radius)
+                                              : best_key_global(block, origin, width, radius);
   const uint index = key & KEY_INDEX_MASK, best = key >> KEY_INDEX_BITS;
   const int bx = (int)(index % (uint)span) - radius, by = (int)(index / (uint)span) - radius;
   uint sub[8] = {0, 0, 0, 0, 0, 0, 0, 0};
