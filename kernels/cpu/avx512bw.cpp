@@ -393,15 +393,17 @@ void search_pair_at(Block prev_a, Window next_a, Block prev_b, Window next_b, Bl
                         kRowPositions + 4, kRowPositions + 6, kRowPositions + 0, kRowPositions + 2,
                         kRowPositions + 4, kRowPositions + 6);
   const DxMasks ok = dx_masks(2 * S + 1, 0, 1);
+  // dx' = 8 first: the column's chain of loads, psadbw and reductions then runs beside the rows'
+  // vdbpsadbw instead of after them, where the call's end waited for it.
   Keys best;
-  key_rows<PairLoader, 0x88, 0xDD, S>(block, loader, S, position, ok.even, ok.odd, best);
-  __m512i keys = merged_keys(best);
   __m128i last = _mm_set1_epi32(-1);
-  if (2 * S + 1 > 8) {  // dx' = 8
+  if (2 * S + 1 > 8) {
     const PairColumn column = pair_column(prev_a, next_a, prev_b, next_b);
-    keys = _mm512_min_epu32(keys, column.keys);
+    best.even = column.keys;
     last = column.last;
   }
+  key_rows<PairLoader, 0x88, 0xDD, S>(block, loader, S, position, ok.even, ok.odd, best);
+  const __m512i keys = merged_keys(best);
   // Both POIs' minima at once: a's lanes 0 and 2 folded onto b's 1 and 3, the two 128-bit lanes
   // interleaved by dword (a, b, a, b), then their qwords: dword 0 holds a's key, dword 1 b's.
   const __m256i lanes =
