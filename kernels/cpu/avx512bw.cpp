@@ -89,12 +89,14 @@ inline __m512i row_sad(const __m512i block[8], const __m512i cand[8]) {
 //
 // Two rows dy', dy'+1 are keyed together, without widening: their sums a and b become
 // H = [a.lo + a.hi | b.lo + b.hi] (two vshufi64x2 and one add: u16 lane j holds dx' = j of
-// dy', lane 16 + j dx' = j of dy' + 1), then H << 16 is the key of the even lanes' SADs and
-// H & 0xFFFF0000 that of the odd ones, ORed with the even lane's position and with that + 1
-// (two vectors of positions: constants where S is fixed at compile time).
-// Lanes beyond dx' = 2S (and the missing row after the last, 2S + 1 being odd) are masked out
-// of the vpminud. Per pair of rows this is one shuffle per row instead of the extract and the
-// zero extension each row took, both on the port vdbpsadbw and vpermd need.
+// dy', lane 16 + j dx' = j of dy' + 1). Each u16 lane keeps its least sum so far and that sum's
+// position (a vpcmpuw and two masked moves per pair of rows: a later row replaces it only when
+// strictly smaller, so each lane keeps its first minimum), and only after the last row are the
+// lanes widened to keys: H << 16 for the even lanes, H & 0xFFFF0000 for the odd ones, each
+// ORed with its position. Lanes beyond dx' = 2S (and the missing row after the last, 2S + 1
+// being odd) are masked out of the comparisons. Per pair of rows this is one shuffle per row
+// instead of the extract and the zero extension each row took, both on the port vdbpsadbw and
+// vpermd need, and three operations where keying each row took five.
 constexpr int kPositionBits = 16;
 constexpr int kRowPositions = 64;
 
@@ -122,34 +124,46 @@ template <class Loader, int kLow, int kHigh, int kRadius = 0>
                                             int runtime_radius, __m512i position, __mmask16 even_ok,
                                             __mmask16 odd_ok, Keys& best) {
   const int radius = kRadius > 0 ? kRadius : runtime_radius;
-  const __m512i high = _mm512_set1_epi32(static_cast<int>(0xFFFF0000u));
-  __m512i odd_position = _mm512_add_epi32(position, _mm512_set1_epi32(1));
+  // u16 lane 2i: dword i's even_ok bit, lane 2i + 1: its odd_ok bit.
+  __mmask32 valid = 0;
+  for (int i = 0; i < 16; ++i)
+    valid |= static_cast<__mmask32>((((even_ok >> i) & 1u) << (2 * i)) |
+                                    (((odd_ok >> i) & 1u) << (2 * i + 1)));
+  // Each u16 lane's position (dword i of `position` and that + 1), its least sum and where.
+  __m512i at = _mm512_or_si512(
+      position, _mm512_slli_epi32(_mm512_add_epi32(position, _mm512_set1_epi32(1)), 16));
+  __m512i least = _mm512_set1_epi16(-1), where = _mm512_setzero_si512();
   __m512i cand[8];
   for (int r = 0; r < 8; ++r) cand[r] = loader.row(r + 1);
 #pragma GCC unroll 16
   for (int dy = 0; dy <= 2 * radius; dy += 2) {
     const __m512i a = row_sad(block, cand);
     __m512i b = a;
-    __mmask16 rows = 0xFFFF;
+    __mmask32 rows = 0xFFFFFFFFu;
     if (dy < 2 * radius) {
       slide(cand, loader, dy + 9);
       b = row_sad(block, cand);
     } else {
-      rows = 0x00FF;  // no row dy' + 1 (dwords 8..15 of H belong to it)
+      rows = 0x0000FFFFu;  // no row dy' + 1 (u16 lanes 16..31 of H belong to it)
     }
     const __m512i h =
         _mm512_add_epi16(_mm512_shuffle_i64x2(a, b, kLow), _mm512_shuffle_i64x2(a, b, kHigh));
-    const __m512i even = _mm512_or_si512(_mm512_slli_epi32(h, kPositionBits), position);
-    const __m512i odd = _mm512_ternarylogic_epi32(h, high, odd_position, 0xEA);  // (h & high) | pos
-    best.even =
-        _mm512_mask_min_epu32(best.even, static_cast<__mmask16>(even_ok & rows), best.even, even);
-    best.odd =
-        _mm512_mask_min_epu32(best.odd, static_cast<__mmask16>(odd_ok & rows), best.odd, odd);
+    const __mmask32 less = _mm512_mask_cmplt_epu16_mask(valid & rows, h, least);
+    least = _mm512_mask_mov_epi16(least, less, h);
+    where = _mm512_mask_mov_epi16(where, less, at);
     if (dy + 1 >= 2 * radius) break;
     slide(cand, loader, dy + 10);
-    position = _mm512_add_epi32(position, _mm512_set1_epi32(2 * kRowPositions));
-    odd_position = _mm512_add_epi32(odd_position, _mm512_set1_epi32(2 * kRowPositions));
+    at = _mm512_add_epi16(at, _mm512_set1_epi16(2 * kRowPositions));
   }
+  // Lanes never valid keep sum 0xFFFF, above any SAD: their keys never win.
+  const __m512i low = _mm512_set1_epi32(0xFFFF);
+  const __m512i even = _mm512_ternarylogic_epi32(_mm512_slli_epi32(least, kPositionBits), where,
+                                                 low, 0xF8);  // least << 16 | (where & low)
+  const __m512i odd =
+      _mm512_ternarylogic_epi32(least, _mm512_set1_epi32(static_cast<int>(0xFFFF0000u)),
+                                _mm512_srli_epi32(where, kPositionBits), 0xEA);  // & high | >> 16
+  best.even = _mm512_min_epu32(best.even, even);
+  best.odd = _mm512_min_epu32(best.odd, odd);
 }
 
 // Dwords whose even (odd) u16 holds an existing dx': dword i of each 128-bit lane holds
