@@ -363,6 +363,10 @@ struct PairColumn {
 };
 
 PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b) {
+  // The block rows are loaded again here, not kept from the search's loads: GCC would keep
+  // those 16 xmm for the column and spill them, each store then reloaded on the way to the
+  // block's vpermt2d. An empty asm hides that the pointers are the same.
+  asm("" : "+r"(prev_a.data), "+r"(prev_b.data));
   // Window column 9, rows 1..8 and 9..16 (the latter also the last candidates' rows).
   auto column = [](Window w, int row) { return qword_rows(w.data + 9 + row * w.stride, w.stride); };
   const __m512i strip_a = column(next_a, 9), strip_b = column(next_b, 9);
