@@ -12,6 +12,7 @@
 // slide down the window one row per dy.
 #include <immintrin.h>
 
+#include <cstddef>
 #include <utility>
 
 #include "cpu_kernel.hpp"
@@ -307,6 +308,20 @@ inline BlockMatch match_of(std::uint32_t key, int radius) {
           static_cast<int>(position / kRowPositions) - radius, key >> kPositionBits};
 }
 
+// match_of for a BlockMatch returned in registers (rax = dx | dy << 32, rdx = sad): dx and dy put
+// together in one 64-bit value first. From the struct GCC 12 built rax by two 32-bit stores and
+// a 64-bit load, a store forward that fails, at the end of every search_at call.
+inline BlockMatch returned_match(std::uint32_t key, int radius) {
+  const BlockMatch m = match_of(key, radius);
+  const std::uint64_t dx_dy = static_cast<std::uint32_t>(m.dx) |
+                              static_cast<std::uint64_t>(static_cast<std::uint32_t>(m.dy)) << 32;
+  BlockMatch r;
+  static_assert(offsetof(BlockMatch, dy) == sizeof(int));
+  __builtin_memcpy(static_cast<void*>(&r), &dx_dy, sizeof dx_dy);
+  r.sad = m.sad;
+  return r;
+}
+
 // kRadius: S fixed at compile time (see key_rows), or 0 for any S.
 template <int kRadius>
 BlockMatch search_at(Block prev, Window next, int radius) {
@@ -330,7 +345,7 @@ BlockMatch search_at(Block prev, Window next, int radius) {
   if (column) search_last_column(prev, next, S, best);
   const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(merged_keys(best)));
   _mm256_zeroupper();
-  return match_of(key, S);
+  return returned_match(key, S);
 }
 
 // The radii of the profiles and of the bench's default sweep get a search compiled for them.
