@@ -273,6 +273,7 @@ inline __m128i qword_total(__m512i v) {
 // 16 + 8m, window column 2S + 1), two such vectors keyed at once; the last candidate, dy' = 16k,
 // is one psadbw of its eight rows (part 2k) against the block's rows, summed across the vector.
 void search_last_column(Block prev, Window next, int radius, Keys& best) {
+  asm("" : "+r"(prev.data));  // the block rows loaded again, as in pair_column
   const int side = 2 * radius + 1;
   const int halves = side / 8;  // 2k vectors of eight candidates, then dy' = 16k
   const std::uint8_t* strip = next.data + 1 + 2 * radius;
