@@ -125,11 +125,12 @@ template <class Loader, int kLow, int kHigh, int kRadius = 0>
                                             int runtime_radius, __m512i position, __mmask16 even_ok,
                                             __mmask16 odd_ok, Keys& best) {
   const int radius = kRadius > 0 ? kRadius : runtime_radius;
-  // u16 lane 2i: dword i's even_ok bit, lane 2i + 1: its odd_ok bit.
+  // u16 lane 2i: dword i's even_ok bit, lane 2i + 1: its odd_ok bit (shifted as 64-bit values,
+  // so that no shift count reaches its operand's width).
   __mmask32 valid = 0;
   for (int i = 0; i < 16; ++i)
-    valid |= static_cast<__mmask32>((((even_ok >> i) & 1u) << (2 * i)) |
-                                    (((odd_ok >> i) & 1u) << (2 * i + 1)));
+    valid |= static_cast<__mmask32>((std::uint64_t{(even_ok >> i) & 1u} << (2 * i)) |
+                                    (std::uint64_t{(odd_ok >> i) & 1u} << (2 * i + 1)));
   // Each u16 lane's position (dword i of `position` and that + 1), its least sum and where.
   __m512i at = _mm512_or_si512(
       position, _mm512_slli_epi32(_mm512_add_epi32(position, _mm512_set1_epi32(1)), 16));
