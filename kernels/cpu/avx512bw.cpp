@@ -272,8 +272,10 @@ inline __m128i qword_total(__m512i v) {
 // spend as many vdbpsadbw as a full one. Instead the column (dx' = 2S) is column_sads per eight
 // candidates, dy' = 8m .. 8m + 7 from the strip's parts m and m + 1 (window rows 1 + 8m ..
 // 16 + 8m, window column 2S + 1), two such vectors keyed at once; the last candidate, dy' = 16k,
-// is one psadbw of its eight rows (part 2k) against the block's rows, summed across the vector.
-void search_last_column(Block prev, Window next, int radius, Keys& best) {
+// is one psadbw of its eight rows (part 2k) against the block's rows, summed across the vector:
+// its key is returned (in every dword of an xmm), for the caller's reduction to take after its
+// first steps, so that this chain's end does not wait for them.
+__m128i search_last_column(Block prev, Window next, int radius, Keys& best) {
   asm("" : "+r"(prev.data));  // the block rows loaded again, as in pair_column
   const int side = 2 * radius + 1;
   const int halves = side / 8;  // 2k vectors of eight candidates, then dy' = 16k
@@ -299,7 +301,7 @@ void search_last_column(Block prev, Window next, int radius, Keys& best) {
   const __m128i last = qword_total(_mm512_sad_epu8(part, qword_rows(prev.data, prev.stride)));
   const __m128i key = _mm_or_si128(_mm_slli_epi32(last, kPositionBits),
                                    _mm_cvtsi32_si128((side - 1) * kRowPositions + 2 * radius));
-  best.even = _mm512_mask_min_epu32(best.even, 1, best.even, _mm512_castsi128_si512(key));
+  return _mm_shuffle_epi32(key, 0);
 }
 
 inline __m512i merged_keys(const Keys& best) { return _mm512_min_epu32(best.even, best.odd); }
@@ -344,8 +346,16 @@ BlockMatch search_at(Block prev, Window next, int radius) {
                            _mm512_setr_epi32(0, 1, 2, 3, 2, 3, 4, 5, 1, 2, 3, 4, 3, 4, 5, 6)};
     search_chunk<kRadius>(block, loader, S, c, best);
   }
-  if (column) search_last_column(prev, next, S, best);
-  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(merged_keys(best)));
+  __m128i last = _mm_set1_epi32(-1);
+  if (column) last = search_last_column(prev, next, S, best);
+  const __m512i keys = merged_keys(best);
+  const __m256i half =
+      _mm256_min_epu32(_mm512_castsi512_si256(keys), _mm512_extracti64x4_epi64(keys, 1));
+  __m128i q = _mm_min_epu32(
+      _mm_min_epu32(_mm256_castsi256_si128(half), _mm256_extracti128_si256(half, 1)), last);
+  q = _mm_min_epu32(q, _mm_shuffle_epi32(q, _MM_SHUFFLE(1, 0, 3, 2)));
+  q = _mm_min_epu32(q, _mm_shuffle_epi32(q, _MM_SHUFFLE(2, 3, 0, 1)));
+  const auto key = static_cast<std::uint32_t>(_mm_cvtsi128_si32(q));
   _mm256_zeroupper();
   return returned_match(key, S);
 }
