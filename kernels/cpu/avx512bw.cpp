@@ -12,6 +12,7 @@
 // slide down the window one row per dy.
 #include <immintrin.h>
 
+#include <cstddef>
 #include <utility>
 
 #include "cpu_kernel.hpp"
@@ -89,12 +90,14 @@ inline __m512i row_sad(const __m512i block[8], const __m512i cand[8]) {
 //
 // Two rows dy', dy'+1 are keyed together, without widening: their sums a and b become
 // H = [a.lo + a.hi | b.lo + b.hi] (two vshufi64x2 and one add: u16 lane j holds dx' = j of
-// dy', lane 16 + j dx' = j of dy' + 1), then H << 16 is the key of the even lanes' SADs and
-// H & 0xFFFF0000 that of the odd ones, each ORed with the even lane's position. An odd key
-// therefore names dx' one too small: its vector gets + 1 at the end, before the two are merged.
-// Lanes beyond dx' = 2S (and the missing row after the last, 2S + 1 being odd) are masked out
-// of the vpminud. Per pair of rows this is one shuffle per row instead of the extract and the
-// zero extension each row took, both on the port vdbpsadbw and vpermd need.
+// dy', lane 16 + j dx' = j of dy' + 1). Each u16 lane keeps its least sum so far and that sum's
+// position (a vpcmpuw and two masked moves per pair of rows: a later row replaces it only when
+// strictly smaller, so each lane keeps its first minimum), and only after the last row are the
+// lanes widened to keys: H << 16 for the even lanes, H & 0xFFFF0000 for the odd ones, each
+// ORed with its position. Lanes beyond dx' = 2S (and the missing row after the last, 2S + 1
+// being odd) are masked out of the comparisons. Per pair of rows this is one shuffle per row
+// instead of the extract and the zero extension each row took, both on the port vdbpsadbw and
+// vpermd need, and three operations where keying each row took five.
 constexpr int kPositionBits = 16;
 constexpr int kRowPositions = 64;
 
@@ -122,32 +125,47 @@ template <class Loader, int kLow, int kHigh, int kRadius = 0>
                                             int runtime_radius, __m512i position, __mmask16 even_ok,
                                             __mmask16 odd_ok, Keys& best) {
   const int radius = kRadius > 0 ? kRadius : runtime_radius;
-  const __m512i high = _mm512_set1_epi32(static_cast<int>(0xFFFF0000u));
+  // u16 lane 2i: dword i's even_ok bit, lane 2i + 1: its odd_ok bit (shifted as 64-bit values,
+  // so that no shift count reaches its operand's width).
+  __mmask32 valid = 0;
+  for (int i = 0; i < 16; ++i)
+    valid |= static_cast<__mmask32>((std::uint64_t{(even_ok >> i) & 1u} << (2 * i)) |
+                                    (std::uint64_t{(odd_ok >> i) & 1u} << (2 * i + 1)));
+  // Each u16 lane's position (dword i of `position` and that + 1), its least sum and where.
+  __m512i at = _mm512_or_si512(
+      position, _mm512_slli_epi32(_mm512_add_epi32(position, _mm512_set1_epi32(1)), 16));
+  __m512i least = _mm512_set1_epi16(-1), where = _mm512_setzero_si512();
   __m512i cand[8];
   for (int r = 0; r < 8; ++r) cand[r] = loader.row(r + 1);
 #pragma GCC unroll 16
   for (int dy = 0; dy <= 2 * radius; dy += 2) {
     const __m512i a = row_sad(block, cand);
     __m512i b = a;
-    __mmask16 rows = 0xFFFF;
+    __mmask32 rows = 0xFFFFFFFFu;
     if (dy < 2 * radius) {
       slide(cand, loader, dy + 9);
       b = row_sad(block, cand);
     } else {
-      rows = 0x00FF;  // no row dy' + 1 (dwords 8..15 of H belong to it)
+      rows = 0x0000FFFFu;  // no row dy' + 1 (u16 lanes 16..31 of H belong to it)
     }
     const __m512i h =
         _mm512_add_epi16(_mm512_shuffle_i64x2(a, b, kLow), _mm512_shuffle_i64x2(a, b, kHigh));
-    const __m512i even = _mm512_or_si512(_mm512_slli_epi32(h, kPositionBits), position);
-    const __m512i odd = _mm512_ternarylogic_epi32(h, high, position, 0xEA);  // (h & high) | pos
-    best.even =
-        _mm512_mask_min_epu32(best.even, static_cast<__mmask16>(even_ok & rows), best.even, even);
-    best.odd =
-        _mm512_mask_min_epu32(best.odd, static_cast<__mmask16>(odd_ok & rows), best.odd, odd);
+    const __mmask32 less = _mm512_mask_cmplt_epu16_mask(valid & rows, h, least);
+    least = _mm512_mask_mov_epi16(least, less, h);
+    where = _mm512_mask_mov_epi16(where, less, at);
     if (dy + 1 >= 2 * radius) break;
     slide(cand, loader, dy + 10);
-    position = _mm512_add_epi32(position, _mm512_set1_epi32(2 * kRowPositions));
+    at = _mm512_add_epi16(at, _mm512_set1_epi16(2 * kRowPositions));
   }
+  // Lanes never valid keep sum 0xFFFF, above any SAD: their keys never win.
+  const __m512i low = _mm512_set1_epi32(0xFFFF);
+  const __m512i even = _mm512_ternarylogic_epi32(_mm512_slli_epi32(least, kPositionBits), where,
+                                                 low, 0xF8);  // least << 16 | (where & low)
+  const __m512i odd =
+      _mm512_ternarylogic_epi32(least, _mm512_set1_epi32(static_cast<int>(0xFFFF0000u)),
+                                _mm512_srli_epi32(where, kPositionBits), 0xEA);  // & high | >> 16
+  best.even = _mm512_min_epu32(best.even, even);
+  best.odd = _mm512_min_epu32(best.odd, odd);
 }
 
 // Dwords whose even (odd) u16 holds an existing dx': dword i of each 128-bit lane holds
@@ -201,26 +219,25 @@ inline __m512i qword_rows(const std::uint8_t* p, std::ptrdiff_t stride) {
   return _mm512_inserti64x4(_mm512_castsi256_si512(lo), hi, 1);
 }
 
-// The eight totals of eight vectors of eight qword SADs (psadbw results, each total <= 16,320),
-// as the u16 lanes of one xmm: four vectors share a vector as u16 fields of each qword (no
-// carry between fields), and the two such vectors are folded together lane by lane.
+// The eight totals of eight vectors of eight qword SADs (psadbw results, each qword <= 2,040,
+// a total <= 16,320), as the u16 lanes of one xmm. vpackusdw twice packs four vectors into one
+// (no saturation: every dword is below 65,536): lane i of the result holds, for each of the
+// four, the two u16 sums of its qwords 2i and 2i + 1. Three packs per four vectors where
+// shifts and ORs took five; the lanes are then folded in 256-bit steps and each direction's
+// two u16 halves added by vpmaddwd.
 inline __m128i sums_of_eight(const __m512i d[8]) {
-  auto pack = [](const __m512i* q) {  // q[k]'s qword sums in u16 field k of each qword
-    return _mm512_or_si512(
-        _mm512_or_si512(q[0], _mm512_slli_epi64(q[1], 16)),
-        _mm512_or_si512(_mm512_slli_epi64(q[2], 32), _mm512_slli_epi64(q[3], 48)));
+  auto pack = [](const __m512i* q) {  // lane i: q[0]'s two sums, then q[1]'s, q[2]'s, q[3]'s
+    return _mm512_packus_epi32(_mm512_packus_epi32(q[0], q[1]), _mm512_packus_epi32(q[2], q[3]));
   };
   const __m512i p0 = pack(d), p1 = pack(d + 4);
-  // Each folded to 256 bits, then to one lane each (p0's in lane 0, p1's in lane 1), then the
-  // two qwords of each lane added: 256-bit steps, which Zen 4 does in one pass.
   auto half = [](__m512i v) {
-    return _mm256_add_epi64(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
+    return _mm256_add_epi16(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
   };
   const __m256i a0 = half(p0), a1 = half(p1);
-  const __m256i f = _mm256_add_epi64(_mm256_permute2x128_si256(a0, a1, 0x20),
+  const __m256i f = _mm256_add_epi16(_mm256_permute2x128_si256(a0, a1, 0x20),
                                      _mm256_permute2x128_si256(a0, a1, 0x31));
-  const __m256i g = _mm256_add_epi64(f, _mm256_shuffle_epi32(f, _MM_PERM_BADC));
-  return _mm_unpacklo_epi64(_mm256_castsi256_si128(g), _mm256_extracti128_si256(g, 1));
+  const __m256i g = _mm256_madd_epi16(f, _mm256_set1_epi16(1));  // dword k: direction k's total
+  return _mm_packus_epi32(_mm256_castsi256_si128(g), _mm256_extracti128_si256(g, 1));
 }
 
 // One column of one POI's window (8 bytes per row) against the block, for eight candidates
@@ -255,8 +272,11 @@ inline __m128i qword_total(__m512i v) {
 // spend as many vdbpsadbw as a full one. Instead the column (dx' = 2S) is column_sads per eight
 // candidates, dy' = 8m .. 8m + 7 from the strip's parts m and m + 1 (window rows 1 + 8m ..
 // 16 + 8m, window column 2S + 1), two such vectors keyed at once; the last candidate, dy' = 16k,
-// is one psadbw of its eight rows (part 2k) against the block's rows, summed across the vector.
-void search_last_column(Block prev, Window next, int radius, Keys& best) {
+// is one psadbw of its eight rows (part 2k) against the block's rows, summed across the vector:
+// its key is returned (in every dword of an xmm), for the caller's reduction to take after its
+// first steps, so that this chain's end does not wait for them.
+__m128i search_last_column(Block prev, Window next, int radius, Keys& best) {
+  asm("" : "+r"(prev.data));  // the block rows loaded again, as in pair_column
   const int side = 2 * radius + 1;
   const int halves = side / 8;  // 2k vectors of eight candidates, then dy' = 16k
   const std::uint8_t* strip = next.data + 1 + 2 * radius;
@@ -281,22 +301,29 @@ void search_last_column(Block prev, Window next, int radius, Keys& best) {
   const __m128i last = qword_total(_mm512_sad_epu8(part, qword_rows(prev.data, prev.stride)));
   const __m128i key = _mm_or_si128(_mm_slli_epi32(last, kPositionBits),
                                    _mm_cvtsi32_si128((side - 1) * kRowPositions + 2 * radius));
-  best.even = _mm512_mask_min_epu32(best.even, 1, best.even, _mm512_castsi128_si512(key));
+  return _mm_shuffle_epi32(key, 0);
 }
 
-// An odd key's position + 1 names its own dx' (see key_rows); the all-ones of lanes never
-// replaced stay as they are.
-inline __m512i merged_keys(const Keys& best) {
-  const __m512i none = _mm512_set1_epi32(-1);
-  const __m512i odd = _mm512_mask_add_epi32(best.odd, _mm512_cmpneq_epu32_mask(best.odd, none),
-                                            best.odd, _mm512_set1_epi32(1));
-  return _mm512_min_epu32(best.even, odd);
-}
+inline __m512i merged_keys(const Keys& best) { return _mm512_min_epu32(best.even, best.odd); }
 
 inline BlockMatch match_of(std::uint32_t key, int radius) {
   const std::uint32_t position = key & ((1u << kPositionBits) - 1);
   return {static_cast<int>(position % kRowPositions) - radius,
           static_cast<int>(position / kRowPositions) - radius, key >> kPositionBits};
+}
+
+// match_of for a BlockMatch returned in registers (rax = dx | dy << 32, rdx = sad): dx and dy put
+// together in one 64-bit value first. From the struct GCC 12 built rax by two 32-bit stores and
+// a 64-bit load, a store forward that fails, at the end of every search_at call.
+inline BlockMatch returned_match(std::uint32_t key, int radius) {
+  const BlockMatch m = match_of(key, radius);
+  const std::uint64_t dx_dy = static_cast<std::uint32_t>(m.dx) |
+                              static_cast<std::uint64_t>(static_cast<std::uint32_t>(m.dy)) << 32;
+  BlockMatch r;
+  static_assert(offsetof(BlockMatch, dy) == sizeof(int));
+  __builtin_memcpy(static_cast<void*>(&r), &dx_dy, sizeof dx_dy);
+  r.sad = m.sad;
+  return r;
 }
 
 // kRadius: S fixed at compile time (see key_rows), or 0 for any S.
@@ -319,10 +346,18 @@ BlockMatch search_at(Block prev, Window next, int radius) {
                            _mm512_setr_epi32(0, 1, 2, 3, 2, 3, 4, 5, 1, 2, 3, 4, 3, 4, 5, 6)};
     search_chunk<kRadius>(block, loader, S, c, best);
   }
-  if (column) search_last_column(prev, next, S, best);
-  const auto key = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(merged_keys(best)));
+  __m128i last = _mm_set1_epi32(-1);
+  if (column) last = search_last_column(prev, next, S, best);
+  const __m512i keys = merged_keys(best);
+  const __m256i half =
+      _mm256_min_epu32(_mm512_castsi512_si256(keys), _mm512_extracti64x4_epi64(keys, 1));
+  __m128i q = _mm_min_epu32(
+      _mm_min_epu32(_mm256_castsi256_si128(half), _mm256_extracti128_si256(half, 1)), last);
+  q = _mm_min_epu32(q, _mm_shuffle_epi32(q, _MM_SHUFFLE(1, 0, 3, 2)));
+  q = _mm_min_epu32(q, _mm_shuffle_epi32(q, _MM_SHUFFLE(2, 3, 0, 1)));
+  const auto key = static_cast<std::uint32_t>(_mm_cvtsi128_si32(q));
   _mm256_zeroupper();
-  return match_of(key, S);
+  return returned_match(key, S);
 }
 
 // The radii of the profiles and of the bench's default sweep get a search compiled for them.
@@ -347,13 +382,18 @@ constexpr int kPairMaxRadius = 4;  // 2S + 1 <= 9: dx' 0..7 in the lanes, dx' = 
 
 // The keys of the column's candidates dy' = 0..7 of a and b in key_rows' pair layout (a in
 // lanes 0 and 2, b in lanes 1 and 3; dy' = i + 4 (lane / 2) in dword i of a lane), and the keys
-// of the last candidates (dx', dy') = (8, 8) of a and b, each one psadbw of its rows 9..16.
+// of the last candidates (dx', dy') = (8, 8) of a and b, each one psadbw of its rows 9..16, in
+// dwords 0 (a) and 1 (b) of an xmm.
 struct PairColumn {
   __m512i keys;
-  std::uint32_t last_a, last_b;
+  __m128i last;
 };
 
 PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b) {
+  // The block rows are loaded again here, not kept from the search's loads: GCC would keep
+  // those 16 xmm for the column and spill them, each store then reloaded on the way to the
+  // block's vpermt2d. An empty asm hides that the pointers are the same.
+  asm("" : "+r"(prev_a.data), "+r"(prev_b.data));
   // Window column 9, rows 1..8 and 9..16 (the latter also the last candidates' rows).
   auto column = [](Window w, int row) { return qword_rows(w.data + 9 + row * w.stride, w.stride); };
   const __m512i strip_a = column(next_a, 9), strip_b = column(next_b, 9);
@@ -369,10 +409,8 @@ PairColumn pair_column(Block prev_a, Window next_a, Block prev_b, Window next_b)
   const __m512i last = _mm512_or_si512(
       _mm512_sad_epu8(strip_a, qword_rows(prev_a.data, prev_a.stride)),
       _mm512_slli_epi64(_mm512_sad_epu8(strip_b, qword_rows(prev_b.data, prev_b.stride)), 32));
-  const auto both = static_cast<std::uint64_t>(_mm_cvtsi128_si64(qword_total(last)));
-  constexpr std::uint32_t kLast = 8 * kRowPositions + 8;
-  c.last_a = static_cast<std::uint32_t>(both & 0xFFFFFFFFu) << kPositionBits | kLast;
-  c.last_b = static_cast<std::uint32_t>(both >> 32) << kPositionBits | kLast;
+  c.last = _mm_or_si128(_mm_slli_epi32(qword_total(last), kPositionBits),
+                        _mm_set1_epi32(8 * kRowPositions + 8));
   return c;
 }
 
@@ -400,23 +438,28 @@ void search_pair_at(Block prev_a, Window next_a, Block prev_b, Window next_b, Bl
                         kRowPositions + 4, kRowPositions + 6, kRowPositions + 0, kRowPositions + 2,
                         kRowPositions + 4, kRowPositions + 6);
   const DxMasks ok = dx_masks(2 * S + 1, 0, 1);
+  // dx' = 8 first: the column's chain of loads, psadbw and reductions then runs beside the rows'
+  // vdbpsadbw instead of after them, where the call's end waited for it.
   Keys best;
-  key_rows<PairLoader, 0x88, 0xDD, S>(block, loader, S, position, ok.even, ok.odd, best);
-  __m512i keys = merged_keys(best);
-  std::uint32_t last_a = 0xFFFFFFFFu, last_b = 0xFFFFFFFFu;
-  if (2 * S + 1 > 8) {  // dx' = 8
+  __m128i last = _mm_set1_epi32(-1);
+  if (2 * S + 1 > 8) {
     const PairColumn column = pair_column(prev_a, next_a, prev_b, next_b);
-    keys = _mm512_min_epu32(keys, column.keys);
-    last_a = column.last_a;
-    last_b = column.last_b;
+    best.even = column.keys;
+    last = column.last;
   }
-  auto key_a = static_cast<std::uint32_t>(_mm512_mask_reduce_min_epu32(0x0F0F, keys));
-  auto key_b = static_cast<std::uint32_t>(_mm512_mask_reduce_min_epu32(0xF0F0, keys));
-  key_a = last_a < key_a ? last_a : key_a;
-  key_b = last_b < key_b ? last_b : key_b;
+  key_rows<PairLoader, 0x88, 0xDD, S>(block, loader, S, position, ok.even, ok.odd, best);
+  const __m512i keys = merged_keys(best);
+  // Both POIs' minima at once: a's lanes 0 and 2 folded onto b's 1 and 3, the two 128-bit lanes
+  // interleaved by dword (a, b, a, b), then their qwords: dword 0 holds a's key, dword 1 b's.
+  const __m256i lanes =
+      _mm256_min_epu32(_mm512_castsi512_si256(keys), _mm512_extracti64x4_epi64(keys, 1));
+  const __m128i lo = _mm256_castsi256_si128(lanes), hi = _mm256_extracti128_si256(lanes, 1);
+  __m128i ab = _mm_min_epu32(_mm_unpacklo_epi32(lo, hi), _mm_unpackhi_epi32(lo, hi));
+  ab = _mm_min_epu32(_mm_min_epu32(ab, _mm_shuffle_epi32(ab, _MM_SHUFFLE(1, 0, 3, 2))), last);
+  const auto both = static_cast<std::uint64_t>(_mm_cvtsi128_si64(ab));
   _mm256_zeroupper();
-  out[0] = match_of(key_a, S);
-  out[1] = match_of(key_b, S);
+  out[0] = match_of(static_cast<std::uint32_t>(both), S);
+  out[1] = match_of(static_cast<std::uint32_t>(both >> 32), S);
 }
 
 void search_pair(Block prev_a, Window next_a, Block prev_b, Window next_b, int radius,
@@ -437,31 +480,31 @@ void search_pair(Block prev_a, Window next_a, Block prev_b, Window next_b, int r
 // direction's eight row SADs at once. For each column offset u = -1, 0, +1 the rows -1..6 and
 // 7..8 are loaded once, complemented so that pavgb floors (see x86_half_pixel.hpp), and the
 // rows starting at 0 and at +1 are the same data moved down one or two qwords (valignq), after
-// the horizontal averages. The eight direction sums are reduced together: four u16 fields per
-// qword (a field's sum is at most 16,320: no carry), two vectors folded into one, the eight sums
-// then sit as u16 in one xmm.
-inline __m128i half_pixel_sums(Block prev, const std::uint8_t* around, std::ptrdiff_t stride) {
+// the horizontal averages. The eight direction sums are reduced together (sums_of_eight) into
+// the u16 lanes of one xmm.
+[[gnu::always_inline]] inline __m128i half_pixel_sums(Block prev, const std::uint8_t* around,
+                                                      std::ptrdiff_t stride) {
   const __m512i ones = _mm512_set1_epi8(-1);
-  __m512i top[3], low[3];  // column s - 1: rows -1..6, and rows 7..8 in qwords 0..1
+  // Column s - 1: rows -1..6 in a zmm, rows 7..8 in an xmm (its two rows' work in 128-bit
+  // operations, which cost Zen 4 half of a 512-bit one).
+  __m512i top[3];
+  __m128i low[3];
   for (int s = 0; s < 3; s += 2) {
     top[s] = _mm512_xor_si512(qword_rows(around + s, stride), ones);
-    low[s] =
-        _mm512_xor_si512(_mm512_zextsi128_si512(two_rows(around + 8 * stride + s, stride)), ones);
+    low[s] = _mm_xor_si128(two_rows(around + 8 * stride + s, stride), _mm512_castsi512_si128(ones));
   }
   // Columns 0..7 without loading them: columns -1..6 moved down a byte give 0..6, columns 1..8
   // moved up a byte give 1..7; the bytes both give are equal, and a shift brings in zeros, so
   // an OR of the two is columns 0..7 (complemented like the rest).
-  auto middle = [](__m512i left, __m512i right) {
-    return _mm512_or_si512(_mm512_srli_epi64(left, 8), _mm512_slli_epi64(right, 8));
-  };
-  top[1] = middle(top[0], top[2]);
-  low[1] = middle(low[0], low[2]);
+  top[1] = _mm512_or_si512(_mm512_srli_epi64(top[0], 8), _mm512_slli_epi64(top[2], 8));
+  low[1] = _mm_or_si128(_mm_srli_epi64(low[0], 8), _mm_slli_epi64(low[2], 8));
   // Rows r + t (r = 0..7) of a plane given as its rows -1..6 and 7..8.
-  auto down = [](__m512i lo8, __m512i hi2, int t) {
-    return t == 0 ? _mm512_alignr_epi64(hi2, lo8, 1) : _mm512_alignr_epi64(hi2, lo8, 2);
+  auto down = [](__m512i lo8, __m128i hi2, int t) {
+    const __m512i hi = _mm512_zextsi128_si512(hi2);
+    return t == 0 ? _mm512_alignr_epi64(hi, lo8, 1) : _mm512_alignr_epi64(hi, lo8, 2);
   };
-  const __m512i hl_top = _mm512_avg_epu8(top[0], top[1]), hl_low = _mm512_avg_epu8(low[0], low[1]);
-  const __m512i hr_top = _mm512_avg_epu8(top[1], top[2]), hr_low = _mm512_avg_epu8(low[1], low[2]);
+  const __m512i hl_top = _mm512_avg_epu8(top[0], top[1]), hr_top = _mm512_avg_epu8(top[1], top[2]);
+  const __m128i hl_low = _mm_avg_epu8(low[0], low[1]), hr_low = _mm_avg_epu8(low[1], low[2]);
   const __m512i p_up = top[1], p_mid = down(top[1], low[1], 0), p_down = down(top[1], low[1], 1);
   const __m512i hl_up = hl_top, hl = down(hl_top, hl_low, 0), hl_down = down(hl_top, hl_low, 1);
   const __m512i hr_up = hr_top, hr = down(hr_top, hr_low, 0), hr_down = down(hr_top, hr_low, 1);

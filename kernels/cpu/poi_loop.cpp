@@ -175,9 +175,9 @@ void refine_poi(const PoiContext& ctx, PoiRecord& rec) {
   const FrameView& next = ctx.pair.next;
   const Block block{ctx.pair.prev.row(rec.y) + rec.x, ctx.pair.prev.stride};
   const std::uint8_t* around = next.row(rec.y + rec.dy - 1) + (rec.x + rec.dx - 1);
-  if (ctx.kernel.half_pixel_vote) {
-    const int dir = ctx.kernel.half_pixel_vote(block, around, next.stride, rec.sad, rec.sub);
-    ref::record_direction(rec, ref::Match{rec.dx, rec.dy, rec.sad}, dir);
+  if (ctx.kernel.half_pixel_vote) {  // dir only: hx and hy after the row (run_flow_rows)
+    rec.dir = static_cast<std::uint8_t>(
+        ctx.kernel.half_pixel_vote(block, around, next.stride, rec.sad, rec.sub));
     return;
   }
   std::uint32_t sub[8];
@@ -305,6 +305,13 @@ void run_flow_rows(const IsaKernel& k, const FramePair& pair, const Params& p, i
     search.end_row();
     for (std::size_t n = first; n < first + per_row; ++n)
       if (out[n].status == kAccepted) refine_poi(ctx, out[n]);
+    // The half-pixel offsets of half_pixel_vote's directions, after the whole row's steps: each
+    // step is a long chain of latencies, and a write after each call that waits for its result
+    // keeps the next call's work out of the core's window.
+    if (ctx.kernel.half_pixel_vote)
+      for (std::size_t n = first; n < first + per_row; ++n)
+        if (out[n].status == kAccepted)
+          ref::record_direction(out[n], ref::Match{out[n].dx, out[n].dy, out[n].sad}, out[n].dir);
   }
 }
 

@@ -289,3 +289,28 @@ TEST_CASE("the POI walk refuses a kernel whose row_bytes is short of the window"
   CHECK_THROWS_WITH(cpu::run_flow(short_rows, pair, p, out, counts),
                     Catch::Contains("row_bytes = 17 for a window of 18 columns"));
 }
+
+// A band of grid rows (one worker's share of a frame) writes its own rows' records only: the
+// records after it are another worker's, or past the end of the batch's records. Every record is
+// stale and "accepted" before the call, with hx and hy that no direction gives, so a pass over one
+// record too many (e.g. the offsets written after a row's half-pixel steps) would change one.
+TEST_CASE("a band of grid rows writes no record past its rows", "[cpu][threads]") {
+  const Params p = profile("px4flow-64");
+  const OwnedPair op = all_pass_pair();
+  const FramePair pair = op.view();
+  const int rows = grid_axis_triple(p.height, p).count;
+  const auto per_row = poi_count(p) / static_cast<std::size_t>(rows);
+  for (const cpu::IsaInfo& isa : cpu::isa_table()) {
+    if (!isa.compiled() || !isa.cpu_has()) continue;
+    INFO(isa.name);
+    PoiRecord stale{};
+    stale.status = kAccepted;
+    stale.dir = kDirNone;
+    stale.hx = stale.hy = 0x55;
+    std::vector<PoiRecord> out(poi_count(p), stale);
+    OpCounts counts;
+    cpu::run_flow_rows(isa.kernel(), pair, p, 0, rows / 2, out, counts);
+    for (std::size_t n = per_row * static_cast<std::size_t>(rows / 2); n < out.size(); ++n)
+      CHECK(std::memcmp(&out[n], &stale, sizeof stale) == 0);
+  }
+}
