@@ -11,7 +11,7 @@
 //                       search window of next are staged in local memory, work-items split
 //                       the candidates.
 //   flow_item_per_poi (row opencl-item): one work-item per POI, everything from global memory
-//                       (from S = 8 on, the window copied into private memory: best_key_lanes).
+//                       (from S = 5 on, the window copied into private memory: best_key_lanes).
 //
 // Floor averaging everywhere: hadd(), never rhadd() (rhadd rounds up, SPEC sec. 7).
 
@@ -283,13 +283,13 @@ inline uint best_key_global(const uchar8 block[8], __global const uchar* origin,
 // (dx, dy) is lane k = dy * side + dx and reads pixel (c, r) at win[k + r * side + c]: for every
 // pixel the lanes are consecutive bytes, one vector load. Lanes with dx >= 2S+1 are no candidates
 // (7 of every side lanes), so the share of useful lanes grows with S: 81 of 160 at S = 4, 289 of
-// 416 at S = 8, 3969 of 4416 at S = 31; below S = 8 the quad search is as fast or faster
-// (docs/measurements/opencl-kernel.md, 2026-12-08). Those lanes get SAD 0xFFFF, which no 8x8 SAD
-// reaches. SAD = 2 sum(max(p, q)) - sum(p) - sum(q), exact as |p - q| = 2 max(p, q) - p - q, in
-// ushort arithmetic (2 * 64 * 255 < 2^16); sum(p) is the block's, sum(q) the window's 8x8 box sum
-// per lane (column sums, then eight of them). The minimum of (SAD << 13) | k is the lowest SAD,
-// then the first candidate in raster order, since k grows with dy, then dx.
-#define LANES_MIN_RADIUS 8
+// 416 at S = 8, 3969 of 4416 at S = 31; the quad search is as fast at S = 4, this one faster from
+// S = 5 (docs/measurements/opencl-kernel.md, 2026-12-08). Those lanes get SAD 0xFFFF, which
+// no 8x8 SAD reaches. SAD = 2 sum(max(p, q)) - sum(p) - sum(q), exact as |p - q| = 2 max(p, q)
+// - p - q, in ushort arithmetic (2 * 64 * 255 < 2^16); sum(p) is the block's, sum(q) the window's
+// 8x8 box sum per lane (column sums, then eight of them). The minimum of (SAD << 13) | k is the
+// lowest SAD, then the first candidate in raster order, since k grows with dy, then dx.
+#define LANES_MIN_RADIUS 5
 #define LANES 32
 #define LANES_MAX_SIDE 70 /* 2 * 31 + 8 */
 #define LANES_MAX 4416    /* lanes at S = 31: 62 * 70 + 63 = 4403, rounded up to LANES */
@@ -349,7 +349,7 @@ __attribute__((always_inline)) inline uint best_key_lanes(const uchar8 block[8],
   return ((best >> LANE_BITS) << KEY_INDEX_BITS) | (dy * (uint)span + dx);
 }
 
-// One work-item per POI: global memory, and from S = 8 on a private copy of the window
+// One work-item per POI: global memory, and from S = 5 on a private copy of the window
 // (best_key_lanes). Launched with at least pairs * POIs-per-pair work-items; `total` is that exact
 // count.
 __kernel void flow_item_per_poi(__global const uchar* frames, __global uint* records, int width,
