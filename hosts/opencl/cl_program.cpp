@@ -5,6 +5,7 @@
 
 #include "errors.hpp"
 #include "opencl_kernel_source.hpp"
+#include "params.hpp"
 
 namespace pxflow::cl {
 namespace {
@@ -45,6 +46,8 @@ Owned<cl_program> build_program(cl_context context, const DeviceEntry& device,
   return program;
 }
 
+std::string kernel_options() { return "-DPXFLOW_MAX_RADIUS=" + std::to_string(kMaxSearchRadius); }
+
 std::shared_ptr<const DeviceProgram> device_program(const DeviceEntry& device) {
   // Never destroyed: releasing driver objects from static destructors can run after the
   // driver itself has been torn down at exit.
@@ -55,7 +58,8 @@ std::shared_ptr<const DeviceProgram> device_program(const DeviceEntry& device) {
   auto built = std::make_shared<DeviceProgram>();
   built->device = device;
   built->context = create_context(device);
-  built->program = build_program(built->context.get(), device, opencl_kernel_source());
+  built->program =
+      build_program(built->context.get(), device, opencl_kernel_source(), kernel_options());
   cache->emplace(device.device, built);
   return built;
 }

@@ -23,6 +23,11 @@ Owned<cl_context> create_context(const DeviceEntry& device);
 Owned<cl_program> build_program(cl_context context, const DeviceEntry& device,
                                 std::string_view source, const std::string& options = {});
 
+// The build options the embedded kernels/opencl/opencl.cl needs: SPEC's largest radius
+// (-DPXFLOW_MAX_RADIUS=31, from reference/params.hpp), which sizes the item kernel's private
+// arrays. device_program builds with them; so must anything else that builds that source.
+std::string kernel_options();
+
 // The shared DeviceProgram of `device` with the embedded kernels/opencl/opencl.cl, built on
 // first use. A failed build is not cached: the next call tries again.
 std::shared_ptr<const DeviceProgram> device_program(const DeviceEntry& device);

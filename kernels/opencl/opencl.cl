@@ -291,9 +291,18 @@ inline uint best_key_global(const uchar8 block[8], __global const uchar* origin,
 // lowest SAD, then the first candidate in raster order, since k grows with dy, then dx.
 #define LANES_MIN_RADIUS 5
 #define LANES 32
-#define LANES_MAX_SIDE 70 /* 2 * 31 + 8 */
-#define LANES_MAX 4416    /* lanes at S = 31: 62 * 70 + 63 = 4403, rounded up to LANES */
-#define LANE_BITS 13      /* k < 62 * 70 + 63 < 2^13 */
+// The arrays are sized for SPEC's largest S, PXFLOW_MAX_RADIUS, which the host passes as a build
+// option (cl::kernel_options); at S = 31 the last lane in use is k = 62 * 70 + 63 = 4403.
+#ifndef PXFLOW_MAX_RADIUS
+#error "build with the host's options, cl::kernel_options(): -DPXFLOW_MAX_RADIUS=..."
+#endif
+#define LANES_MAX_SIDE (2 * PXFLOW_MAX_RADIUS + 8)
+#define LANES_MAX_USED (2 * PXFLOW_MAX_RADIUS * LANES_MAX_SIDE + 2 * PXFLOW_MAX_RADIUS + 1)
+#define LANES_MAX ((LANES_MAX_USED + LANES - 1) / LANES * LANES)
+#define LANE_BITS 13
+#if LANES_MAX > (1 << LANE_BITS)
+#error "a lane index k needs more than LANE_BITS bits"
+#endif
 // Left to itself LLVM chose 16 lanes, and the kernel took 1.16-1.36x as long (measured). Only
 // for Clang: another compiler may warn about an unknown pragma, and the build test uses -Werror.
 #ifdef __clang__

@@ -50,7 +50,8 @@ TEST_CASE("opencl: kernels/opencl/opencl.cl builds with -Werror on every OpenCL 
     INFO("device " << device.index << " = " << device.name);
     auto context = cl::create_context(device);
     auto build = [&] {
-      return cl::build_program(context.get(), device, opencl_kernel_source(), "-Werror");
+      return cl::build_program(context.get(), device, opencl_kernel_source(),
+                               "-Werror " + cl::kernel_options());
     };
     CHECK_NOTHROW(build());
   }
