@@ -31,6 +31,9 @@ status=0
 for s in "$max_radius" "$lanes_min"; do
   echo "S = $s:"
   "$(dirname "$0")/oclgrind_check.sh" "$pxflow" flow --backend opencl-item --size 80x80 \
-    --set search_radius="$s" --set blocks=1 "$dir/a.raw" "$dir/b.raw" || status=1
+    --set search_radius="$s" --set blocks=1 "$dir/a.raw" "$dir/b.raw"
+  rc=$?
+  [ $rc -eq 77 ] && exit 77  # no oclgrind: skipped, as oclgrind_check.sh says
+  [ $rc -ne 0 ] && status=1
 done
 exit $status
